@@ -1,0 +1,56 @@
+/****************************************************************************
+* Geometric Snakes for MeshLab 2020.09                                      *
+* Filters after Y. Lee, S. Lee, "Geometric Snakes for Triangular Meshes",   *
+* Computer Graphics Forum (Eurographics 2002) 21(3).                        *
+*                                                                           *
+* The filters are thin Qt glue: the algorithms live in the header-only      *
+* vcg_ext/ library (no Qt, no OpenGL) and throw vcg::tri::SnakeError on bad *
+* input; here that becomes the filter's error message, never a crash.       *
+****************************************************************************/
+
+#ifndef FILTER_GEOMETRIC_SNAKE_H
+#define FILTER_GEOMETRIC_SNAKE_H
+
+#include <common/interfaces.h>
+
+class FilterGeometricSnakePlugin : public QObject, public MeshFilterInterface
+{
+	Q_OBJECT
+	MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
+	Q_INTERFACES(MeshFilterInterface)
+
+public:
+	// Keep the numbering append-only: .mlx scripts refer to filters by name, but the
+	// ids are used internally in switches. Room is left for the snake filters
+	// ("Geometric Snake from Seed Vertices", "Export Geometric Snake Curves").
+	enum {
+		FP_FEATURE_ENERGY = 0,
+		FP_SEED_PATH = 1
+	};
+
+	// Parameter limits shared by the GUI dialog and the scripted path.
+	static constexpr int kMaxSmoothingSteps = 10000;
+
+	FilterGeometricSnakePlugin();
+
+	QString pluginName() const override;
+	QString filterName(FilterIDType filter) const override;
+	QString filterInfo(FilterIDType filter) const override;
+	FilterClass getClass(QAction *a) override;
+	FILTER_ARITY filterArity(QAction *a) const override;
+	int getPreConditions(QAction *a) const override;
+	int getRequirements(QAction *a) override;
+	int postCondition(QAction *a) const override;
+	void initParameterSet(QAction *a, MeshModel &m, RichParameterList &par) override;
+	bool applyFilter(QAction *filter, MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb) override;
+
+private:
+	bool applyFeatureEnergy(MeshDocument &md, const RichParameterList &par);
+	bool applySeedPath(MeshDocument &md, const RichParameterList &par);
+
+	/// Sets errorMessage and mirrors it in the Log (meshlabserver prints the Log but
+	/// not errorMessage). Always returns false, for `return fail(...)`.
+	bool fail(const QString &msg);
+};
+
+#endif

@@ -1,0 +1,264 @@
+#!/usr/bin/env python3
+"""Helpers to drive the real MeshLab host (meshlabserver 2020.09) from Python.
+
+Used by the host integration tests (test_host.py) and by scripts/run.sh's headless demo.
+No third-party modules: PLY reading/writing, .mlx script writing and the meshlabserver
+runner are all here.
+
+    python3 mlhost.py summary OUT.ply       # prints quality range / selection of a saved PLY
+"""
+
+import math
+import os
+import shutil
+import struct
+import subprocess
+import sys
+from xml.sax.saxutils import quoteattr
+
+FILTER_ENERGY = "Compute Geometric Snake Feature Energy"
+FILTER_SEED_PATH = "Geometric Snake Seed Path"
+SELECTED = 0x0020  # vcg vertex BitFlags::SELECTED, saved as the PLY "flags" property
+
+# ---------------------------------------------------------------------------- .mlx
+ENUMS = {
+    "EnergyType": ["Normal variation", "Curvature norm", "Quadric error"],
+    "Cost": ["Length", "Feature"],
+}
+
+
+def param_xml(name, value):
+    """One <Param> element in MeshLab 2020.09 .mlx syntax (see RichParameterAdapter::create)."""
+    if name in ENUMS:
+        labels = ENUMS[name]
+        extra = "".join(' enum_val%d=%s' % (i, quoteattr(l)) for i, l in enumerate(labels))
+        return '<Param type="RichEnum" name="%s" value="%d" enum_cardinality="%d"%s/>' % (
+            name, int(value), len(labels), extra)
+    if isinstance(value, bool):
+        return '<Param type="RichBool" name="%s" value="%s"/>' % (name, "true" if value else "false")
+    if isinstance(value, int):
+        return '<Param type="RichInt" name="%s" value="%d"/>' % (name, value)
+    if isinstance(value, float):
+        return '<Param type="RichFloat" name="%s" value="%r"/>' % (name, value)
+    return '<Param type="RichString" name="%s" value=%s/>' % (name, quoteattr(str(value)))
+
+
+def write_mlx(path, filters):
+    """filters: list of (filter name, {param: value})."""
+    lines = ["<!DOCTYPE FilterScript>", "<FilterScript>"]
+    for name, params in filters:
+        lines.append(" <filter name=%s>" % quoteattr(name))
+        for k, v in params.items():
+            lines.append("  " + param_xml(k, v))
+        lines.append(" </filter>")
+    lines.append("</FilterScript>")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+# ---------------------------------------------------------------------------- host
+def meshlabserver_cmd():
+    exe = shutil.which("meshlabserver")
+    if exe is None:
+        raise RuntimeError("meshlabserver not found: apt-get install meshlab")
+    xvfb = shutil.which("xvfb-run")
+    if xvfb is None:
+        raise RuntimeError("xvfb-run not found: apt-get install xvfb xauth")
+    # Always a private virtual display: meshlabserver creates a GL context.
+    return [xvfb, "-a", "-s", "-screen 0 640x480x24", exe]
+
+
+def run_meshlabserver(args, timeout=300, cwd=None):
+    """Runs `xvfb-run -a meshlabserver ARGS`; returns (returncode, combined output).
+    A negative returncode means meshlabserver was killed by a signal (a crash)."""
+    env = dict(os.environ)
+    env.setdefault("LIBGL_ALWAYS_SOFTWARE", "1")
+    env.setdefault("XDG_RUNTIME_DIR", "/tmp/runtime-%d" % os.getuid())
+    os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
+    p = subprocess.run(meshlabserver_cmd() + list(args), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       stdin=subprocess.DEVNULL, timeout=timeout, cwd=cwd, env=env)
+    out = p.stdout.decode("utf-8", "replace")
+    rc = p.returncode
+    # xvfb-run reports a child killed by signal N as exit status 128+N.
+    if rc > 128 and rc != 255:
+        rc = -(rc - 128)
+    return rc, out
+
+
+# ---------------------------------------------------------------------------- PLY
+_PLY_TYPES = {
+    "char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h",
+    "ushort": "H", "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I",
+    "float": "f", "float32": "f", "double": "d", "float64": "d",
+}
+
+
+class Ply:
+    """elements: {name: list of dicts}, order: element names in file order."""
+
+    def __init__(self):
+        self.elements = {}
+        self.props = {}
+        self.order = []
+
+    @property
+    def vertices(self):
+        return self.elements.get("vertex", [])
+
+    @property
+    def faces(self):
+        return self.elements.get("face", [])
+
+
+def read_ply(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header")
+    end = data.index(b"\n", end) + 1
+    header = data[:end].decode("ascii", "replace").splitlines()
+    fmt = None
+    ply = Ply()
+    counts = {}
+    cur = None
+    for line in header:
+        t = line.split()
+        if not t:
+            continue
+        if t[0] == "format":
+            fmt = t[1]
+        elif t[0] == "element":
+            cur = t[1]
+            counts[cur] = int(t[2])
+            ply.order.append(cur)
+            ply.props[cur] = []
+        elif t[0] == "property":
+            if t[1] == "list":
+                ply.props[cur].append((t[4], ("list", t[2], t[3])))
+            else:
+                ply.props[cur].append((t[2], t[1]))
+    body = data[end:]
+    if fmt == "ascii":
+        tokens = body.split()
+        pos = 0
+        for el in ply.order:
+            rows = []
+            for _ in range(counts[el]):
+                row = {}
+                for name, typ in ply.props[el]:
+                    if isinstance(typ, tuple):
+                        n = int(tokens[pos]); pos += 1
+                        row[name] = [int(x) for x in tokens[pos:pos + n]]; pos += n
+                    else:
+                        tok = tokens[pos].decode(); pos += 1
+                        row[name] = float(tok) if _PLY_TYPES[typ] in "fd" else int(tok)
+                rows.append(row)
+            ply.elements[el] = rows
+    else:
+        endian = "<" if fmt == "binary_little_endian" else ">"
+        pos = 0
+        for el in ply.order:
+            rows = []
+            for _ in range(counts[el]):
+                row = {}
+                for name, typ in ply.props[el]:
+                    if isinstance(typ, tuple):
+                        c = _PLY_TYPES[typ[1]]; it = _PLY_TYPES[typ[2]]
+                        (n,) = struct.unpack_from(endian + c, body, pos); pos += struct.calcsize(c)
+                        row[name] = list(struct.unpack_from(endian + it * n, body, pos))
+                        pos += struct.calcsize(it) * n
+                    else:
+                        c = _PLY_TYPES[typ]
+                        (row[name],) = struct.unpack_from(endian + c, body, pos); pos += struct.calcsize(c)
+                rows.append(row)
+            ply.elements[el] = rows
+    return ply
+
+
+def write_ply(path, verts, faces, binary=False):
+    """verts: list of (x, y, z); faces: list of index triples. binary keeps NaN exact."""
+    header = ("ply\nformat %s 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
+              % ("binary_little_endian" if binary else "ascii", len(verts)))
+    if faces is not None:
+        header += "element face %d\nproperty list uchar int vertex_indices\n" % len(faces)
+    header += "end_header\n"
+    with open(path, "wb") as f:
+        f.write(header.encode("ascii"))
+        if binary:
+            for v in verts:
+                f.write(struct.pack("<fff", *v))
+            for t in faces or []:
+                f.write(struct.pack("<Biii", 3, *t))
+        else:
+            for v in verts:
+                f.write(("%.9g %.9g %.9g\n" % tuple(v)).encode())
+            for t in faces or []:
+                f.write(("3 %d %d %d\n" % tuple(t)).encode())
+
+
+def grid_cube(n):
+    """Unit cube [0,1]^3 with an n x n grid of quads (two triangles each) per side,
+    outward oriented, vertices shared. Returns (verts, faces)."""
+    index = {}
+    verts = []
+    faces = []
+
+    def vid(p):
+        key = tuple(int(round(c * n)) for c in p)
+        if key not in index:
+            index[key] = len(verts)
+            verts.append(tuple(k / n for k in key))
+        return index[key]
+
+    for axis in range(3):
+        u, w = (axis + 1) % 3, (axis + 2) % 3
+        for side in (0, 1):
+            for i in range(n):
+                for j in range(n):
+                    def P(a, b):
+                        p = [0.0, 0.0, 0.0]
+                        p[axis] = float(side); p[u] = a / n; p[w] = b / n
+                        return p
+                    q = [vid(P(i, j)), vid(P(i + 1, j)), vid(P(i + 1, j + 1)), vid(P(i, j + 1))]
+                    if side == 0:
+                        q.reverse()
+                    faces.append((q[0], q[1], q[2]))
+                    faces.append((q[0], q[2], q[3]))
+    return verts, faces
+
+
+def on_cube_edge(p, eps=1e-6):
+    """True if p lies on an edge of the unit cube (two coordinates at 0 or 1)."""
+    return sum(1 for c in p if abs(c) < eps or abs(c - 1) < eps) >= 2
+
+
+def cube_edge_distance(p):
+    """Distance of a point on the unit cube's surface to the nearest cube edge."""
+    ds = []
+    for a in range(3):
+        for b in range(a + 1, 3):
+            da = min(abs(p[a]), abs(p[a] - 1)); db = min(abs(p[b]), abs(p[b] - 1))
+            ds.append(math.hypot(da, db))
+    return min(ds)
+
+
+# ---------------------------------------------------------------------------- CLI
+def summary(path):
+    ply = read_ply(path)
+    vs = ply.vertices
+    lines = ["%s: %d vertices, %d faces" % (path, len(vs), len(ply.faces))]
+    if vs and "quality" in vs[0]:
+        q = [v["quality"] for v in vs]
+        lines.append("  vertex quality (feature energy): min %.4f  max %.4f  mean %.4f" % (min(q), max(q), sum(q) / len(q)))
+        lines.append("  vertices with energy < 0.25 (features): %d" % sum(1 for x in q if x < 0.25))
+    if vs and "flags" in vs[0]:
+        lines.append("  selected vertices (seed path): %d" % sum(1 for v in vs if v["flags"] & SELECTED))
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) >= 3 and sys.argv[1] == "summary":
+        for p in sys.argv[2:]:
+            print(summary(p))
+    else:
+        print(__doc__)
+        sys.exit(2)

@@ -1,0 +1,266 @@
+#!/usr/bin/env python3
+"""Host integration tests: the installed plugin inside the real MeshLab 2020.09 host,
+driven through `xvfb-run -a meshlabserver` and .mlx scripts.
+
+CTest registers every `def test_*` below as its own test `host_<name>` (label `host`),
+after `host_plugin_installed` has checked that the installed .so is the freshly built one.
+Run one by hand:  python3 tests/host/test_host.py -v HostTests.test_energy_cube
+
+Environment: GS_DATA_DIR (repo data/), GS_HOST_WORK (scratch folder).
+"""
+
+import math
+import os
+import re
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mlhost  # noqa: E402
+from mlhost import FILTER_ENERGY, FILTER_SEED_PATH, SELECTED  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.environ.get("GS_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
+N = 8  # grid cube resolution: 8x8 quads per side
+
+
+class HostTests(unittest.TestCase):
+    maxDiff = None
+
+    def setUp(self):
+        base = os.environ.get("GS_HOST_WORK") or tempfile.gettempdir()
+        os.makedirs(base, exist_ok=True)
+        self.work = tempfile.mkdtemp(prefix=self._testMethodName + "-", dir=base)
+        self.cube_verts, self.cube_faces = mlhost.grid_cube(N)
+        self.cube = self.path("cube.ply")
+        mlhost.write_ply(self.cube, self.cube_verts, self.cube_faces)
+
+    def path(self, name):
+        return os.path.join(self.work, name)
+
+    # ------------------------------------------------------------------ helpers
+    def run_script(self, mesh, filters, outputs=(), expect_ok=True):
+        """Runs the filters on `mesh` through meshlabserver. outputs: list of extra
+        meshlabserver args per output, e.g. ["-o", out, "-m", "vq", "sa"]."""
+        mlx = self.path("script%d.mlx" % len(os.listdir(self.work)))
+        mlhost.write_mlx(mlx, filters)
+        args = ["-i", mesh]
+        for o in outputs:
+            args += list(o)
+        args += ["-s", mlx]
+        rc, out = mlhost.run_meshlabserver(args, cwd=self.work)
+        with open(mlx + ".log", "w") as f:
+            f.write(out)
+        self.assertGreaterEqual(rc, 0, "meshlabserver CRASHED (signal %d):\n%s" % (-rc, out))
+        for name, _ in filters:
+            # A filter whose plugin did not load is reported as "filter ... not found".
+            self.assertNotIn("filter %s not found" % name, out, out)
+        if expect_ok:
+            self.assertEqual(rc, 0, "meshlabserver failed:\n" + out)
+            self.assertNotIn("Geometric snake error", out, out)
+            for name, _ in filters:
+                self.assertIn("filter: %s" % name, out, out)
+        return rc, out
+
+    def assert_filter_error(self, mesh, filters, message_regex):
+        rc, out = self.run_script(mesh, filters, outputs=[["-o", self.path("never.ply")]], expect_ok=False)
+        self.assertNotEqual(rc, 0, "the filter should have failed:\n" + out)
+        self.assertEqual(rc, 255, "meshlabserver should exit(-1) on a filter error, got %d:\n%s" % (rc, out))
+        self.assertRegex(out, r"Geometric snake error: .*" + message_regex)
+        self.assertIn("Problem with filter", out)
+        self.assertFalse(os.path.exists(self.path("never.ply")), "a failed script must not save a mesh")
+        return out
+
+    def energy_params(self, energy_type=0, steps=0, colorize=True):
+        return {"EnergyType": energy_type, "SmoothingSteps": steps, "Colorize": colorize}
+
+    def seed_params(self, seeds, closed=False, cost=0, new_layer=True):
+        # Always every parameter: Debian's meshlabserver 2020.09 aborts (an assert in
+        # MeshLabServer::script) when a script omits some of a filter's parameters.
+        return {"Seeds": seeds, "Closed": closed, "Cost": cost, "NewLayer": new_layer}
+
+    def cube_index(self, p):
+        key = tuple(float(c) for c in p)
+        return self.cube_verts.index(key)
+
+    # ------------------------------------------------------------------ tests
+    def test_filters_listed(self):
+        dump = self.path("filters.txt")
+        rc, out = mlhost.run_meshlabserver(["-d", dump], cwd=self.work)
+        self.assertEqual(rc, 0, out)
+        with open(dump, encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        for name in (FILTER_ENERGY, FILTER_SEED_PATH):
+            self.assertIn("\\section", text)
+            self.assertRegex(text, r"\\section f\d+ " + re.escape(name), "filter %r not loaded by MeshLab" % name)
+        for label in ("Energy type", "Smoothing steps", "Colorize by energy", "Seed vertices", "Closed path",
+                      "Path cost", "Add path as new layer"):
+            self.assertIn(label, text)
+
+    def test_energy_cube(self):
+        """All three energies: quality in [0,1], low on the cube's edges, high on flat sides."""
+        for etype in (0, 1, 2):
+            with self.subTest(energy_type=etype):
+                out_ply = self.path("energy%d.ply" % etype)
+                rc, out = self.run_script(self.cube, [(FILTER_ENERGY, self.energy_params(etype, 0, True))],
+                                          outputs=[["-o", out_ply, "-m", "vq", "vc", "sa"]])
+                self.assertRegex(out, r"Feature energy \(.*\) on %d vertices: raw range \[" % len(self.cube_verts))
+                self.assertRegex(out, r"computed in [0-9.]+ ms")
+                ply = mlhost.read_ply(out_ply)
+                self.assertEqual(len(ply.vertices), len(self.cube_verts))
+                q = [v["quality"] for v in ply.vertices]
+                for x in q:
+                    self.assertTrue(math.isfinite(x) and -1e-6 <= x <= 1 + 1e-6, x)
+                self.assertLess(min(q), 0.05)
+                self.assertGreater(max(q), 0.95)
+                pts = [(v["x"], v["y"], v["z"]) for v in ply.vertices]
+                edge = [qq for p, qq in zip(pts, q) if mlhost.on_cube_edge(p)]
+                flat = [qq for p, qq in zip(pts, q) if mlhost.cube_edge_distance(p) > 1.5 / N]
+                self.assertTrue(edge and flat)
+                self.assertLess(sum(edge) / len(edge), 0.5, "cube edges should be features (low energy)")
+                self.assertGreater(min(flat), 0.9, "flat sides should have energy ~1")
+                self.assertLess(max(edge), min(flat) - 0.3)
+                # Colour ramp: red = feature (low), blue = flat (high).
+                for p, v in zip(pts, ply.vertices):
+                    if v["quality"] < 0.1:
+                        self.assertGreater(v["red"], v["blue"], v)
+                    if v["quality"] > 0.9:
+                        self.assertGreater(v["blue"], v["red"], v)
+
+    def test_energy_no_colorize_keeps_colours(self):
+        out_ply = self.path("q.ply")
+        self.run_script(self.cube, [(FILTER_ENERGY, self.energy_params(0, 3, False))],
+                        outputs=[["-o", out_ply, "-m", "vq", "vc", "sa"]])
+        ply = mlhost.read_ply(out_ply)
+        q = [v["quality"] for v in ply.vertices]
+        self.assertLess(min(q), 0.05)
+        self.assertGreater(max(q), 0.95)
+        # meshlabserver writes the (default white) colour when asked to (-m vc); Colorize=false
+        # must leave it untouched.
+        for v in ply.vertices:
+            self.assertEqual((v["red"], v["green"], v["blue"]), (255, 255, 255), v)
+
+    def test_energy_data_meshes(self):
+        meshes = [m for m in ("fandisk.ply", "icocube.ply", "icocylinder.ply") if os.path.exists(os.path.join(DATA, m))]
+        if not meshes:
+            self.skipTest("no data meshes in %s yet" % DATA)
+        for m in meshes:
+            with self.subTest(mesh=m):
+                out_ply = self.path("energy_" + m)
+                self.run_script(os.path.join(DATA, m), [(FILTER_ENERGY, self.energy_params(0, 2, True))],
+                                outputs=[["-o", out_ply, "-m", "vq", "vc", "sa"]])
+                q = [v["quality"] for v in mlhost.read_ply(out_ply).vertices]
+                self.assertTrue(all(math.isfinite(x) and -1e-6 <= x <= 1 + 1e-6 for x in q))
+                self.assertLess(min(q), 0.05)
+                self.assertGreater(max(q), 0.95)
+                # Most of a CAD-like model is smooth: the median vertex is not a feature.
+                self.assertGreater(sorted(q)[len(q) // 2], 0.5)
+
+    def test_seed_path_along_cube_edge(self):
+        a = self.cube_index((0.0, 0.0, 0.0))
+        b = self.cube_index((1.0, 0.0, 0.0))
+        out_ply, layer_ply = self.path("sel.ply"), self.path("layer.ply")
+        rc, out = self.run_script(
+            self.cube, [(FILTER_SEED_PATH, {"Seeds": "%d, %d" % (a, b), "Closed": False, "Cost": 0, "NewLayer": True})],
+            outputs=[["-o", out_ply, "-m", "vf", "sa"], ["-o", layer_ply, "-l", "x", "-m", "sa"]])
+        m = re.search(r"Seed path \(open, length cost\) through 2 seeds: (\d+) vertices selected, length ([0-9.e+-]+)", out)
+        self.assertTrue(m, out)
+        self.assertEqual(int(m.group(1)), N + 1)
+        self.assertAlmostEqual(float(m.group(2)), 1.0, places=4)
+        self.assertIn('Added layer "Seed path": %d vertices, %d edges.' % (N + 1, N), out)
+        # Selection saved in the vertex flags: exactly the cube edge y = z = 0.
+        ply = mlhost.read_ply(out_ply)
+        sel = [(v["x"], v["y"], v["z"]) for v in ply.vertices if v["flags"] & SELECTED]
+        self.assertEqual(len(sel), N + 1)
+        for p in sel:
+            self.assertAlmostEqual(p[1], 0.0, places=5)
+            self.assertAlmostEqual(p[2], 0.0, places=5)
+        # The new layer (saved with -l x, the last layer) holds the path's vertices, in order.
+        layer = mlhost.read_ply(layer_ply)
+        self.assertEqual(len(layer.vertices), N + 1)
+        xs = [v["x"] for v in layer.vertices]
+        self.assertEqual(xs, sorted(xs))
+        self.assertAlmostEqual(xs[0], 0.0, places=5)
+        self.assertAlmostEqual(xs[-1], 1.0, places=5)
+
+    def test_seed_path_closed_feature_cost(self):
+        """Three corners of the bottom face, closed, feature cost on a mesh without quality:
+        the energy is computed first (said in the Log) and the loop follows the cube's edges."""
+        seeds = [self.cube_index(p) for p in ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.0, 1.0, 0.0))]
+        out_ply = self.path("loop.ply")
+        rc, out = self.run_script(
+            self.cube, [(FILTER_SEED_PATH, {"Seeds": ",".join(map(str, seeds)), "Closed": True, "Cost": 1,
+                                            "NewLayer": False})],
+            outputs=[["-o", out_ply, "-m", "vf", "vq", "sa"]])
+        self.assertIn("had no vertex quality", out)
+        self.assertNotIn("Added layer", out)
+        m = re.search(r"Seed path \(closed, feature cost\) through 3 seeds: (\d+) vertices selected, length ([0-9.e+-]+)", out)
+        self.assertTrue(m, out)
+        length = float(m.group(2))
+        # Pure shortest loop: 1 + 1 + sqrt(2) (diagonal across the bottom side). Following the
+        # cube's edges instead (what the feature cost is for): 1 + 1 + 2 = 4.
+        self.assertAlmostEqual(length, 4.0, places=3)
+        ply = mlhost.read_ply(out_ply)
+        sel = [(v["x"], v["y"], v["z"]) for v in ply.vertices if v["flags"] & SELECTED]
+        self.assertEqual(len(sel), int(m.group(1)))
+        on_edges = sum(1 for p in sel if mlhost.on_cube_edge(p))
+        self.assertGreaterEqual(on_edges / len(sel), 0.9, "feature-cost path should follow cube edges")
+
+    def test_energy_then_seed_path_pipeline(self):
+        seeds = [self.cube_index(p) for p in ((0.0, 0.0, 0.0), (1.0, 1.0, 0.0))]
+        out_ply = self.path("pipe.ply")
+        rc, out = self.run_script(
+            self.cube, [(FILTER_ENERGY, self.energy_params(0, 1, True)),
+                        (FILTER_SEED_PATH, {"Seeds": "%d,%d" % tuple(seeds), "Closed": False, "Cost": 1,
+                                            "NewLayer": True})],
+            outputs=[["-o", out_ply, "-m", "vf", "vq", "vc", "sa"]])
+        self.assertNotIn("had no vertex quality", out)
+        ply = mlhost.read_ply(out_ply)
+        self.assertIn("quality", ply.vertices[0])
+        self.assertIn("red", ply.vertices[0])
+        self.assertGreater(sum(1 for v in ply.vertices if v["flags"] & SELECTED), 2)
+
+    # ------------------------------------------------------------------ errors
+    def test_error_bad_seeds(self):
+        for seeds, msg in (("0, x", ""), ("", ""), ("5", ""), ("0, 99999", "")):
+            with self.subTest(seeds=seeds):
+                self.assert_filter_error(self.cube, [(FILTER_SEED_PATH, {"Seeds": seeds, "Closed": False, "Cost": 0,
+                                                                         "NewLayer": True})], msg)
+
+    def test_error_bad_smoothing_steps(self):
+        for steps in (-1, 10001, 2000000000):
+            with self.subTest(steps=steps):
+                self.assert_filter_error(self.cube, [(FILTER_ENERGY, self.energy_params(0, steps))], "SmoothingSteps")
+
+    def test_error_point_cloud(self):
+        pc = self.path("pc.ply")
+        mlhost.write_ply(pc, self.cube_verts, None)
+        self.assert_filter_error(pc, [(FILTER_ENERGY, self.energy_params())], "point cloud")
+        self.assert_filter_error(pc, [(FILTER_SEED_PATH, self.seed_params("0,1"))], "point cloud")
+
+    def test_error_empty_mesh(self):
+        empty = self.path("empty.ply")
+        mlhost.write_ply(empty, [], [])
+        self.assert_filter_error(empty, [(FILTER_ENERGY, self.energy_params())], "empty")
+
+    def test_error_nan_coordinates(self):
+        verts = list(self.cube_verts)
+        verts[3] = (float("nan"), 0.5, 0.5)
+        bad = self.path("nan.ply")
+        mlhost.write_ply(bad, verts, self.cube_faces, binary=True)
+        self.assert_filter_error(bad, [(FILTER_ENERGY, self.energy_params())], "NaN")
+        self.assert_filter_error(bad, [(FILTER_SEED_PATH, self.seed_params("0,1"))], "NaN")
+
+    def test_unknown_filter_is_detected(self):
+        """The harness itself: a filter MeshLab does not know (e.g. its plugin failed to load)
+        makes meshlabserver fail, so every other test would fail too."""
+        mlx = self.path("unknown.mlx")
+        mlhost.write_mlx(mlx, [("Geometric Snake Filter That Does Not Exist", {})])
+        rc, out = mlhost.run_meshlabserver(["-i", self.cube, "-o", self.path("u.ply"), "-s", mlx], cwd=self.work)
+        self.assertNotEqual(rc, 0, out)
+        self.assertIn("not found", out)
+
+
+if __name__ == "__main__":
+    unittest.main()

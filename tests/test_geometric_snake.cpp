@@ -1,0 +1,370 @@
+// Unit and accuracy tests of the geometric snake engine (paper Sections 3-5).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include <snake_test_util.h>
+#include <vcg_ext/snake_io.h>
+
+using namespace vcg::tri;
+using gs_test::EnableSnakeAdjacency;
+using Snake = GeometricSnake<CMeshO>;
+using Surface = SnakeSurface<CMeshO>;
+
+namespace {
+
+std::shared_ptr<Surface> PrepareCube(CMeshO &m, int subdiv = 4, int smoothing = 8, double half = 1.0)
+{
+    gs_test::MakeRotatedIcoCube(m, subdiv, half);
+    EnableSnakeAdjacency(m);
+    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, smoothing);
+    return std::make_shared<Surface>(m);
+}
+
+std::shared_ptr<Surface> PrepareCylinder(CMeshO &m, int subdiv = 4, int smoothing = 8)
+{
+    gs_test::MakeRotatedIcoCylinder(m, subdiv);
+    EnableSnakeAdjacency(m);
+    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, smoothing);
+    return std::make_shared<Surface>(m);
+}
+
+// Seeds on the cube face x = half, offset `off` edge lengths from the edge x = y = half.
+std::vector<int> CubeEdgeSeeds(const CMeshO &m, double h, double off, double half = 1.0)
+{
+    std::vector<vcg::Point3d> pts;
+    for (double z : {-0.6, -0.2, 0.2, 0.6}) pts.push_back(vcg::Point3d(half, half - off * h, z * half));
+    return gs_test::NearestVertices(m, pts);
+}
+
+// Seeds around the cylinder, `off` edge lengths below the top rim.
+std::vector<int> CylinderRimSeeds(const CMeshO &m, double h, double off, int count)
+{
+    std::vector<vcg::Point3d> pts;
+    for (int i = 0; i < count; ++i) {
+        double a = 2 * M_PI * i / count;
+        pts.push_back(vcg::Point3d(std::cos(a), std::sin(a), 1.0 - off * h));
+    }
+    return gs_test::NearestVertices(m, pts);
+}
+
+// Distances of the samples from the cube edges, ignoring the ends (open snakes shorten
+// there and are not asked to reach the corners).
+gs_test::CurveError CubeError(Snake &s, double h, double half = 1.0)
+{
+    std::vector<vcg::Point3d> p = s.positions();
+    return gs_test::MeasureCurve(p, h, [&](const vcg::Point3d &x) { return gs_test::DistToCubeEdges(x, half); });
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- spline (Eq. 2-4)
+TEST(SnakeSpline, StiffnessIsGradientOfSplineEnergy)
+{
+    for (bool closed : {false, true}) {
+        const int n = 9;
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> U(-1, 1);
+        Eigen::MatrixXd X(n, 2);
+        for (int i = 0; i < n; ++i) X.row(i) << U(rng), U(rng);
+        const double a = 0.7, b = 1.3;
+        Eigen::MatrixXd G = SnakeSpline::StiffnessMatrix(n, closed, a, b) * X;
+        const double eps = 1e-6;
+        for (int i = 0; i < n; ++i)
+            for (int c = 0; c < 2; ++c) {
+                Eigen::MatrixXd Xp = X, Xm = X;
+                Xp(i, c) += eps;
+                Xm(i, c) -= eps;
+                double fd = (SnakeSpline::Energy(Xp, closed, a, b) - SnakeSpline::Energy(Xm, closed, a, b)) / (2 * eps);
+                EXPECT_NEAR(G(i, c), fd, 1e-6) << "closed=" << closed << " i=" << i;
+            }
+    }
+}
+
+TEST(SnakeSpline, FixedSamplesHeldExactlyAndUpdateSolvesEq4)
+{
+    const int n = 10;
+    Eigen::MatrixXd X(n, 2), F(n, 2);
+    for (int i = 0; i < n; ++i) { X.row(i) << i, std::sin(i); F.row(i) << 0.1 * i, -0.2; }
+    std::vector<bool> fixed(n, false);
+    fixed[0] = fixed[4] = true;
+    SnakeSpline s;
+    s.Setup(n, false, 0.3, 0.8, 2.0, fixed);
+    Eigen::MatrixXd Y = s.Update(X, F);
+    EXPECT_EQ(Y.row(0), X.row(0));
+    EXPECT_EQ(Y.row(4), X.row(4));
+    // free rows satisfy (A + gamma I) y = gamma x - f
+    Eigen::MatrixXd R = SnakeSpline::StiffnessMatrix(n, false, 0.3, 0.8) * Y + 2.0 * Y - (2.0 * X - F);
+    for (int i = 0; i < n; ++i)
+        if (!fixed[i]) EXPECT_LT(R.row(i).norm(), 1e-9) << i;
+    EXPECT_EQ(s.factorizations, 1);
+    s.Setup(n, false, 0.3, 0.8, 2.0, fixed); // unchanged: no new factorization
+    EXPECT_EQ(s.factorizations, 1);
+}
+
+// ---------------------------------------------------------------- region and embedding
+TEST(Embedding, LocalRegionIsDiskAndEmbeddingInjective)
+{
+    CMeshO m;
+    auto surf = PrepareCube(m, 4, 4);
+    double h = surf->MeanEdge();
+    Snake s(surf);
+    s.InitFromSeeds(CubeEdgeSeeds(m, h, 2.0), false);
+    std::vector<int> core;
+    for (auto &x : s.Samples()) core.push_back(x.p.face);
+    for (auto &g : s.Gaps()) core.insert(core.end(), g.faces.begin(), g.faces.end());
+    LocalRegion<CMeshO> r;
+    ASSERT_TRUE(r.Build(*surf, core)) << r.error;
+    EXPECT_GT(r.RealFaces(), int(core.size()) / 2);
+    VirtualBoundaryParam::Result e;
+    ASSERT_TRUE(VirtualBoundaryParam::Embed(r.pos, r.tri, r.boundary, h, 2, e)) << e.error;
+    EXPECT_EQ(VirtualBoundaryParam::CountFlipped(e.uv, r.tri), 0);
+    EXPECT_EQ(VirtualBoundaryParam::CountFlipped(e.uv, e.virtualTri), 0);
+    // scale: mean 2D edge length about 1 (units of h)
+    double l2 = 0;
+    for (auto &t : r.tri) l2 += (e.uv[t[1]] - e.uv[t[0]]).norm();
+    EXPECT_NEAR(l2 / r.tri.size(), 1.0, 0.35);
+    // barycentric round trip: surface -> plane -> walk -> surface is exact
+    for (auto &x : s.Samples()) {
+        int t = r.LocalFace(*surf, x.p.face);
+        ASSERT_GE(t, 0);
+        Eigen::Vector2d p = x.p.bary[0] * e.uv[r.tri[t][0]] + x.p.bary[1] * e.uv[r.tri[t][1]] + x.p.bary[2] * e.uv[r.tri[t][2]];
+        RegionWalk::Result w = RegionWalk::Walk(e.uv, r.tri, r.adj, t, p, p, false);
+        EXPECT_EQ(w.face, t);
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(w.bary[k], x.p.bary[k], 1e-9);
+    }
+}
+
+TEST(Embedding, RegionTouchingMeshBorderAndHoles)
+{
+    // a flat grid with a square hole: a snake crossing it and running along the border
+    CMeshO m;
+    gs_test::MakeFlatGrid(m, 30, 1.0);
+    for (auto &f : m.face) {
+        vcg::Point3d c = vcg::Point3d::Construct(vcg::Barycenter(f));
+        if (std::abs(c[0] - 0.5) < 0.05 && std::abs(c[1] - 0.5) < 0.05) vcg::tri::Allocator<CMeshO>::DeleteFace(m, f);
+    }
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+    vcg::tri::Clean<CMeshO>::RemoveUnreferencedVertex(m);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+    EnableSnakeAdjacency(m);
+    for (auto &v : m.vert) v.Q() = 1;
+    auto surf = std::make_shared<Surface>(m);
+    std::vector<int> core;
+    for (size_t i = 0; i < m.face.size(); ++i) {
+        vcg::Point3d c = vcg::Point3d::Construct(vcg::Barycenter(m.face[i]));
+        if (std::abs(c[1] - 0.5) < 0.04 || c[1] < 0.04) core.push_back(int(i));
+    }
+    LocalRegion<CMeshO> r;
+    // two strips joined only through the grid: build them separately
+    std::vector<int> strip;
+    for (int f : core) {
+        vcg::Point3d c = vcg::Point3d::Construct(vcg::Barycenter(m.face[f]));
+        if (std::abs(c[1] - 0.5) < 0.04) strip.push_back(f);
+    }
+    ASSERT_TRUE(r.Build(*surf, strip)) << r.error;
+    EXPECT_EQ(r.meshHolesClosed, 1);
+    VirtualBoundaryParam::Result e;
+    ASSERT_TRUE(VirtualBoundaryParam::Embed(r.pos, r.tri, r.boundary, surf->MeanEdge(), 2, e));
+    EXPECT_EQ(VirtualBoundaryParam::CountFlipped(e.uv, r.tri), 0);
+    std::vector<int> bottom;
+    for (int f : core) {
+        vcg::Point3d c = vcg::Point3d::Construct(vcg::Barycenter(m.face[f]));
+        if (c[1] < 0.04) bottom.push_back(f);
+    }
+    ASSERT_TRUE(r.Build(*surf, bottom)) << r.error;
+    ASSERT_TRUE(VirtualBoundaryParam::Embed(r.pos, r.tri, r.boundary, surf->MeanEdge(), 2, e));
+    EXPECT_EQ(VirtualBoundaryParam::CountFlipped(e.uv, r.tri), 0);
+}
+
+// ---------------------------------------------------------------- snake invariants
+TEST(GeometricSnake, FixedSamplesNeverMoveAndClosedStaysClosed)
+{
+    CMeshO m;
+    auto surf = PrepareCylinder(m);
+    double h = surf->MeanEdge();
+    Snake s(surf);
+    s.InitFromSeeds(CylinderRimSeeds(m, h, 2.5, 6), true);
+    ASSERT_TRUE(s.Closed());
+    int n = s.SampleCount();
+    ASSERT_GT(n, 20);
+    s.SetFixed(3, true);
+    s.SetFixed(n / 2, true);
+    SurfacePoint p3 = s.Samples()[3].p, pm = s.Samples()[n / 2].p;
+    for (int i = 0; i < 15; ++i) s.Step();
+    EXPECT_EQ(s.Samples()[3].p.face, p3.face);
+    EXPECT_EQ(s.Samples()[3].p.bary, p3.bary);
+    EXPECT_EQ(s.Samples()[n / 2].p.face, pm.face);
+    EXPECT_EQ(s.Samples()[n / 2].p.bary, pm.bary);
+    EXPECT_TRUE(s.Closed());
+    // the closing gap is traced: the last polyline point is near the first sample
+    std::vector<vcg::Point3d> pl = s.PolylinePositions();
+    EXPECT_LT((pl.back() - pl.front()).Norm(), 3 * h);
+    for (auto &x : pl) EXPECT_TRUE(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]));
+}
+
+TEST(GeometricSnake, TracedPolylineStaysOnSurface)
+{
+    CMeshO m;
+    auto surf = PrepareCube(m);
+    double h = surf->MeanEdge();
+    Snake s(surf);
+    s.InitFromSeeds(CubeEdgeSeeds(m, h, 2.0), false);
+    for (int i = 0; i < 10; ++i) s.Step();
+    std::vector<SurfacePoint> pl = s.Polyline();
+    ASSERT_GT(pl.size(), s.Samples().size());
+    // consecutive points share a face: the straight segment between them lies in that face
+    for (size_t i = 0; i + 1 < pl.size(); ++i) {
+        std::set<CVertexO *> a, b;
+        for (int k = 0; k < 3; ++k) { a.insert(m.face[pl[i].face].V(k)); b.insert(m.face[pl[i + 1].face].V(k)); }
+        // the points lie on a common face if every non-zero barycentric vertex of one is in the other's face
+        auto onFace = [&](const SurfacePoint &p, const std::set<CVertexO *> &verts) {
+            for (int k = 0; k < 3; ++k)
+                if (p.bary[k] > 1e-9 && !verts.count(m.face[p.face].V(k))) return false;
+            return true;
+        };
+        EXPECT_TRUE(onFace(pl[i], b) || onFace(pl[i + 1], a)) << "polyline point " << i;
+    }
+}
+
+TEST(GeometricSnake, ScaleAndTranslationInvariant)
+{
+    std::vector<vcg::Point3d> results[2];
+    for (int k = 0; k < 2; ++k) {
+        CMeshO m;
+        double half = k == 0 ? 1.0 : 250.0;
+        auto surf = PrepareCube(m, 4, 8, half);
+        double h = surf->MeanEdge();
+        Snake s(surf);
+        s.InitFromSeeds(CubeEdgeSeeds(m, h, 2.0, half), false);
+        for (int i = 0; i < 8; ++i) s.Step();
+        for (auto p : s.positions()) results[k].push_back(p / half);
+    }
+    ASSERT_EQ(results[0].size(), results[1].size());
+    for (size_t i = 0; i < results[0].size(); ++i) EXPECT_LT((results[0][i] - results[1][i]).Norm(), 1e-3);
+}
+
+TEST(GeometricSnake, EditingUndoRedoAndJsonRoundTrip)
+{
+    CMeshO m;
+    auto surf = PrepareCube(m);
+    double h = surf->MeanEdge();
+    Snake s(surf);
+    s.InitFromSeeds(CubeEdgeSeeds(m, h, 2.0), false);
+    int n = s.SampleCount();
+    auto before = s.Samples();
+    s.MoveSample(2, SurfacePoint::AtCorner(s.Samples()[5].p.face, 0), true);
+    EXPECT_TRUE(s.Samples()[2].fixed);
+    int ins = s.InsertSample(0);
+    EXPECT_EQ(ins, 1);
+    EXPECT_EQ(s.SampleCount(), n + 1);
+    s.DeleteSample(ins);
+    EXPECT_EQ(s.SampleCount(), n);
+    s.Step();
+    EXPECT_TRUE(s.Samples()[2].fixed);
+    EXPECT_TRUE(s.Undo()); // step
+    EXPECT_TRUE(s.Undo()); // delete
+    EXPECT_TRUE(s.Undo()); // insert
+    EXPECT_TRUE(s.Undo()); // move
+    ASSERT_EQ(s.SampleCount(), n);
+    for (int i = 0; i < n; ++i) {
+        EXPECT_EQ(s.Samples()[i].p.face, before[i].p.face);
+        EXPECT_EQ(s.Samples()[i].fixed, before[i].fixed);
+    }
+    EXPECT_TRUE(s.Redo());
+    EXPECT_TRUE(s.Samples()[2].fixed);
+    // JSON round trip keeps samples and pins
+    nlohmann::json j = SnakeIO<CMeshO>::ToJson(s);
+    Snake t(surf);
+    SnakeIO<CMeshO>::FromJson(t, j);
+    ASSERT_EQ(t.SampleCount(), s.SampleCount());
+    for (int i = 0; i < n; ++i) {
+        EXPECT_EQ(t.Samples()[i].p.face, s.Samples()[i].p.face);
+        EXPECT_EQ(t.Samples()[i].fixed, s.Samples()[i].fixed);
+    }
+    for (auto key : {"closed", "initial", "samples", "polyline", "stats"}) EXPECT_TRUE(j.contains(key)) << key;
+}
+
+TEST(GeometricSnake, BadInputIsAClearError)
+{
+    CMeshO m;
+    auto surf = PrepareCube(m);
+    Snake s(surf);
+    EXPECT_THROW(s.Step(), SnakeError); // no samples yet
+    EXPECT_THROW(s.InitFromSeeds({1}, false), SnakeError);
+    EXPECT_THROW(s.InitFromSeeds({1, int(m.vert.size()) + 5}, false), SnakeError);
+    s.InitFromSeeds({1, 40, 90}, false);
+    EXPECT_THROW(s.MoveSample(999, SurfacePoint(0, vcg::Point3d(1, 0, 0))), SnakeError);
+    EXPECT_THROW(s.MoveSample(0, SurfacePoint(-3, vcg::Point3d(1, 0, 0))), SnakeError);
+    EXPECT_THROW(s.MoveSample(0, SurfacePoint(0, vcg::Point3d(NAN, 0, 0))), SnakeError);
+    SnakeParams p;
+    p.gamma = 0;
+    EXPECT_THROW(s.SetParams(p), SnakeError);
+    p = SnakeParams();
+    p.alpha = NAN;
+    EXPECT_THROW(s.SetParams(p), SnakeError);
+    p = SnakeParams();
+    p.spacing = 1e-9;
+    EXPECT_THROW(s.SetParams(p), SnakeError);
+    EXPECT_THROW(s.Run(-1), SnakeError);
+}
+
+// ---------------------------------------------------------------- accuracy with exact answers
+struct AccuracyCase
+{
+    SnakeMethod method;
+    double offset;
+};
+
+class CubeEdgeAccuracy : public ::testing::TestWithParam<AccuracyCase> {};
+
+TEST_P(CubeEdgeAccuracy, OpenSnakeConvergesOntoTheEdge)
+{
+    CMeshO m;
+    auto surf = PrepareCube(m);
+    double h = surf->MeanEdge();
+    SnakeParams p;
+    p.method = GetParam().method;
+    Snake s(surf, p);
+    s.InitFromSeeds(CubeEdgeSeeds(m, h, GetParam().offset), false);
+    gs_test::CurveError e0 = CubeError(s, h);
+    EXPECT_GT(e0.mean, 1.5);
+    s.Run(300);
+    gs_test::CurveError e = CubeError(s, h);
+    EXPECT_TRUE(s.Converged());
+    EXPECT_LT(e.p95, 0.25) << "mean " << e.mean << " max " << e.max;
+    EXPECT_LT(e.mean, 0.15);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, CubeEdgeAccuracy,
+                         ::testing::Values(AccuracyCase{SnakeMethod::LocalEmbedding, 2.0},
+                                           AccuracyCase{SnakeMethod::LocalEmbedding, 3.0},
+                                           AccuracyCase{SnakeMethod::Projection3D, 2.0},
+                                           AccuracyCase{SnakeMethod::Projection3D, 3.0}));
+
+class CylinderRimAccuracy : public ::testing::TestWithParam<AccuracyCase> {};
+
+TEST_P(CylinderRimAccuracy, ClosedSnakeConvergesOntoTheRim)
+{
+    CMeshO m;
+    auto surf = PrepareCylinder(m);
+    double h = surf->MeanEdge();
+    SnakeParams p;
+    p.method = GetParam().method;
+    Snake s(surf, p);
+    s.InitFromSeeds(CylinderRimSeeds(m, h, GetParam().offset, 8), true);
+    auto dist = [](const vcg::Point3d &x) { return gs_test::DistToCylinderRims(x); };
+    EXPECT_GT(gs_test::MeasureCurve(s.positions(), h, dist).mean, 1.5);
+    s.Run(300);
+    gs_test::CurveError e = gs_test::MeasureCurve(s.positions(), h, dist);
+    EXPECT_TRUE(s.Converged());
+    EXPECT_LT(e.p95, 0.25) << "mean " << e.mean << " max " << e.max;
+    // the traced curve, not just the samples, lies on the rim
+    EXPECT_LT(gs_test::MeasureCurve(s.PolylinePositions(), h, dist).p95, 0.3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, CylinderRimAccuracy,
+                         ::testing::Values(AccuracyCase{SnakeMethod::LocalEmbedding, 2.0},
+                                           AccuracyCase{SnakeMethod::LocalEmbedding, 3.0},
+                                           AccuracyCase{SnakeMethod::Projection3D, 2.0},
+                                           AccuracyCase{SnakeMethod::Projection3D, 3.0}));

@@ -1,0 +1,923 @@
+#ifndef VCG_EXT_GEOMETRIC_SNAKE_H
+#define VCG_EXT_GEOMETRIC_SNAKE_H
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include <vcg_ext/face_path.h>
+#include <vcg_ext/local_region.h>
+#include <vcg_ext/region_walk.h>
+#include <vcg_ext/seed_path.h>
+#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake_spline.h>
+#include <vcg_ext/snake_surface.h>
+#include <vcg_ext/surface_point.h>
+#include <vcg_ext/surface_projection.h>
+#include <vcg_ext/virtual_boundary_param.h>
+
+namespace vcg {
+namespace tri {
+
+/// How the snake is kept on the surface.
+enum class SnakeMethod {
+    LocalEmbedding = 0, ///< the paper's method: Eq. 4 in the plane of a local embedding (Sec. 4.2, 5)
+    Projection3D = 1    ///< the naive method the paper rejected: Eq. 4 in space, then project (Sec. 4.2)
+};
+
+/// Snake parameters. Positions are measured in units of the mesh's mean edge length and
+/// the energy lies in [0,1], so every parameter is scale-free: the same values work on any mesh.
+struct SnakeParams
+{
+    double alpha = 0.05;         ///< tension, Eq. 2
+    double beta = 0.5;           ///< rigidity, Eq. 2
+    double gamma = 1.0;          ///< inverse time step of Eq. 4 (larger = smaller, stabler steps)
+    double externalWeight = 1.0; ///< weight of the feature force f_x
+    double spacing = 1.0;        ///< sample spacing, in mean edge lengths
+    int updatesPerOperation = 5; ///< Eq. 4 updates per embedding (Sec. 7)
+    int segmentSamples = 48;     ///< partition size (Sec. 5.1)
+    int virtualLayers = 2;       ///< rings of virtual vertices of the embedding (Sec. 5.3)
+    double maxStep = 0.5;        ///< cap on one update's move, in local edge lengths
+    double convergenceTol = 0.02;///< converged: largest move per operation below this (edge lengths) ...
+    int convergenceWindow = 3;   ///< ... for this many operations in a row
+    SnakeMethod method = SnakeMethod::LocalEmbedding;
+
+    /// Refuses absurd values with a message for the user.
+    void Validate() const
+    {
+        auto bad = [](const std::string &what) { throw SnakeError("Geometric snake: " + what); };
+        auto finite = [](double v) { return std::isfinite(v); };
+        if (!finite(alpha) || alpha < 0 || alpha > 1e4) bad("Alpha must be in [0, 10000].");
+        if (!finite(beta) || beta < 0 || beta > 1e4) bad("Beta must be in [0, 10000].");
+        if (!finite(gamma) || gamma <= 0 || gamma > 1e6) bad("Gamma must be in (0, 1e6].");
+        if (!finite(externalWeight) || externalWeight < 0 || externalWeight > 1e4)
+            bad("ExternalWeight must be in [0, 10000].");
+        if (!finite(spacing) || spacing < 0.05 || spacing > 1000) bad("Spacing must be in [0.05, 1000] edge lengths.");
+        if (updatesPerOperation < 1 || updatesPerOperation > 1000) bad("Updates per operation must be in [1, 1000].");
+        if (segmentSamples < 6 || segmentSamples > 100000) bad("Segment size must be in [6, 100000] samples.");
+        if (virtualLayers < 1 || virtualLayers > 10) bad("Virtual layers must be in [1, 10].");
+        if (!finite(maxStep) || maxStep <= 0 || maxStep > 10) bad("Max step must be in (0, 10] edge lengths.");
+        if (!finite(convergenceTol) || convergenceTol <= 0 || convergenceTol > 10)
+            bad("Convergence tolerance must be in (0, 10] edge lengths.");
+        if (convergenceWindow < 1 || convergenceWindow > 1000) bad("Convergence window must be in [1, 1000].");
+    }
+};
+
+struct SnakeSample
+{
+    SurfacePoint p;
+    bool fixed = false;
+};
+
+/// Timings and counters, for the Log, the JSON output and the benchmarks.
+struct SnakeStats
+{
+    int operations = 0, updates = 0, embeddings = 0, regionFailures = 0;
+    bool converged = false;
+    double secondsTotal = 0;
+    double lastMaxMove = 0; ///< in mean edge lengths
+    std::vector<double> msEmbedding, msUpdate, msOperation;
+    std::vector<std::string> warnings;
+
+    static double Median(std::vector<double> v)
+    {
+        if (v.empty()) return 0;
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+    }
+};
+
+/// A geometric snake on a triangle mesh (Lee & Lee 2002), with the session API used by the
+/// batch filter and by the edit tool: create, step, run, edit points, pin, insert, delete,
+/// change parameters, undo and redo. Samples are surface points (face + barycentric); a
+/// snake never leaves the surface and never loses its pins.
+template <class MeshType>
+class GeometricSnake
+{
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
+    typedef SnakeSurface<MeshType> Surface;
+
+    /// The polyline between sample i and i+1 (Sec. 4.1): the faces it crosses and the
+    /// edge-crossing points, both valid after a trace.
+    struct Gap
+    {
+        std::vector<int> faces;
+        std::vector<SurfacePoint> crossings;
+        bool traced = false;
+    };
+
+    GeometricSnake(std::shared_ptr<Surface> surface, const SnakeParams &params = SnakeParams())
+        : surf(std::move(surface))
+    {
+        if (!surf) throw SnakeError("Geometric snake: no surface.");
+        params.Validate();
+        st.params = params;
+    }
+
+    // ----------------------------------------------------------------- creation
+    /// Section 5.5: seeds (vertex indices) joined by shortest edge paths, then samples taken
+    /// along the path at uniform spacing (Sec. 7).
+    void InitFromSeeds(const std::vector<int> &seeds, bool closed, SeedPathCost cost = SeedPathCost::Length)
+    {
+        typename SeedPath<MeshType>::Result path = SeedPath<MeshType>::Compute(surf->Mesh(), seeds, closed, cost);
+        InitFromPath(path.vertices, closed);
+        seedVertices = seeds;
+    }
+
+    /// Samples along a vertex path (consecutive vertices share an edge). Closed paths do not
+    /// repeat the first vertex.
+    void InitFromPath(const std::vector<int> &pathVerts, bool closed)
+    {
+        MeshType &m = surf->Mesh();
+        std::vector<int> pv = pathVerts;
+        if (closed) pv.push_back(pv.front());
+        if (pv.size() < 2) throw SnakeError("Geometric snake: the seed path is too short.");
+        for (int v : pv)
+            if (v < 0 || v >= int(m.vert.size()) || m.vert[v].IsD())
+                throw SnakeError("Geometric snake: the seed path has an invalid vertex.");
+        std::vector<double> cum(pv.size(), 0.0);
+        for (size_t i = 1; i < pv.size(); ++i) cum[i] = cum[i - 1] + dist(pv[i - 1], pv[i]);
+        double L = cum.back();
+        double d = st.params.spacing * surf->MeanEdge();
+        if (!(L > 0)) throw SnakeError("Geometric snake: the seed path has zero length.");
+        long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
+        n = std::max<long>(n, closed ? 3 : 2);
+        if (n > 200000) throw SnakeError("Geometric snake: the spacing is too small for this path (too many samples).");
+        double step = closed ? L / double(n) : L / double(n - 1);
+
+        pushUndo();
+        st.samples.clear();
+        st.gaps.clear();
+        st.closed = closed;
+        std::vector<double> sampleArc;
+        size_t e = 0;
+        for (long k = 0; k < n; ++k) {
+            double s = std::min(L, k * step);
+            while (e + 2 < pv.size() && cum[e + 1] < s) ++e;
+            double len = cum[e + 1] - cum[e];
+            double t = len > 0 ? (s - cum[e]) / len : 0.0;
+            t = std::min(1.0, std::max(0.0, t));
+            SnakeSample smp;
+            smp.p = pointOnEdge(pv[e], pv[e + 1], t);
+            st.samples.push_back(smp);
+            sampleArc.push_back(s);
+        }
+        // Gaps: the path edges and vertices between consecutive samples (the initial curve).
+        int gapsN = numGaps();
+        st.gaps.assign(gapsN, Gap());
+        for (int g = 0; g < gapsN; ++g) {
+            double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
+            Gap &gap = st.gaps[g];
+            for (size_t i = 0; i + 1 < pv.size(); ++i) {
+                if (cum[i + 1] < s0 - 1e-12 || cum[i] > s1 + 1e-12) continue;
+                for (int f : edgeFaces(pv[i], pv[i + 1])) gap.faces.push_back(f);
+                if (cum[i] > s0 + 1e-12 && cum[i] < s1 - 1e-12) gap.crossings.push_back(vertexPoint(pv[i]));
+            }
+            gap.traced = true;
+        }
+        initialSamples = st.samples;
+        initialPolyline = Polyline();
+        resetRun();
+    }
+
+    /// Restores samples (e.g. from JSON). Gaps are re-projected on the next operation.
+    void InitFromSamples(const std::vector<SnakeSample> &samples, bool closed)
+    {
+        if (int(samples.size()) < (closed ? 3 : 2)) throw SnakeError("Geometric snake: too few samples.");
+        for (const auto &s : samples) checkPoint(s.p);
+        pushUndo();
+        st.samples = samples;
+        st.closed = closed;
+        st.gaps.assign(numGaps(), Gap());
+        if (initialSamples.empty()) {
+            initialSamples = st.samples;
+            initialPolyline = Polyline();
+        }
+        resetRun();
+    }
+
+    // ----------------------------------------------------------------- motion
+    /// One snake operation (Sec. 4.3, Fig. 1): partition, then for every segment build the
+    /// local region, embed it, map samples and energy gradients into the plane, do up to
+    /// `updatesPerOperation` updates of Eq. 4 and map back; then the overlapping segments
+    /// across the borders. Returns the largest sample move in mean edge lengths.
+    double Step()
+    {
+        if (st.samples.empty()) throw SnakeError("Geometric snake: the snake has no samples.");
+        if (!surf->MatchesMesh()) throw SnakeError("Geometric snake: the mesh changed since the snake was created.");
+        auto t0 = clock::now();
+        std::vector<vcg::Point3d> before = positions();
+        if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
+        else stepProjection();
+        std::vector<vcg::Point3d> after = positions();
+        double maxMove = 0;
+        for (size_t i = 0; i < after.size(); ++i) maxMove = std::max(maxMove, (after[i] - before[i]).Norm());
+        maxMove /= surf->MeanEdge();
+        stats.lastMaxMove = maxMove;
+        stats.operations++;
+        double ms = msSince(t0);
+        stats.msOperation.push_back(ms);
+        stats.secondsTotal += ms / 1000.0;
+        updateConvergence(maxMove, after);
+        return maxMove;
+    }
+
+    /// Operations until converged or `maxOperations`. `progress(op)` may return false to stop.
+    bool Run(int maxOperations, const std::function<bool(int)> &progress = nullptr)
+    {
+        if (maxOperations < 0 || maxOperations > 10000000) throw SnakeError("Geometric snake: absurd operation limit.");
+        pushUndo();
+        bool keep = keepUndo;
+        keepUndo = false; // one undo step for the whole run
+        for (int op = 0; op < maxOperations && !stats.converged; ++op) {
+            Step();
+            if (progress && !progress(op)) break;
+        }
+        keepUndo = keep;
+        return stats.converged;
+    }
+
+    // ----------------------------------------------------------------- editing (Sec. 5.5)
+    /// Point editing: moves sample i; its neighbours follow through the spline energy.
+    /// The region of the next operation is enlarged by the projection of the segments to
+    /// the neighbours (Sec. 5.2, Fig. 4).
+    void MoveSample(int i, const SurfacePoint &p, bool fix = false)
+    {
+        checkIndex(i);
+        checkPoint(p);
+        pushUndo();
+        st.samples[i].p = p;
+        st.samples[i].p.Normalize();
+        if (fix) st.samples[i].fixed = true;
+        invalidateAround(i);
+        resetRun();
+    }
+
+    /// Point fixing.
+    void SetFixed(int i, bool fixed)
+    {
+        checkIndex(i);
+        pushUndo();
+        st.samples[i].fixed = fixed;
+        resetRun();
+    }
+
+    /// Inserts a sample in the middle of gap i (between samples i and i+1); returns its index.
+    int InsertSample(int gap)
+    {
+        if (gap < 0 || gap >= numGaps()) throw SnakeError("Geometric snake: no gap " + std::to_string(gap) + ".");
+        std::vector<SurfacePoint> pts = gapPoints(gap);
+        std::vector<vcg::Point3d> xyz;
+        for (auto &p : pts) xyz.push_back(p.Pd(surf->Mesh()));
+        double L = 0;
+        for (size_t k = 1; k < xyz.size(); ++k) L += (xyz[k] - xyz[k - 1]).Norm();
+        SurfacePoint mid = pts.front();
+        double acc = 0;
+        for (size_t k = 1; k < xyz.size(); ++k) {
+            double l = (xyz[k] - xyz[k - 1]).Norm();
+            if (acc + l >= L / 2 && l > 0) {
+                double t = (L / 2 - acc) / l;
+                mid = interpolate(pts[k - 1], pts[k], t);
+                break;
+            }
+            acc += l;
+        }
+        pushUndo();
+        SnakeSample s;
+        s.p = mid;
+        st.samples.insert(st.samples.begin() + gap + 1, s);
+        st.gaps[gap] = Gap();
+        st.gaps.insert(st.gaps.begin() + gap + 1, Gap());
+        resetRun();
+        return gap + 1;
+    }
+
+    void DeleteSample(int i)
+    {
+        checkIndex(i);
+        if (int(st.samples.size()) <= (st.closed ? 3 : 2))
+            throw SnakeError("Geometric snake: cannot delete, the snake would have too few samples.");
+        pushUndo();
+        st.samples.erase(st.samples.begin() + i);
+        int n = int(st.samples.size());
+        if (st.closed) {
+            st.gaps.erase(st.gaps.begin() + i);
+            st.gaps[(i - 1 + n) % n] = Gap();
+        } else {
+            int g = std::min(i, int(st.gaps.size()) - 1);
+            st.gaps.erase(st.gaps.begin() + g);
+            if (i - 1 >= 0 && i - 1 < int(st.gaps.size())) st.gaps[i - 1] = Gap();
+        }
+        resetRun();
+    }
+
+    void SetParams(const SnakeParams &p)
+    {
+        p.Validate();
+        pushUndo();
+        st.params = p;
+        splines.clear();
+        resetRun();
+    }
+
+    /// The surface's energy was replaced (another energy type or smoothing): start afresh.
+    void EnergyChanged() { resetRun(); }
+
+    // ----------------------------------------------------------------- undo / redo
+    bool CanUndo() const { return !undoStack.empty(); }
+    bool CanRedo() const { return !redoStack.empty(); }
+    bool Undo()
+    {
+        if (undoStack.empty()) return false;
+        redoStack.push_back(st);
+        st = undoStack.back();
+        undoStack.pop_back();
+        splines.clear();
+        resetRun();
+        return true;
+    }
+    bool Redo()
+    {
+        if (redoStack.empty()) return false;
+        undoStack.push_back(st);
+        st = redoStack.back();
+        redoStack.pop_back();
+        splines.clear();
+        resetRun();
+        return true;
+    }
+
+    // ----------------------------------------------------------------- access
+    const std::vector<SnakeSample> &Samples() const { return st.samples; }
+    int SampleCount() const { return int(st.samples.size()); }
+    bool Closed() const { return st.closed; }
+    const SnakeParams &Params() const { return st.params; }
+    const SnakeStats &Stats() const { return stats; }
+    bool Converged() const { return stats.converged; }
+    Surface &GetSurface() { return *surf; }
+    std::shared_ptr<Surface> SurfacePtr() const { return surf; }
+    const std::vector<int> &SeedVertices() const { return seedVertices; }
+    const std::vector<SnakeSample> &InitialSamples() const { return initialSamples; }
+    const std::vector<SurfacePoint> &InitialPolyline() const { return initialPolyline; }
+    const std::vector<Gap> &Gaps() const { return st.gaps; }
+
+    std::vector<vcg::Point3d> positions() const
+    {
+        std::vector<vcg::Point3d> p;
+        p.reserve(st.samples.size());
+        for (const auto &s : st.samples) p.push_back(s.p.Pd(surf->Mesh()));
+        return p;
+    }
+
+    /// The curve on the surface (Sec. 4.1): the samples and, between them, the points where
+    /// the straight segment in the embedding crosses mesh edges. Closed curves do not repeat
+    /// the first point. Untraced gaps are traced first.
+    std::vector<SurfacePoint> Polyline()
+    {
+        bool missing = false;
+        for (const auto &g : st.gaps) missing |= !g.traced;
+        if (missing && st.samples.size() >= 2) retrace();
+        std::vector<SurfacePoint> out;
+        int n = int(st.samples.size());
+        for (int i = 0; i < n; ++i) {
+            out.push_back(st.samples[i].p);
+            if (i < numGaps())
+                for (const auto &c : gapPoints(i, false)) out.push_back(c);
+        }
+        return out;
+    }
+
+    std::vector<vcg::Point3d> PolylinePositions()
+    {
+        std::vector<vcg::Point3d> out;
+        for (const auto &p : Polyline()) out.push_back(p.Pd(surf->Mesh()));
+        return out;
+    }
+
+private:
+    typedef std::chrono::steady_clock clock;
+    struct State
+    {
+        std::vector<SnakeSample> samples;
+        std::vector<Gap> gaps;
+        bool closed = false;
+        SnakeParams params;
+    };
+    struct Segment
+    {
+        std::vector<int> idx; // snake sample indices, consecutive along the snake
+        bool fixFirst = false, fixLast = false;
+    };
+
+    std::shared_ptr<Surface> surf;
+    State st;
+    std::deque<State> undoStack, redoStack;
+    bool keepUndo = true;
+    SnakeStats stats;
+    std::vector<int> seedVertices;
+    std::vector<SnakeSample> initialSamples;
+    std::vector<SurfacePoint> initialPolyline;
+    std::deque<double> moveHistory;
+    std::deque<std::vector<vcg::Point3d>> posHistory;
+    std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
+    LocalRegion<MeshType> region;
+
+    static double msSince(clock::time_point t0)
+    {
+        return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+    }
+    int numGaps() const
+    {
+        int n = int(st.samples.size());
+        return st.closed ? n : std::max(0, n - 1);
+    }
+    double dist(int a, int b) const
+    {
+        const MeshType &m = surf->Mesh();
+        return double((m.vert[a].cP() - m.vert[b].cP()).Norm());
+    }
+    void checkIndex(int i) const
+    {
+        if (i < 0 || i >= int(st.samples.size()))
+            throw SnakeError("Geometric snake: no sample " + std::to_string(i) + " (the snake has " +
+                             std::to_string(st.samples.size()) + ").");
+    }
+    void checkPoint(const SurfacePoint &p) const
+    {
+        if (!p.IsValid() || !surf->FaceUsable(p.face))
+            throw SnakeError("Geometric snake: the point is not on the mesh (face " + std::to_string(p.face) + ").");
+    }
+    void pushUndo()
+    {
+        if (!keepUndo) return;
+        undoStack.push_back(st);
+        if (undoStack.size() > 200) undoStack.pop_front();
+        redoStack.clear();
+    }
+    void resetRun()
+    {
+        stats.converged = false;
+        moveHistory.clear();
+        posHistory.clear();
+    }
+    void invalidateAround(int i)
+    {
+        int n = int(st.samples.size());
+        if (st.closed) {
+            st.gaps[i] = Gap();
+            st.gaps[(i - 1 + n) % n] = Gap();
+        } else {
+            if (i < int(st.gaps.size())) st.gaps[i] = Gap();
+            if (i - 1 >= 0) st.gaps[i - 1] = Gap();
+        }
+    }
+
+    // ----- points on mesh edges and vertices
+    SurfacePoint vertexPoint(int v) const
+    {
+        const MeshType &m = surf->Mesh();
+        vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&m.vert[v]));
+        return SurfacePoint::AtCorner(surf->Idx(vfi.F()), vfi.I());
+    }
+    std::vector<int> edgeFaces(int a, int b) const
+    {
+        const MeshType &m = surf->Mesh();
+        std::vector<int> out;
+        for (vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&m.vert[a])); !vfi.End(); ++vfi)
+            for (int k = 0; k < 3; ++k)
+                if (vfi.F()->V(k) == &m.vert[b]) out.push_back(surf->Idx(vfi.F()));
+        return out;
+    }
+    /// The point (1-t) a + t b on mesh edge ab, expressed in a face containing that edge.
+    SurfacePoint pointOnEdge(int a, int b, double t) const
+    {
+        const MeshType &m = surf->Mesh();
+        for (vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&m.vert[a])); !vfi.End(); ++vfi)
+            for (int k = 0; k < 3; ++k)
+                if (vfi.F()->V(k) == &m.vert[b]) {
+                    vcg::Point3d bary(0, 0, 0);
+                    bary[vfi.I()] = 1 - t;
+                    bary[k] = t;
+                    return SurfacePoint(surf->Idx(vfi.F()), bary);
+                }
+        throw SnakeError("Geometric snake: the seed path uses a missing edge.");
+    }
+    /// Point between two surface points that share a face (consecutive polyline points).
+    SurfacePoint interpolate(const SurfacePoint &a, const SurfacePoint &b, double t) const
+    {
+        const MeshType &m = surf->Mesh();
+        vcg::Point3d pa = a.Pd(m), pb = b.Pd(m);
+        vcg::Point3d q = pa * (1 - t) + pb * t;
+        return SurfaceProjection<MeshType>::Closest(*surf, a.face, q, 2 * (pb - pa).Norm() + surf->MeanEdge());
+    }
+
+    /// Points strictly inside gap i (edge crossings); falls back to the shared-edge
+    /// midpoints of the face path when the gap was never traced.
+    std::vector<SurfacePoint> gapPoints(int g, bool withEnds = true) const
+    {
+        const Gap &gap = st.gaps[g];
+        int n = int(st.samples.size());
+        std::vector<SurfacePoint> out;
+        if (withEnds) out.push_back(st.samples[g].p);
+        if (gap.traced) {
+            for (const auto &c : gap.crossings) out.push_back(c);
+        } else {
+            std::vector<int> fp = FacePath<MeshType>::Find(*surf, st.samples[g].p.face, st.samples[(g + 1) % n].p.face);
+            for (size_t k = 0; k + 1 < fp.size(); ++k) {
+                const FaceType &f = surf->Mesh().face[fp[k]];
+                for (int e = 0; e < 3; ++e)
+                    if (surf->Idx(f.cFFp(e)) == fp[k + 1]) {
+                        vcg::Point3d b(0, 0, 0);
+                        b[e] = 0.5;
+                        b[(e + 1) % 3] = 0.5;
+                        out.push_back(SurfacePoint(fp[k], b));
+                    }
+            }
+        }
+        if (withEnds) out.push_back(st.samples[(g + 1) % n].p);
+        return out;
+    }
+
+    // ----- partitioning (Sec. 5.1)
+    std::vector<Segment> partition(std::vector<Segment> &overlaps) const
+    {
+        std::vector<Segment> segs;
+        overlaps.clear();
+        const int n = int(st.samples.size());
+        const int S = st.params.segmentSamples;
+        if (!st.closed && n <= S) {
+            Segment s;
+            for (int i = 0; i < n; ++i) s.idx.push_back(i);
+            segs.push_back(s);
+            return segs;
+        }
+        int K = st.closed ? std::max(2, (n + S - 1) / S) : std::max(1, (n - 1 + S - 2) / (S - 1));
+        if (st.closed && n < 6) K = 1;
+        // Sharp corners (turning angle > 60 degrees) belong in the middle of a segment.
+        std::vector<vcg::Point3d> p = positions();
+        std::vector<int> corners;
+        for (int i = 0; i < n; ++i) {
+            if (!st.closed && (i == 0 || i == n - 1)) continue;
+            vcg::Point3d a = p[i] - p[(i - 1 + n) % n], b = p[(i + 1) % n] - p[i];
+            double na = a.Norm(), nb = b.Norm();
+            if (na > 0 && nb > 0 && (a * b) / (na * nb) < 0.5) corners.push_back(i);
+        }
+        auto cyclicDist = [&](int a, int b) {
+            int d = std::abs(a - b);
+            return st.closed ? std::min(d, n - d) : d;
+        };
+        std::vector<int> borders;
+        if (st.closed) {
+            if (K == 1) { // tiny closed snake: one cyclic segment
+                Segment s;
+                for (int i = 0; i < n; ++i) s.idx.push_back(i);
+                segs.push_back(s);
+                return segs;
+            }
+            // choose the rotation that keeps corners farthest from the borders
+            int period = std::max(1, n / K), bestOff = 0;
+            double bestScore = -1;
+            for (int off = 0; off < period; ++off) {
+                double score = 1e9;
+                for (int c : corners)
+                    for (int k = 0; k < K; ++k) score = std::min(score, double(cyclicDist(c, (off + k * n / K) % n)));
+                if (score > bestScore) { bestScore = score; bestOff = off; }
+            }
+            for (int k = 0; k < K; ++k) borders.push_back((bestOff + k * n / K) % n);
+            for (int k = 0; k < K; ++k) {
+                Segment s;
+                int a = borders[k], b = borders[(k + 1) % K];
+                int len = (b - a + n) % n;
+                for (int j = 0; j <= len; ++j) s.idx.push_back((a + j) % n);
+                s.fixFirst = s.fixLast = true;
+                segs.push_back(s);
+            }
+        } else {
+            borders.push_back(0);
+            for (int k = 1; k < K; ++k) {
+                int b = int(std::lround(double(k) * (n - 1) / K));
+                int half = std::max(1, (n - 1) / (2 * K));
+                // shift the border away from a nearby corner
+                for (int c : corners)
+                    if (std::abs(c - b) < half / 2 + 1) b = (c > b) ? std::max(borders.back() + 2, c - half) : std::min(n - 3, c + half);
+                b = std::max(borders.back() + 2, std::min(n - 3, b));
+                borders.push_back(b);
+            }
+            borders.push_back(n - 1);
+            for (size_t k = 0; k + 1 < borders.size(); ++k) {
+                Segment s;
+                for (int i = borders[k]; i <= borders[k + 1]; ++i) s.idx.push_back(i);
+                s.fixFirst = (k != 0);
+                s.fixLast = (k + 2 != borders.size());
+                segs.push_back(s);
+            }
+            borders = std::vector<int>(borders.begin() + 1, borders.end() - 1);
+        }
+        // Overlapping segments across each border, with their own ends fixed (Fig. 2).
+        int half = std::max(2, S / 2);
+        for (int b : borders) {
+            Segment s;
+            int from = b - half, to = b + half;
+            if (!st.closed) { from = std::max(0, from); to = std::min(n - 1, to); }
+            if (st.closed && to - from + 1 >= n) { from = b - n / 2 + 1; to = from + n - 2; }
+            for (int i = from; i <= to; ++i) s.idx.push_back(((i % n) + n) % n);
+            s.fixFirst = st.closed || from > 0;
+            s.fixLast = st.closed || to < n - 1;
+            overlaps.push_back(s);
+        }
+        return segs;
+    }
+
+    // ----- the embedding method (Sec. 5.2 - 5.4)
+    void stepEmbedding()
+    {
+        std::vector<Segment> overlaps;
+        std::vector<Segment> segs = partition(overlaps);
+        for (auto &s : segs) moveSegment(s, st.params.updatesPerOperation, 0);
+        for (auto &s : overlaps) moveSegment(s, st.params.updatesPerOperation, 0);
+    }
+
+    /// Retraces every gap (no motion): one embedding per segment.
+    void retrace()
+    {
+        std::vector<Segment> overlaps;
+        std::vector<Segment> segs = partition(overlaps);
+        for (auto &s : segs) moveSegment(s, 0, 0);
+        for (auto &s : overlaps) moveSegment(s, 0, 0);
+    }
+
+    int gapIndex(int a, int b) const
+    {
+        int n = int(st.samples.size());
+        if (b == (a + 1) % n && (st.closed || a + 1 < n)) return a;
+        return -1;
+    }
+
+    void moveSegment(const Segment &seg, int updates, int depth)
+    {
+        const int k = int(seg.idx.size());
+        if (k < 2) return;
+        const MeshType &m = surf->Mesh();
+        auto t0 = clock::now();
+        // Sec. 5.2: the faces the segment crosses ...
+        std::vector<int> core;
+        for (int j = 0; j < k; ++j) core.push_back(st.samples[seg.idx[j]].p.face);
+        bool wholeClosed = st.closed && k == int(st.samples.size()) && seg.idx.front() == 0 && !seg.fixFirst;
+        int gapsInSeg = wholeClosed ? k : k - 1;
+        for (int j = 0; j < gapsInSeg; ++j) {
+            int g = gapIndex(seg.idx[j], seg.idx[(j + 1) % k]);
+            if (g < 0) continue;
+            Gap &gap = st.gaps[g];
+            if (gap.faces.empty())
+                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[j]].p.face, st.samples[seg.idx[(j + 1) % k]].p.face);
+            core.insert(core.end(), gap.faces.begin(), gap.faces.end());
+        }
+        // ... plus their vertex neighbours, holes filled (LocalRegion), then Sec. 5.3.
+        VirtualBoundaryParam::Result emb;
+        bool ok = region.Build(*surf, core);
+        if (ok) ok = VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, surf->MeanEdge(),
+                                                 st.params.virtualLayers, emb);
+        if (!ok) {
+            if (k >= 8 && depth < 6) { // split the segment (Sec. 5.1) and try the halves
+                Segment a, b;
+                int mid = k / 2;
+                a.idx.assign(seg.idx.begin(), seg.idx.begin() + mid + 1);
+                b.idx.assign(seg.idx.begin() + mid, seg.idx.end());
+                a.fixFirst = seg.fixFirst; a.fixLast = true;
+                b.fixFirst = true; b.fixLast = seg.fixLast;
+                moveSegment(a, updates, depth + 1);
+                moveSegment(b, updates, depth + 1);
+                return;
+            }
+            stats.regionFailures++;
+            std::string why = region.error.empty() ? emb.error : region.error;
+            if (stats.warnings.size() < 20) stats.warnings.push_back("a segment could not move: " + why);
+            return;
+        }
+        stats.embeddings++;
+        stats.msEmbedding.push_back(msSince(t0));
+
+        // Sec. 5.4: samples into the plane by barycentric coordinates.
+        std::vector<int> lf(k);
+        Eigen::MatrixXd X(k, 2);
+        for (int j = 0; j < k; ++j) {
+            const SurfacePoint &p = st.samples[seg.idx[j]].p;
+            lf[j] = region.LocalFace(*surf, p.face);
+            if (lf[j] < 0) { // cannot happen: sample faces are in the core
+                stats.regionFailures++;
+                return;
+            }
+            X.row(j) = toPlane(emb, lf[j], p.bary).transpose();
+        }
+        // Sec. 6.2: energy gradients of the embedded faces, computed once per embedding.
+        std::vector<Eigen::Vector2d> grad(region.RealFaces());
+        std::vector<char> gradDone(region.RealFaces(), 0);
+        auto gradient = [&](int t) -> const Eigen::Vector2d & {
+            if (!gradDone[t]) {
+                gradDone[t] = 1;
+                const auto &T = region.tri[t];
+                const FaceType &f = m.face[region.faces[t]];
+                Eigen::Matrix2d J;
+                J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
+                J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
+                double e0 = surf->EnergyAt(surf->Idx(f.cV(0))), e1 = surf->EnergyAt(surf->Idx(f.cV(1))),
+                       e2 = surf->EnergyAt(surf->Idx(f.cV(2)));
+                double det = J.determinant();
+                if (std::abs(det) > 1e-12) grad[t] = J.transpose().inverse() * Eigen::Vector2d(e1 - e0, e2 - e0);
+                else grad[t].setZero();
+            }
+            return grad[t];
+        };
+        std::vector<bool> fixed(k);
+        for (int j = 0; j < k; ++j)
+            fixed[j] = st.samples[seg.idx[j]].fixed || (j == 0 && seg.fixFirst) || (j == k - 1 && seg.fixLast);
+        Eigen::MatrixXd B(k, 3); // barycentric coordinates of each sample in its local face
+        for (int j = 0; j < k; ++j) {
+            const auto &b = st.samples[seg.idx[j]].p.bary;
+            B.row(j) << b[0], b[1], b[2];
+        }
+        if (updates > 0) {
+            SnakeSpline &spline = splineFor(k, wholeClosed, fixed);
+            Eigen::MatrixXd F(k, 2);
+            for (int u = 0; u < updates; ++u) {
+                auto tu = clock::now();
+                for (int j = 0; j < k; ++j) F.row(j) = st.params.externalWeight * gradient(lf[j]).transpose();
+                Eigen::MatrixXd Xn = spline.Update(X, F);
+                bool left = false;
+                for (int j = 0; j < k; ++j) {
+                    if (fixed[j]) continue;
+                    Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
+                    if (!d.allFinite()) continue;
+                    double cap = st.params.maxStep * localEdge(emb, lf[j]);
+                    double len = d.norm();
+                    if (len > cap) d *= cap / len;
+                    if (len == 0) continue;
+                    RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
+                                                            X.row(j).transpose() + d, false);
+                    lf[j] = w.face;
+                    B.row(j) = w.bary.transpose();
+                    X.row(j) = toPlane(emb, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
+                    left |= w.exited;
+                }
+                stats.updates++;
+                stats.msUpdate.push_back(msSince(tu));
+                if (left) break; // the curve reached the region border: re-embed (Sec. 5.4)
+            }
+        }
+        // Map back by barycentric coordinates.
+        for (int j = 0; j < k; ++j) {
+            SnakeSample &s = st.samples[seg.idx[j]];
+            if (fixed[j] && s.fixed) continue; // pinned samples are held exactly
+            s.p.face = region.faces[lf[j]];
+            s.p.bary = vcg::Point3d(B(j, 0), B(j, 1), B(j, 2));
+            s.p.Normalize();
+        }
+        // Trace the straight segments between samples across the embedded triangles (Sec. 4.1).
+        for (int j = 0; j < gapsInSeg; ++j) {
+            int a = j, b = (j + 1) % k;
+            int g = gapIndex(seg.idx[a], seg.idx[b]);
+            if (g < 0) continue;
+            RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(),
+                                                    X.row(b).transpose(), true);
+            Gap &gap = st.gaps[g];
+            gap = Gap();
+            if (w.exited) { // leaves the region (non-convex border): re-project next time
+                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[a]].p.face, st.samples[seg.idx[b]].p.face);
+                continue;
+            }
+            gap.faces.push_back(region.faces[lf[a]]);
+            for (const auto &c : w.crossings) {
+                gap.crossings.push_back(SurfacePoint(region.faces[c.face], vcg::Point3d(c.bary[0], c.bary[1], c.bary[2])));
+                gap.faces.push_back(region.faces[c.face]);
+            }
+            gap.faces.push_back(region.faces[w.face]);
+            gap.faces.push_back(region.faces[lf[b]]);
+            gap.traced = true;
+        }
+    }
+
+    static Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, const std::array<int, 3> &T,
+                                   const vcg::Point3d &b)
+    {
+        return b[0] * emb.uv[T[0]] + b[1] * emb.uv[T[1]] + b[2] * emb.uv[T[2]];
+    }
+    Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, int t, const vcg::Point3d &b) const
+    {
+        return toPlane(emb, region.tri[t], b);
+    }
+    double localEdge(const VirtualBoundaryParam::Result &emb, int t) const
+    {
+        const auto &T = region.tri[t];
+        return ((emb.uv[T[1]] - emb.uv[T[0]]).norm() + (emb.uv[T[2]] - emb.uv[T[1]]).norm() +
+                (emb.uv[T[0]] - emb.uv[T[2]]).norm()) / 3.0;
+    }
+
+    SnakeSpline &splineFor(int k, bool closed, const std::vector<bool> &fixed)
+    {
+        auto key = std::make_tuple(k, closed, fixed);
+        if (splines.size() > 64) splines.clear();
+        SnakeSpline &s = splines[key];
+        s.Setup(k, closed, st.params.alpha, st.params.beta, st.params.gamma, fixed);
+        return s;
+    }
+
+    // ----- the naive method (Sec. 4.2): Eq. 4 in space, then projection onto the surface
+    void stepProjection()
+    {
+        const MeshType &m = surf->Mesh();
+        const int n = int(st.samples.size());
+        const double h = surf->MeanEdge();
+        std::vector<bool> fixed(n);
+        for (int i = 0; i < n; ++i) fixed[i] = st.samples[i].fixed;
+        SnakeSpline &spline = splineFor(n, st.closed, fixed);
+        Eigen::MatrixXd X(n, 3), F(n, 3);
+        for (int u = 0; u < st.params.updatesPerOperation; ++u) {
+            auto tu = clock::now();
+            for (int i = 0; i < n; ++i) {
+                vcg::Point3d p = st.samples[i].p.Pd(m) / h;
+                X.row(i) << p[0], p[1], p[2];
+                vcg::Point3d g = faceGradient3D(st.samples[i].p.face) * h; // per edge length
+                F.row(i) << st.params.externalWeight * g[0], st.params.externalWeight * g[1],
+                    st.params.externalWeight * g[2];
+            }
+            Eigen::MatrixXd Xn = spline.Update(X, F);
+            for (int i = 0; i < n; ++i) {
+                if (fixed[i]) continue;
+                Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
+                if (!d.allFinite()) continue;
+                double len = d.norm(), cap = st.params.maxStep * faceEdge(st.samples[i].p.face) / h;
+                if (len > cap) d *= cap / len;
+                Eigen::Vector3d q = X.row(i).transpose() + d;
+                vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
+                st.samples[i].p = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
+                                                                        d.norm() * h + 1.5 * h);
+            }
+            stats.updates++;
+            stats.msUpdate.push_back(msSince(tu));
+        }
+        for (auto &g : st.gaps) g = Gap(); // traced lazily by Polyline()
+    }
+
+    double faceEdge(int f) const
+    {
+        const FaceType &ff = surf->Mesh().face[f];
+        return double((ff.cP(0) - ff.cP(1)).Norm() + (ff.cP(1) - ff.cP(2)).Norm() + (ff.cP(2) - ff.cP(0)).Norm()) / 3.0;
+    }
+
+    /// Gradient of the linear energy inside a face, in space (0 on degenerate faces).
+    vcg::Point3d faceGradient3D(int f) const
+    {
+        const FaceType &ff = surf->Mesh().face[f];
+        vcg::Point3d p[3];
+        double e[3];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = vcg::Point3d::Construct(ff.cP(k));
+            e[k] = surf->EnergyAt(surf->Idx(ff.cV(k)));
+        }
+        vcg::Point3d n = (p[1] - p[0]) ^ (p[2] - p[0]);
+        double a2 = n.SquaredNorm();
+        if (!(a2 > 1e-30)) return vcg::Point3d(0, 0, 0);
+        vcg::Point3d g(0, 0, 0);
+        for (int k = 0; k < 3; ++k) g += (n ^ (p[(k + 2) % 3] - p[(k + 1) % 3])) * e[k]; // grad of hat k = n x e_k / |n|^2
+        return g / a2;
+    }
+
+    // ----- convergence: largest move below tolerance for `window` operations in a row, or
+    // the snake oscillates in place (same positions as 2 and 4 operations ago).
+    void updateConvergence(double maxMove, const std::vector<vcg::Point3d> &pos)
+    {
+        const double tol = st.params.convergenceTol;
+        moveHistory.push_back(maxMove);
+        while (int(moveHistory.size()) > st.params.convergenceWindow) moveHistory.pop_front();
+        bool still = int(moveHistory.size()) == st.params.convergenceWindow &&
+                     std::all_of(moveHistory.begin(), moveHistory.end(), [&](double v) { return v < tol; });
+        posHistory.push_back(pos);
+        while (posHistory.size() > 5) posHistory.pop_front();
+        bool oscillating = false;
+        if (posHistory.size() == 5) {
+            auto maxDist = [&](const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b) {
+                double d = 0;
+                for (size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, (a[i] - b[i]).Norm());
+                return a.size() == b.size() ? d / surf->MeanEdge() : 1e9;
+            };
+            oscillating = maxDist(posHistory[4], posHistory[2]) < tol && maxDist(posHistory[4], posHistory[0]) < tol;
+        }
+        stats.converged = still || oscillating;
+    }
+};
+
+} // namespace tri
+} // namespace vcg
+
+#endif

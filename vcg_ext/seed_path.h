@@ -1,0 +1,277 @@
+#ifndef VCG_EXT_SEED_PATH_H
+#define VCG_EXT_SEED_PATH_H
+
+// Snake initialization, Lee & Lee 2002 Section 5.5: the user picks a sequence of vertices near
+// a feature and the initial (open or closed) curve joins consecutive picks with shortest paths
+// along the mesh edges. Optionally the edge cost is weighted by the feature energy (vertex
+// quality in [0,1], low = feature), an "intelligent scissors" path that already hugs the feature.
+
+#include <algorithm>
+#include <cctype>
+#include <climits>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/topology.h>
+
+#include "mesh_validation.h"
+#include "snake_error.h"
+
+namespace vcg {
+namespace tri {
+
+enum class SeedPathCost { Length = 0, Feature = 1 };
+
+template <class MeshType>
+class SeedPath
+{
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
+    typedef MeshValidation<MeshType> MV;
+
+    struct Result
+    {
+        std::vector<int> vertices;      // path vertex indices in order; closed: first vertex not repeated
+        std::vector<int> seedPositions; // index in `vertices` of each seed
+        bool closed = false;
+        double length = 0;              // Euclidean length of the path
+    };
+
+    /// Joins consecutive seeds (and, if closed, the last back to the first) with minimal paths
+    /// along mesh edges. Cost: Euclidean edge length, or with SeedPathCost::Feature
+    /// length * (featureEpsilon + mean quality of the two endpoints). A* with the straight-line
+    /// distance (times featureEpsilon for the feature cost, a lower bound since quality >= 0) as
+    /// heuristic, so a short path on a huge mesh only visits a small neighbourhood.
+    static Result Compute(MeshType &m, const std::vector<int> &seeds, bool closed,
+                          SeedPathCost cost = SeedPathCost::Length, double featureEpsilon = 0.05)
+    {
+        MV::RequireSurface(m);
+        const int nv = int(m.vert.size());
+        const size_t minSeeds = closed ? 3 : 2;
+        if (seeds.size() < minSeeds)
+            throw SnakeError(std::string("A ") + (closed ? "closed" : "open") + " snake needs at least " +
+                             std::to_string(minSeeds) + " seed vertices (got " + std::to_string(seeds.size()) + ").");
+        if (cost == SeedPathCost::Feature) {
+            if (!tri::HasPerVertexQuality(m))
+                throw SnakeError("The feature-weighted seed path needs the feature energy in the vertex quality.");
+            if (!(featureEpsilon > 0) || !std::isfinite(featureEpsilon))
+                throw SnakeError("The feature path epsilon must be a positive number (got " +
+                                 std::to_string(featureEpsilon) + ").");
+        }
+
+        // Which vertices are used by a live face (seeds on isolated vertices cannot be joined).
+        std::vector<char> referenced(nv, 0);
+        for (const FaceType &f : m.face)
+            if (!f.IsD())
+                for (int k = 0; k < 3; ++k) referenced[MV::VIndex(m, f.cV(k))] = 1;
+        for (size_t i = 0; i < seeds.size(); ++i) {
+            const int s = seeds[i];
+            const std::string who = "Seed " + std::to_string(i + 1) + " (vertex " + std::to_string(s) + ")";
+            if (s < 0 || s >= nv)
+                throw SnakeError(who + " is not a vertex of the mesh (valid indices are 0.." + std::to_string(nv - 1) +
+                                 ").");
+            if (m.vert[s].IsD()) throw SnakeError(who + " is a deleted vertex.");
+            if (!referenced[s]) throw SnakeError(who + " is an isolated vertex that belongs to no face.");
+        }
+        for (size_t i = 0; i + 1 < seeds.size(); ++i)
+            if (seeds[i] == seeds[i + 1])
+                throw SnakeError("Seeds " + std::to_string(i + 1) + " and " + std::to_string(i + 2) +
+                                 " are the same vertex (" + std::to_string(seeds[i]) + "); remove the repetition.");
+        if (closed && seeds.front() == seeds.back())
+            throw SnakeError("The last seed repeats the first (vertex " + std::to_string(seeds.front()) +
+                             "); a closed snake is closed automatically, do not repeat the first seed.");
+
+        Search search(m, cost, featureEpsilon);
+
+        Result r;
+        r.closed = closed;
+        r.vertices.push_back(seeds[0]);
+        r.seedPositions.push_back(0);
+        const size_t nSeg = closed ? seeds.size() : seeds.size() - 1;
+        for (size_t i = 0; i < nSeg; ++i) {
+            const size_t j = (i + 1) % seeds.size();
+            std::vector<int> seg;
+            if (!search.Run(seeds[i], seeds[j], seg))
+                throw SnakeError("Seeds " + std::to_string(i + 1) + " (vertex " + std::to_string(seeds[i]) + ") and " +
+                                 std::to_string(j + 1) + " (vertex " + std::to_string(seeds[j]) +
+                                 ") are on different connected components of the mesh: no path along its edges joins "
+                                 "them.");
+            r.vertices.insert(r.vertices.end(), seg.begin() + 1, seg.end());
+            if (j != 0) r.seedPositions.push_back(int(r.vertices.size()) - 1);
+        }
+        for (size_t i = 0; i + 1 < r.vertices.size(); ++i) r.length += EdgeLen(m, r.vertices[i], r.vertices[i + 1]);
+        if (closed) r.vertices.pop_back(); // the closing segment ended back on the first seed
+        return r;
+    }
+
+    /// "12, 40,77" -> {12,40,77}. Separators: whitespace and/or one ',' or ';'. Empty text gives
+    /// no seeds. Throws SnakeError on anything else (negative numbers, letters, ",,").
+    static std::vector<int> ParseSeeds(const std::string &text)
+    {
+        std::vector<int> out;
+        size_t i = 0;
+        const size_t n = text.size();
+        auto skipWs = [&]() {
+            while (i < n && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        };
+        auto junk = [&](const std::string &why) {
+            return SnakeError("Cannot read the seed list \"" + text + "\": " + why +
+                              ". Write vertex indices separated by commas, e.g. \"12, 40, 77\".");
+        };
+        skipWs();
+        while (i < n) {
+            if (text[i] == '-') throw junk("vertex indices cannot be negative");
+            if (text[i] == '+') ++i;
+            if (i >= n || !std::isdigit(static_cast<unsigned char>(text[i])))
+                throw junk(std::string("unexpected character '") + (i < n ? text[i] : ' ') + "' at position " +
+                           std::to_string(i + 1));
+            long long v = 0;
+            while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) {
+                v = v * 10 + (text[i] - '0');
+                if (v > INT_MAX) throw junk("a vertex index is too large");
+                ++i;
+            }
+            out.push_back(int(v));
+            skipWs();
+            if (i < n && (text[i] == ',' || text[i] == ';')) {
+                ++i;
+                skipWs();
+                if (i < n && (text[i] == ',' || text[i] == ';')) throw junk("empty entry between separators");
+            } else if (i < n && !std::isdigit(static_cast<unsigned char>(text[i])) && text[i] != '+' && text[i] != '-') {
+                throw junk(std::string("unexpected character '") + text[i] + "' at position " + std::to_string(i + 1));
+            }
+        }
+        return out;
+    }
+
+private:
+    static double EdgeLen(const MeshType &m, int a, int b)
+    {
+        return vcg::Distance(vcg::Point3d::Construct(m.vert[a].cP()), vcg::Point3d::Construct(m.vert[b].cP()));
+    }
+
+    /// A* over the vertex graph. Neighbours come from vcglib's VF adjacency when the mesh has it
+    /// (refreshed here, so a stale VF cannot mislead), else from a compact table built from faces.
+    class Search
+    {
+    public:
+        Search(MeshType &m, SeedPathCost cost, double eps)
+            : m_(m), feature_(cost == SeedPathCost::Feature), eps_(eps), hScale_(feature_ ? eps : 1.0)
+        {
+            const int nv = int(m.vert.size());
+            g_.assign(nv, std::numeric_limits<double>::infinity());
+            parent_.assign(nv, -1);
+            done_.assign(nv, 0);
+            if (feature_) {
+                q_.resize(nv);
+                for (int i = 0; i < nv; ++i) {
+                    const double q = double(m.vert[i].cQ());
+                    q_[i] = std::isfinite(q) ? std::max(0.0, q) : 1.0; // heuristic needs cost >= eps*len
+                }
+            }
+            useVF_ = tri::HasPerVertexVFAdjacency(m) && tri::HasPerFaceVFAdjacency(m);
+            if (useVF_) {
+                UpdateTopology<MeshType>::VertexFace(m);
+            } else {
+                start_.assign(nv + 1, 0);
+                for (const FaceType &f : m.face)
+                    if (!f.IsD())
+                        for (int k = 0; k < 3; ++k) start_[MV::VIndex(m, f.cV(k)) + 1] += 2;
+                for (int v = 0; v < nv; ++v) start_[v + 1] += start_[v];
+                adj_.resize(start_[nv]);
+                std::vector<int> fill(start_.begin(), start_.end() - 1);
+                for (const FaceType &f : m.face)
+                    if (!f.IsD())
+                        for (int k = 0; k < 3; ++k) {
+                            const int v = MV::VIndex(m, f.cV(k));
+                            adj_[fill[v]++] = MV::VIndex(m, f.cV((k + 1) % 3));
+                            adj_[fill[v]++] = MV::VIndex(m, f.cV((k + 2) % 3));
+                        }
+            }
+        }
+
+        /// Fills path (source..target) and returns true, or false if target is unreachable.
+        bool Run(int source, int target, std::vector<int> &path)
+        {
+            for (int v : touched_) {
+                g_[v] = std::numeric_limits<double>::infinity();
+                parent_[v] = -1;
+                done_[v] = 0;
+            }
+            touched_.clear();
+            const vcg::Point3d pt = P(target);
+            typedef std::pair<double, int> Entry;
+            std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+            g_[source] = 0;
+            touched_.push_back(source);
+            open.emplace(H(source, pt), source);
+            bool found = false;
+            while (!open.empty()) {
+                const int u = open.top().second;
+                open.pop();
+                if (done_[u]) continue;
+                done_[u] = 1;
+                if (u == target) {
+                    found = true;
+                    break;
+                }
+                const vcg::Point3d pu = P(u);
+                ForNeighbours(u, [&](int w) {
+                    if (done_[w] || w == u) return;
+                    double c = vcg::Distance(pu, P(w));
+                    if (feature_) c *= eps_ + 0.5 * (q_[u] + q_[w]);
+                    const double ng = g_[u] + c;
+                    if (ng < g_[w]) {
+                        if (g_[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
+                        g_[w] = ng;
+                        parent_[w] = u;
+                        open.emplace(ng + H(w, pt), w);
+                    }
+                });
+            }
+            path.clear();
+            if (!found) return false;
+            for (int v = target; v != -1; v = parent_[v]) path.push_back(v);
+            std::reverse(path.begin(), path.end());
+            return true;
+        }
+
+    private:
+        vcg::Point3d P(int v) const { return vcg::Point3d::Construct(m_.vert[v].cP()); }
+        double H(int v, const vcg::Point3d &pt) const { return hScale_ * vcg::Distance(P(v), pt); }
+
+        template <class F>
+        void ForNeighbours(int u, F &&fn)
+        {
+            if (useVF_) {
+                for (vcg::face::VFIterator<FaceType> vfi(&m_.vert[u]); !vfi.End(); ++vfi) {
+                    if (vfi.F()->IsD()) continue;
+                    fn(MV::VIndex(m_, vfi.F()->cV1(vfi.I())));
+                    fn(MV::VIndex(m_, vfi.F()->cV2(vfi.I())));
+                }
+            } else {
+                for (int k = start_[u]; k < start_[u + 1]; ++k) fn(adj_[k]);
+            }
+        }
+
+        MeshType &m_;
+        bool feature_;
+        double eps_, hScale_;
+        bool useVF_ = false;
+        std::vector<double> g_, q_;
+        std::vector<int> parent_, touched_, start_, adj_;
+        std::vector<char> done_;
+    };
+};
+
+} // namespace tri
+} // namespace vcg
+
+#endif
