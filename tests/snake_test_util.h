@@ -8,6 +8,8 @@
 #include <generated_meshes.h>
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/geometric_snake.h>
+#include <vcg/complex/algorithms/closest.h>
+#include <vcg/space/index/grid_static_ptr.h>
 
 namespace gs_test {
 
@@ -65,6 +67,59 @@ CurveError MeasureCurve(const std::vector<vcg::Point3d> &pts, double h, DistFn d
     e.p95 = d[std::min(d.size() - 1, size_t(0.95 * (d.size() - 1) + 0.5))];
     e.max = d.back();
     return e;
+}
+
+/// The exact feature as it exists on the mesh: points of the exact feature curve, each moved
+/// to its closest point on the surface (vcglib's closest-point search on a uniform grid).
+/// A mesh whose triangles straddle a sharp edge cuts it off like a chamfer, up to about half
+/// an edge length deep, so no curve on the surface gets closer than that to the exact edge;
+/// accuracy is therefore measured against this projected curve.
+inline std::vector<vcg::Point3d> ProjectOntoMesh(CMeshO &m, const std::vector<vcg::Point3d> &feature)
+{
+    vcg::GridStaticPtr<CFaceO, float> grid;
+    grid.Set(m.face.begin(), m.face.end());
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+    std::vector<vcg::Point3d> out;
+    for (const auto &q : feature) {
+        float dist = 1e30f;
+        Point3m closest;
+        vcg::tri::GetClosestFaceBase(m, grid, Point3m::Construct(q), 1e30f, dist, closest);
+        out.push_back(vcg::Point3d::Construct(closest));
+    }
+    return out;
+}
+
+/// Distance from p to a polyline.
+inline double DistToPolyline(const vcg::Point3d &p, const std::vector<vcg::Point3d> &pl, bool closed = false)
+{
+    double best = 1e300;
+    size_t n = pl.size();
+    for (size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
+        const vcg::Point3d &a = pl[i], &b = pl[(i + 1) % n];
+        vcg::Point3d d = b - a;
+        double L2 = d.SquaredNorm();
+        double t = L2 > 0 ? std::max(0.0, std::min(1.0, ((p - a) * d) / L2)) : 0.0;
+        best = std::min(best, (p - (a + d * t)).Norm());
+    }
+    return best;
+}
+
+/// Dense samples of an exact feature: the cube edge x = y = half for |z| <= zmax, the top
+/// rim of the cylinder.
+inline std::vector<vcg::Point3d> CubeEdgeLine(double half, double zmax, int n = 400)
+{
+    std::vector<vcg::Point3d> out;
+    for (int i = 0; i < n; ++i) out.push_back(vcg::Point3d(half, half, -zmax + 2 * zmax * i / (n - 1)));
+    return out;
+}
+inline std::vector<vcg::Point3d> CylinderRimLine(double radius, double z, int n = 600)
+{
+    std::vector<vcg::Point3d> out;
+    for (int i = 0; i < n; ++i) {
+        double a = 2 * M_PI * i / n;
+        out.push_back(vcg::Point3d(radius * std::cos(a), radius * std::sin(a), z));
+    }
+    return out;
 }
 
 } // namespace gs_test

@@ -179,20 +179,21 @@ TEST(FeatureEnergy, ScaleInvariant)
     }
 }
 
-// Strict local minima of the quality among vertices farther than 3 edge lengths from the edges.
-int FarLocalMinima(const CMeshO &m)
+// Local minima of the quality (lower than every neighbour by more than float round-off) among
+// vertices farther than `farL` edge lengths from the cube edges.
+int FarLocalMinima(const CMeshO &m, double farL)
 {
     const double L = vcg::tri::MeshValidation<CMeshO>::MeanEdgeLength(m);
     std::vector<char> isMin(m.vert.size(), 1);
     for (const auto &f : m.face)
         for (int k = 0; k < 3; ++k) {
             const int a = int(f.cV(k) - &m.vert[0]), b = int(f.cV((k + 1) % 3) - &m.vert[0]);
-            if (!(m.vert[a].cQ() < m.vert[b].cQ())) isMin[a] = 0;
-            if (!(m.vert[b].cQ() < m.vert[a].cQ())) isMin[b] = 0;
+            if (!(m.vert[a].cQ() < m.vert[b].cQ() - 1e-4f)) isMin[a] = 0;
+            if (!(m.vert[b].cQ() < m.vert[a].cQ() - 1e-4f)) isMin[b] = 0;
         }
     int n = 0;
     for (size_t i = 0; i < m.vert.size(); ++i)
-        if (isMin[i] && gs_test::DistToCubeEdges(P(m.vert[i])) > 3 * L) ++n;
+        if (isMin[i] && gs_test::DistToCubeEdges(P(m.vert[i])) > farL * L) ++n;
     return n;
 }
 
@@ -202,7 +203,9 @@ TEST(FeatureEnergy, SmoothingSuppressesNoiseKeepsEdges)
         CMeshO clean;
         gs_test::MakeRotatedIcoCube(clean, 5);
         FE::Compute(clean, t, 0);
-        EXPECT_EQ(FarLocalMinima(clean), 0) << Name(t); // sanity: without noise, no spurious minima
+        // Far from the edges, beyond the reach of 10 smoothing rounds, the faces are flat.
+        const double farL = 8.0;
+        EXPECT_EQ(FarLocalMinima(clean, farL), 0) << Name(t); // sanity: without noise, no spurious minima
 
         CMeshO m;
         gs_test::MakeRotatedIcoCube(m, 5);
@@ -210,16 +213,27 @@ TEST(FeatureEnergy, SmoothingSuppressesNoiseKeepsEdges)
         FE::Compute(m, t, 0);
         ExpectValid(m, Name(t));
         auto edgeDist = [](const vcg::Point3d &p) { return gs_test::DistToCubeEdges(p); };
-        const Bands raw = BandStats(m, edgeDist);
-        const int rawMinima = FarLocalMinima(m);
+        const Bands raw = BandStats(m, edgeDist, 1.0, farL);
+        const int rawMinima = FarLocalMinima(m, farL);
         EXPECT_GT(rawMinima, 20) << Name(t); // noise creates spurious minima away from the edges
         EXPECT_GT(raw.farVar, 0.0) << Name(t);
 
+        // (a) Sec. 6.3 averaging itself lowers the variance in the flat region, edges stay lower.
+        FE::Smooth(m, 10);
+        const Bands avg = BandStats(m, edgeDist, 1.0, farL);
+        EXPECT_LT(avg.farVar, 0.5 * raw.farVar) << Name(t);
+        EXPECT_LT(avg.nearMean, avg.farMean - 0.1) << Name(t);
+
+        // (b) The full pipeline (smoothing + renormalization): far fewer spurious minima, edge
+        // band still clearly lowest. (Variances are not compared here: the unsmoothed field is
+        // clipped at 1 by the percentile normalization, which hides most of its noise.)
         FE::Compute(m, t, 10);
         ExpectValid(m, Name(t));
-        const Bands sm = BandStats(m, edgeDist);
-        EXPECT_LT(sm.farVar, 0.5 * raw.farVar) << Name(t);
-        EXPECT_LT(FarLocalMinima(m), rawMinima) << Name(t);
+        const Bands sm = BandStats(m, edgeDist, 1.0, farL);
+        EXPECT_LT(FarLocalMinima(m, farL), rawMinima / 4) << Name(t);
+        EXPECT_LT(sm.nearMean + 0.3, sm.farMean) << Name(t);
+        std::printf("%s: far var raw %.3g averaged %.3g; far minima raw %d smoothed %d; near/far %.3f/%.3f\n", Name(t),
+                    raw.farVar, avg.farVar, rawMinima, FarLocalMinima(m, farL), sm.nearMean, sm.farMean);
         EXPECT_LT(sm.nearMean + 0.3, sm.farMean) << Name(t); // edge band still clearly lower
     }
 }

@@ -13,7 +13,7 @@ using Surface = SnakeSurface<CMeshO>;
 
 namespace {
 
-std::shared_ptr<Surface> PrepareCube(CMeshO &m, int subdiv = 4, int smoothing = 8, double half = 1.0)
+std::shared_ptr<Surface> PrepareCube(CMeshO &m, int subdiv = 4, int smoothing = 2, double half = 1.0)
 {
     gs_test::MakeRotatedIcoCube(m, subdiv, half);
     EnableSnakeAdjacency(m);
@@ -21,7 +21,7 @@ std::shared_ptr<Surface> PrepareCube(CMeshO &m, int subdiv = 4, int smoothing = 
     return std::make_shared<Surface>(m);
 }
 
-std::shared_ptr<Surface> PrepareCylinder(CMeshO &m, int subdiv = 4, int smoothing = 8)
+std::shared_ptr<Surface> PrepareCylinder(CMeshO &m, int subdiv = 4, int smoothing = 2)
 {
     gs_test::MakeRotatedIcoCylinder(m, subdiv);
     EnableSnakeAdjacency(m);
@@ -142,7 +142,7 @@ TEST(Embedding, RegionTouchingMeshBorderAndHoles)
     gs_test::MakeFlatGrid(m, 30, 1.0);
     for (auto &f : m.face) {
         vcg::Point3d c = vcg::Point3d::Construct(vcg::Barycenter(f));
-        if (std::abs(c[0] - 0.5) < 0.05 && std::abs(c[1] - 0.5) < 0.05) vcg::tri::Allocator<CMeshO>::DeleteFace(m, f);
+        if (std::abs(c[0] - 0.5) < 0.033 && std::abs(c[1] - 0.5) < 0.033) vcg::tri::Allocator<CMeshO>::DeleteFace(m, f); // a clean 2x2-cell hole
     }
     vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
     vcg::tri::Clean<CMeshO>::RemoveUnreferencedVertex(m);
@@ -233,7 +233,7 @@ TEST(GeometricSnake, ScaleAndTranslationInvariant)
     for (int k = 0; k < 2; ++k) {
         CMeshO m;
         double half = k == 0 ? 1.0 : 250.0;
-        auto surf = PrepareCube(m, 4, 8, half);
+        auto surf = PrepareCube(m, 4, 2, half);
         double h = surf->MeanEdge();
         Snake s(surf);
         s.InitFromSeeds(CubeEdgeSeeds(m, h, 2.0, half), false);
@@ -327,13 +327,17 @@ TEST_P(CubeEdgeAccuracy, OpenSnakeConvergesOntoTheEdge)
     p.method = GetParam().method;
     Snake s(surf, p);
     s.InitFromSeeds(CubeEdgeSeeds(m, h, GetParam().offset), false);
-    gs_test::CurveError e0 = CubeError(s, h);
-    EXPECT_GT(e0.mean, 1.5);
+    // the edge as it exists on the mesh (its straddling triangles cut it like a chamfer)
+    std::vector<vcg::Point3d> onMesh = gs_test::ProjectOntoMesh(m, gs_test::CubeEdgeLine(1.0, 0.95));
+    auto dist = [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh); };
+    EXPECT_GT(gs_test::MeasureCurve(s.positions(), h, dist).mean, 1.5);
     s.Run(300);
-    gs_test::CurveError e = CubeError(s, h);
     EXPECT_TRUE(s.Converged());
+    gs_test::CurveError e = gs_test::MeasureCurve(s.positions(), h, dist);
     EXPECT_LT(e.p95, 0.25) << "mean " << e.mean << " max " << e.max;
-    EXPECT_LT(e.mean, 0.15);
+    EXPECT_LT(e.max, 0.5) << "mean " << e.mean << " p95 " << e.p95;
+    // and no farther from the exact edge than the mesh itself allows (about 0.45 h here)
+    EXPECT_LT(CubeError(s, h).max, 0.6);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, CubeEdgeAccuracy,
@@ -353,14 +357,17 @@ TEST_P(CylinderRimAccuracy, ClosedSnakeConvergesOntoTheRim)
     p.method = GetParam().method;
     Snake s(surf, p);
     s.InitFromSeeds(CylinderRimSeeds(m, h, GetParam().offset, 8), true);
-    auto dist = [](const vcg::Point3d &x) { return gs_test::DistToCylinderRims(x); };
+    std::vector<vcg::Point3d> onMesh = gs_test::ProjectOntoMesh(m, gs_test::CylinderRimLine(1.0, 1.0));
+    auto dist = [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh, true); };
     EXPECT_GT(gs_test::MeasureCurve(s.positions(), h, dist).mean, 1.5);
     s.Run(300);
     gs_test::CurveError e = gs_test::MeasureCurve(s.positions(), h, dist);
     EXPECT_TRUE(s.Converged());
     EXPECT_LT(e.p95, 0.25) << "mean " << e.mean << " max " << e.max;
+    EXPECT_LT(e.max, 0.5) << "mean " << e.mean << " p95 " << e.p95;
     // the traced curve, not just the samples, lies on the rim
     EXPECT_LT(gs_test::MeasureCurve(s.PolylinePositions(), h, dist).p95, 0.3);
+    EXPECT_LT(gs_test::MeasureCurve(s.positions(), h, [](const vcg::Point3d &x) { return gs_test::DistToCylinderRims(x); }).max, 0.65);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, CylinderRimAccuracy,

@@ -63,14 +63,18 @@ public:
             throw SnakeError("The number of feature energy smoothing steps must be between 0 and 100000 (got " +
                              std::to_string(smoothingSteps) + ").");
         Stats st;
-        const typename MV::Report rep = MV::Inspect(m);
+        const typename MV::Report rep = MV::InspectChecked(m);
         st.nonManifoldVertices = rep.nonManifoldVertices;
         st.degenerateFaces = rep.degenerateFaces;
+        if (!(rep.meanEdgeLength > 0) || !std::isfinite(rep.meanEdgeLength))
+            throw SnakeError("The mesh has no edge of positive finite length (all faces are collapsed to points).");
 
+        std::vector<vcg::Point3f> fn;
+        UpdateNormals(m, fn);
         switch (type) {
-        case FeatureEnergyType::NormalVariation: NormalVariation(m); break;
-        case FeatureEnergyType::CurvatureNorm: CurvatureNorm(m); break;
-        case FeatureEnergyType::QuadricError: QuadricError(m); break;
+        case FeatureEnergyType::NormalVariation: NormalVariationImpl(m, fn); break;
+        case FeatureEnergyType::CurvatureNorm: CurvatureNormImpl(m, rep.meanEdgeLength); break;
+        case FeatureEnergyType::QuadricError: QuadricErrorImpl(m, fn, rep.meanEdgeLength); break;
         default: throw SnakeError("Unknown feature energy type.");
         }
 
@@ -93,29 +97,16 @@ public:
     }
 
     /// Eq. 6: E(v) = min over faces f around v of n_v . n_f (raw, in [-1,1], 1 = flat).
-    /// n_v is the angle-weighted vertex normal (Thürmer & Wüthrich): unlike the area- or
+    /// n_v is the angle-weighted vertex normal (Thuermer & Wuethrich): unlike the area- or
     /// uniformly-weighted normal it depends only on the surface, not on how the fan around v
     /// is triangulated, so the opening angle of the normal cone (the paper's ref. 16) does not
     /// change when a flat region is re-tessellated.
     static void NormalVariation(MeshType &m)
     {
         RequireComponents(m);
-        UpdateNormals(m);
-        const size_t nv = m.vert.size();
-        std::vector<float> e(nv, 1.0f); // vertices without faces: flat
-        for (const FaceType &f : m.face) {
-            if (f.IsD()) continue;
-            const vcg::Point3d nf = UnitFaceNormal(f);
-            if (nf.SquaredNorm() == 0) continue; // degenerate face: no direction to compare with
-            for (int k = 0; k < 3; ++k) {
-                const VertexType *v = f.cV(k);
-                const float d = float(vcg::Point3d::Construct(v->cN()) * nf);
-                float &ev = e[MV::VIndex(m, v)];
-                if (d < ev) ev = d;
-            }
-        }
-        for (size_t i = 0; i < nv; ++i)
-            if (!m.vert[i].IsD()) m.vert[i].Q() = ScalarType(std::max(-1.0f, std::min(1.0f, e[i])));
+        std::vector<vcg::Point3f> fn;
+        UpdateNormals(m, fn);
+        NormalVariationImpl(m, fn);
     }
 
     /// Discrete curvature norm |k1|+|k2| (Sec. 6.1, ref. 15: Meyer et al.'s cotangent mean
@@ -127,68 +118,9 @@ public:
     static void CurvatureNorm(MeshType &m)
     {
         RequireComponents(m);
-        UpdateNormals(m);
-        const double L = MV::MeanEdgeLength(m);
-        const size_t nv = m.vert.size();
-        std::vector<double> area(nv, 0.0), angleSum(nv, 0.0);
-        std::vector<vcg::Point3d> lap(nv, vcg::Point3d(0, 0, 0));
-        std::vector<int64_t> fanA(nv, 0);
-        std::vector<uint64_t> fanB(nv, 0);
-        for (const FaceType &f : m.face) {
-            if (f.IsD()) continue;
-            if (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0)) continue;
-            int id[3];
-            vcg::Point3d p[3];
-            for (int k = 0; k < 3; ++k) {
-                id[k] = MV::VIndex(m, f.cV(k));
-                p[k] = vcg::Point3d::Construct(f.cV(k)->cP());
-            }
-            // Border detection without adjacency: around a closed, consistently oriented fan every
-            // neighbour appears once as "next" and once as "prev", so these signed sums vanish.
-            for (int k = 0; k < 3; ++k) {
-                const int nx = id[(k + 1) % 3], pv = id[(k + 2) % 3];
-                fanA[id[k]] += int64_t(nx) - int64_t(pv);
-                fanB[id[k]] += Mix(uint64_t(nx)) - Mix(uint64_t(pv));
-            }
-            const vcg::Point3d cr = (p[1] - p[0]) ^ (p[2] - p[0]);
-            const double area2 = cr.Norm();
-            double ang[3], cot[3];
-            for (int k = 0; k < 3; ++k) {
-                const vcg::Point3d a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
-                ang[k] = std::atan2((a ^ b).Norm(), a * b); // robust even for slivers
-                angleSum[id[k]] += ang[k];
-                cot[k] = area2 > 0 ? (a * b) / area2 : 0.0;
-            }
-            if (MV::IsDegenerate(f)) continue; // angles counted; cotangents/areas would blow up
-            // Mixed Voronoi area (Meyer et al., Fig. 4).
-            const bool obtuse = ang[0] >= M_PI / 2 || ang[1] >= M_PI / 2 || ang[2] >= M_PI / 2;
-            for (int k = 0; k < 3; ++k) {
-                const int i1 = (k + 1) % 3, i2 = (k + 2) % 3;
-                if (!obtuse)
-                    area[id[k]] += ((p[i2] - p[k]).SquaredNorm() * cot[i1] + (p[i1] - p[k]).SquaredNorm() * cot[i2]) / 8.0;
-                else
-                    area[id[k]] += area2 / 2.0 * (ang[k] >= M_PI / 2 ? 0.5 : 0.25);
-                // Cotangent Laplacian: edge (k,i1) is opposite corner i2.
-                lap[id[k]] += (p[k] - p[i1]) * cot[i2] + (p[k] - p[i2]) * cot[i1];
-            }
-        }
-        for (size_t i = 0; i < nv; ++i) {
-            VertexType &v = m.vert[i];
-            if (v.IsD()) continue;
-            double c = 0;
-            if (area[i] > 0) {
-                // Mean curvature from the normal component only: at borders the in-plane part
-                // of the one-sided Laplacian is not curvature.
-                const vcg::Point3d n = vcg::Point3d::Construct(v.cN());
-                const double H = (lap[i] * n) / (4.0 * area[i]);
-                const bool border = fanA[i] != 0 || fanB[i] != 0;
-                const double K = border ? 0.0 : (2.0 * M_PI - angleSum[i]) / area[i];
-                // |k1|+|k2| = 2|H| if k1,k2 have the same sign (K >= 0), else |k1-k2| = 2 sqrt(H^2-K).
-                c = 2.0 * std::max(std::fabs(H), std::sqrt(std::max(0.0, H * H - K)));
-            }
-            const double e = -c * L;
-            v.Q() = ScalarType(std::isfinite(e) ? e : 0.0);
-        }
+        std::vector<vcg::Point3f> fn;
+        UpdateNormals(m, fn);
+        CurvatureNormImpl(m, MV::MeanEdgeLength(m));
     }
 
     /// Garland-Heckbert quadric error (Sec. 6.1, ref. 9): E(v) = -max over edges (v,w) of the
@@ -200,50 +132,9 @@ public:
     static void QuadricError(MeshType &m)
     {
         RequireComponents(m);
-        UpdateNormals(m);
-        const double L = MV::MeanEdgeLength(m);
-        const size_t nv = m.vert.size();
-        typedef vcg::math::Quadric<double> Quadricd;
-        Quadricd zero;
-        zero.SetZero();
-        std::vector<Quadricd> Q(nv, zero);
-        std::vector<double> W(nv, 0.0);
-        for (const FaceType &f : m.face) {
-            if (f.IsD() || MV::IsDegenerate(f)) continue;
-            const vcg::Point3d p0 = vcg::Point3d::Construct(f.cV(0)->cP());
-            const vcg::Point3d cr = (vcg::Point3d::Construct(f.cV(1)->cP()) - p0) ^
-                                    (vcg::Point3d::Construct(f.cV(2)->cP()) - p0);
-            const double a = cr.Norm() / 2.0;
-            vcg::Plane3d pl;
-            pl.SetDirection(cr / (2.0 * a));
-            pl.SetOffset(pl.Direction() * p0);
-            Quadricd q;
-            q.ByPlane(pl);
-            q *= a;
-            for (int k = 0; k < 3; ++k) {
-                const int i = MV::VIndex(m, f.cV(k));
-                Q[i] += q;
-                W[i] += a;
-            }
-        }
-        std::vector<double> err(nv, 0.0);
-        for (const FaceType &f : m.face) {
-            if (f.IsD()) continue;
-            for (int k = 0; k < 3; ++k) {
-                const int a = MV::VIndex(m, f.cV(k)), b = MV::VIndex(m, f.cV((k + 1) % 3));
-                if (a == b) continue;
-                const vcg::Point3d pa = vcg::Point3d::Construct(f.cV(k)->cP());
-                const vcg::Point3d pb = vcg::Point3d::Construct(f.cV((k + 1) % 3)->cP());
-                if (W[a] > 0) err[a] = std::max(err[a], Q[a].Apply(pb) / W[a]);
-                if (W[b] > 0) err[b] = std::max(err[b], Q[b].Apply(pa) / W[b]);
-            }
-        }
-        const double L2 = L * L;
-        for (size_t i = 0; i < nv; ++i) {
-            if (m.vert[i].IsD()) continue;
-            const double e = -std::max(0.0, err[i]) / L2;
-            m.vert[i].Q() = ScalarType(std::isfinite(e) ? e : 0.0);
-        }
+        std::vector<vcg::Point3f> fn;
+        UpdateNormals(m, fn);
+        QuadricErrorImpl(m, fn, MV::MeanEdgeLength(m));
     }
 
     /// Sec. 6.3: `steps` rounds of averaging each vertex with its one-ring (the vertex itself
@@ -345,7 +236,140 @@ public:
         return g;
     }
 
+
 private:
+    static void NormalVariationImpl(MeshType &m, const std::vector<vcg::Point3f> &fn)
+    {
+        const size_t nv = m.vert.size();
+        std::vector<float> e(nv, 1.0f); // vertices without faces: flat
+        for (size_t fi = 0; fi < m.face.size(); ++fi) {
+            const FaceType &f = m.face[fi];
+            if (f.IsD()) continue;
+            const vcg::Point3f &nf = fn[fi];
+            if (nf.SquaredNorm() == 0) continue; // degenerate face: no direction to compare with
+            for (int k = 0; k < 3; ++k) {
+                const VertexType *v = f.cV(k);
+                const vcg::Point3f nv3 = vcg::Point3f::Construct(v->cN());
+                const float d = nv3 * nf;
+                float &ev = e[MV::VIndex(m, v)];
+                if (d < ev) ev = d;
+            }
+        }
+        for (size_t i = 0; i < nv; ++i)
+            if (!m.vert[i].IsD()) m.vert[i].Q() = ScalarType(std::max(-1.0f, std::min(1.0f, e[i])));
+    }
+
+    static void CurvatureNormImpl(MeshType &m, double L)
+    {
+        const size_t nv = m.vert.size();
+        std::vector<double> area(nv, 0.0), angleSum(nv, 0.0);
+        std::vector<vcg::Point3d> lap(nv, vcg::Point3d(0, 0, 0));
+        std::vector<int64_t> fanA(nv, 0);
+        std::vector<uint64_t> fanB(nv, 0);
+        for (const FaceType &f : m.face) {
+            if (f.IsD()) continue;
+            if (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0)) continue;
+            int id[3];
+            vcg::Point3d p[3];
+            for (int k = 0; k < 3; ++k) {
+                id[k] = MV::VIndex(m, f.cV(k));
+                p[k] = vcg::Point3d::Construct(f.cV(k)->cP());
+            }
+            // Border detection without adjacency: around a closed, consistently oriented fan every
+            // neighbour appears once as "next" and once as "prev", so these signed sums vanish.
+            for (int k = 0; k < 3; ++k) {
+                const int nx = id[(k + 1) % 3], pv = id[(k + 2) % 3];
+                fanA[id[k]] += int64_t(nx) - int64_t(pv);
+                fanB[id[k]] += Mix(uint64_t(nx)) - Mix(uint64_t(pv));
+            }
+            const vcg::Point3d cr = (p[1] - p[0]) ^ (p[2] - p[0]);
+            const double area2 = cr.Norm();
+            double ang[3], cot[3];
+            for (int k = 0; k < 3; ++k) {
+                const vcg::Point3d a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
+                ang[k] = std::atan2((a ^ b).Norm(), a * b); // robust even for slivers
+                angleSum[id[k]] += ang[k];
+                cot[k] = area2 > 0 ? (a * b) / area2 : 0.0;
+            }
+            if (MV::IsDegenerate(f)) continue; // angles counted; cotangents/areas would blow up
+            // Mixed Voronoi area (Meyer et al., Fig. 4).
+            const bool obtuse = ang[0] >= M_PI / 2 || ang[1] >= M_PI / 2 || ang[2] >= M_PI / 2;
+            for (int k = 0; k < 3; ++k) {
+                const int i1 = (k + 1) % 3, i2 = (k + 2) % 3;
+                if (!obtuse)
+                    area[id[k]] += ((p[i2] - p[k]).SquaredNorm() * cot[i1] + (p[i1] - p[k]).SquaredNorm() * cot[i2]) / 8.0;
+                else
+                    area[id[k]] += area2 / 2.0 * (ang[k] >= M_PI / 2 ? 0.5 : 0.25);
+                // Cotangent Laplacian: edge (k,i1) is opposite corner i2.
+                lap[id[k]] += (p[k] - p[i1]) * cot[i2] + (p[k] - p[i2]) * cot[i1];
+            }
+        }
+        for (size_t i = 0; i < nv; ++i) {
+            VertexType &v = m.vert[i];
+            if (v.IsD()) continue;
+            double c = 0;
+            if (area[i] > 0) {
+                // Mean curvature from the normal component only: at borders the in-plane part
+                // of the one-sided Laplacian is not curvature.
+                const vcg::Point3d n = vcg::Point3d::Construct(v.cN());
+                const double H = (lap[i] * n) / (4.0 * area[i]);
+                const bool border = fanA[i] != 0 || fanB[i] != 0;
+                const double K = border ? 0.0 : (2.0 * M_PI - angleSum[i]) / area[i];
+                // |k1|+|k2| = 2|H| if k1,k2 have the same sign (K >= 0), else |k1-k2| = 2 sqrt(H^2-K).
+                c = 2.0 * std::max(std::fabs(H), std::sqrt(std::max(0.0, H * H - K)));
+            }
+            const double e = -c * L;
+            v.Q() = ScalarType(std::isfinite(e) ? e : 0.0);
+        }
+    }
+
+    static void QuadricErrorImpl(MeshType &m, const std::vector<vcg::Point3f> &fn, double L)
+    {
+        (void)fn;
+        const size_t nv = m.vert.size();
+        typedef vcg::math::Quadric<double> Quadricd;
+        Quadricd zero;
+        zero.SetZero();
+        std::vector<Quadricd> Q(nv, zero);
+        std::vector<double> W(nv, 0.0);
+        for (const FaceType &f : m.face) {
+            if (f.IsD() || MV::IsDegenerate(f)) continue;
+            const vcg::Point3d p0 = vcg::Point3d::Construct(f.cV(0)->cP());
+            const vcg::Point3d cr = (vcg::Point3d::Construct(f.cV(1)->cP()) - p0) ^
+                                    (vcg::Point3d::Construct(f.cV(2)->cP()) - p0);
+            const double a = cr.Norm() / 2.0;
+            vcg::Plane3d pl;
+            pl.SetDirection(cr / (2.0 * a));
+            pl.SetOffset(pl.Direction() * p0);
+            Quadricd q;
+            q.ByPlane(pl);
+            q *= a;
+            for (int k = 0; k < 3; ++k) {
+                const int i = MV::VIndex(m, f.cV(k));
+                Q[i] += q;
+                W[i] += a;
+            }
+        }
+        std::vector<double> err(nv, 0.0);
+        for (const FaceType &f : m.face) {
+            if (f.IsD()) continue;
+            for (int k = 0; k < 3; ++k) {
+                const int a = MV::VIndex(m, f.cV(k)), b = MV::VIndex(m, f.cV((k + 1) % 3));
+                if (a == b) continue;
+                const vcg::Point3d pa = vcg::Point3d::Construct(f.cV(k)->cP());
+                const vcg::Point3d pb = vcg::Point3d::Construct(f.cV((k + 1) % 3)->cP());
+                if (W[a] > 0) err[a] = std::max(err[a], Q[a].Apply(pb) / W[a]);
+                if (W[b] > 0) err[b] = std::max(err[b], Q[b].Apply(pa) / W[b]);
+            }
+        }
+        const double L2 = L * L;
+        for (size_t i = 0; i < nv; ++i) {
+            if (m.vert[i].IsD()) continue;
+            const double e = -std::max(0.0, err[i]) / L2;
+            m.vert[i].Q() = ScalarType(std::isfinite(e) ? e : 0.0);
+        }
+    }
+
     static void RequireComponents(MeshType &m)
     {
         MV::RequireSurface(m);
@@ -355,26 +379,68 @@ private:
             throw SnakeError("The mesh type has no per-vertex normal, needed by the feature energy.");
     }
 
-    /// Face normals (if the type has them) and angle-weighted, normalized vertex normals.
-    static void UpdateNormals(MeshType &m)
+    /// Unit face normals (returned in fn, indexed like m.face, zero for degenerate faces; also
+    /// stored in the mesh if it has face normals) and angle-weighted unit vertex normals
+    /// (Thuermer & Wuethrich). Same result as vcglib's UpdateNormal::PerFaceNormalized +
+    /// PerVertexAngleWeighted + NormalizePerVertex, fused into one face sweep in double
+    /// precision for the 1M-face time budget, and skipping degenerate faces so no NaN appears.
+    static void UpdateNormals(MeshType &m, std::vector<vcg::Point3f> &fn)
     {
-        if (tri::HasPerFaceNormal(m)) UpdateNormal<MeshType>::PerFaceNormalized(m);
-        UpdateNormal<MeshType>::PerVertexAngleWeighted(m);
-        UpdateNormal<MeshType>::NormalizePerVertex(m);
-        // Guard against NaN from pathological input (vcg Normalize leaves zero vectors at zero).
-        for (VertexType &v : m.vert)
-            if (!v.IsD() && !(std::isfinite(double(v.cN()[0])) && std::isfinite(double(v.cN()[1])) &&
-                              std::isfinite(double(v.cN()[2]))))
-                v.N() = typename VertexType::NormalType(0, 0, 0);
+        const size_t nv = m.vert.size(), nf = m.face.size();
+        fn.assign(nf, vcg::Point3f(0, 0, 0));
+        std::vector<vcg::Point3d> acc(nv, vcg::Point3d(0, 0, 0));
+        for (size_t fi = 0; fi < nf; ++fi) {
+            const FaceType &f = m.face[fi];
+            if (f.IsD()) continue;
+            const vcg::Point3d p0 = vcg::Point3d::Construct(f.cV(0)->cP());
+            const vcg::Point3d p1 = vcg::Point3d::Construct(f.cV(1)->cP());
+            const vcg::Point3d p2 = vcg::Point3d::Construct(f.cV(2)->cP());
+            const vcg::Point3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
+            const double l0 = e0.SquaredNorm(), l1 = e1.SquaredNorm(), l2 = e2.SquaredNorm();
+            const vcg::Point3d cr = e0 ^ (p2 - p0);
+            const double area2 = cr.Norm();
+            const double maxE2 = std::max(l0, std::max(l1, l2));
+            // Same test as MeshValidation::IsDegenerate (zero-area or repeated-vertex faces).
+            if (!(maxE2 > 0) || !(area2 > MV::DegenerateRatio() * maxE2)) continue;
+            const vcg::Point3d n = cr / area2;
+            fn[fi] = vcg::Point3f::Construct(n);
+            const double s0 = std::sqrt(l0), s1 = std::sqrt(l1), s2 = std::sqrt(l2);
+            const double a0 = FastAcos(Clamp1(-(e0 * e2) / (s0 * s2)));
+            const double a1 = FastAcos(Clamp1(-(e0 * e1) / (s0 * s1)));
+            const double a2 = FastAcos(Clamp1(-(e1 * e2) / (s1 * s2)));
+            acc[MV::VIndex(m, f.cV(0))] += n * a0;
+            acc[MV::VIndex(m, f.cV(1))] += n * a1;
+            acc[MV::VIndex(m, f.cV(2))] += n * a2;
+        }
+        for (size_t i = 0; i < nv; ++i) {
+            VertexType &v = m.vert[i];
+            if (v.IsD()) continue;
+            const double len = acc[i].Norm();
+            v.N() = VertexType::NormalType::Construct(len > 0 ? acc[i] / len : vcg::Point3d(0, 0, 0));
+        }
+        if (tri::HasPerFaceNormal(m))
+            for (size_t fi = 0; fi < nf; ++fi)
+                if (!m.face[fi].IsD()) m.face[fi].N() = FaceType::NormalType::Construct(fn[fi]);
     }
 
-    static vcg::Point3d UnitFaceNormal(const FaceType &f)
+    /// acos with |error| <= 2e-8 rad (Abramowitz & Stegun 4.4.46); libm's acos was the
+    /// bottleneck of the normal pass and the angle weights need nowhere near full precision.
+    static double FastAcos(double x)
     {
-        if (MV::IsDegenerate(f)) return vcg::Point3d(0, 0, 0);
-        const vcg::Point3d p0 = vcg::Point3d::Construct(f.cV(0)->cP());
-        vcg::Point3d n = (vcg::Point3d::Construct(f.cV(1)->cP()) - p0) ^ (vcg::Point3d::Construct(f.cV(2)->cP()) - p0);
-        return n.Normalize();
+        const double ax = std::fabs(x);
+        double p = -0.0012624911;
+        p = p * ax + 0.0066700901;
+        p = p * ax - 0.0170881256;
+        p = p * ax + 0.0308918810;
+        p = p * ax - 0.0501743046;
+        p = p * ax + 0.0889789874;
+        p = p * ax - 0.2145988016;
+        p = p * ax + 1.5707963050;
+        const double r = std::sqrt(std::max(0.0, 1.0 - ax)) * p;
+        return x >= 0 ? r : M_PI - r;
     }
+
+    static double Clamp1(double x) { return x > 1.0 ? 1.0 : (x < -1.0 ? -1.0 : (x == x ? x : 0.0)); }
 
     static uint64_t Mix(uint64_t x)
     {

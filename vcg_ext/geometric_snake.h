@@ -45,7 +45,7 @@ struct SnakeParams
     double spacing = 1.0;        ///< sample spacing, in mean edge lengths
     int updatesPerOperation = 5; ///< Eq. 4 updates per embedding (Sec. 7)
     int segmentSamples = 48;     ///< partition size (Sec. 5.1)
-    int virtualLayers = 2;       ///< rings of virtual vertices of the embedding (Sec. 5.3)
+    int virtualLayers = 3;       ///< rings of virtual vertices of the embedding (Sec. 5.3)
     double maxStep = 0.5;        ///< cap on one update's move, in local edge lengths
     double convergenceTol = 0.02;///< converged: largest move per operation below this (edge lengths) ...
     int convergenceWindow = 3;   ///< ... for this many operations in a row
@@ -76,6 +76,9 @@ struct SnakeSample
 {
     SurfacePoint p;
     bool fixed = false;
+    /// Step control (not saved): the move cap of this sample shrinks when an update raised
+    /// its energy and grows back while it goes downhill, so samples settle in wells.
+    double trust = 1.0;
 };
 
 /// Timings and counters, for the Log, the JSON output and the benchmarks.
@@ -216,14 +219,13 @@ public:
     {
         if (st.samples.empty()) throw SnakeError("Geometric snake: the snake has no samples.");
         if (!surf->MatchesMesh()) throw SnakeError("Geometric snake: the mesh changed since the snake was created.");
+        pushUndo();
         auto t0 = clock::now();
         std::vector<vcg::Point3d> before = positions();
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
         else stepProjection();
         std::vector<vcg::Point3d> after = positions();
-        double maxMove = 0;
-        for (size_t i = 0; i < after.size(); ++i) maxMove = std::max(maxMove, (after[i] - before[i]).Norm());
-        maxMove /= surf->MeanEdge();
+        double maxMove = curveMove(before, after) / surf->MeanEdge();
         stats.lastMaxMove = maxMove;
         stats.operations++;
         double ms = msSince(t0);
@@ -365,6 +367,8 @@ public:
     const SnakeParams &Params() const { return st.params; }
     const SnakeStats &Stats() const { return stats; }
     bool Converged() const { return stats.converged; }
+    /// 1 while capturing on the coarse (smoothed) energy, 0 while settling on the precise one.
+    int EnergyStage() const { return coarseStage ? 1 : 0; }
     Surface &GetSurface() { return *surf; }
     std::shared_ptr<Surface> SurfacePtr() const { return surf; }
     const std::vector<int> &SeedVertices() const { return seedVertices; }
@@ -428,6 +432,7 @@ private:
     std::vector<int> seedVertices;
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
+    bool coarseStage = true;
     std::deque<double> moveHistory;
     std::deque<std::vector<vcg::Point3d>> posHistory;
     std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
@@ -465,8 +470,40 @@ private:
         if (undoStack.size() > 200) undoStack.pop_front();
         redoStack.clear();
     }
+    /// End condition of open snakes: with free ends the tension term would shrink the
+    /// snake towards its middle, so an end sample moves only across the curve (its
+    /// tangential component is removed); it still follows the feature force sideways.
+    bool isOpenEnd(int i) const { return !st.closed && (i == 0 || i == int(st.samples.size()) - 1); }
+
+    int energyLevel() const { return (coarseStage && surf->Levels() > 1) ? 1 : 0; }
+
+    /// How far the curve moved: each new sample's distance to the old curve near it. Sliding
+    /// along the curve does not change the curve, so it does not count.
+    double curveMove(const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b) const
+    {
+        const int n = int(a.size());
+        if (int(b.size()) != n) return 1e9;
+        double worst = 0;
+        for (int i = 0; i < n; ++i) {
+            double best = (b[i] - a[i]).Norm();
+            for (int j = i - 2; j <= i + 1; ++j) {
+                int j0 = j, j1 = j + 1;
+                if (st.closed) { j0 = (j0 + n) % n; j1 = (j1 + n) % n; }
+                else if (j0 < 0 || j1 >= n) continue;
+                vcg::Point3d d = a[j1] - a[j0];
+                double L2 = d.SquaredNorm();
+                double t = L2 > 0 ? std::max(0.0, std::min(1.0, ((b[i] - a[j0]) * d) / L2)) : 0.0;
+                best = std::min(best, (b[i] - (a[j0] + d * t)).Norm());
+            }
+            worst = std::max(worst, best);
+        }
+        return worst;
+    }
+
     void resetRun()
     {
+        for (auto &smp : st.samples) smp.trust = 1.0;
+        coarseStage = true;
         stats.converged = false;
         moveHistory.clear();
         posHistory.clear();
@@ -669,6 +706,7 @@ private:
         const int k = int(seg.idx.size());
         if (k < 2) return;
         const MeshType &m = surf->Mesh();
+        const int level = energyLevel();
         auto t0 = clock::now();
         // Sec. 5.2: the faces the segment crosses ...
         std::vector<int> core;
@@ -731,8 +769,8 @@ private:
                 Eigen::Matrix2d J;
                 J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
                 J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
-                double e0 = surf->EnergyAt(surf->Idx(f.cV(0))), e1 = surf->EnergyAt(surf->Idx(f.cV(1))),
-                       e2 = surf->EnergyAt(surf->Idx(f.cV(2)));
+                double e0 = surf->EnergyAt(level, surf->Idx(f.cV(0))), e1 = surf->EnergyAt(level, surf->Idx(f.cV(1))),
+                       e2 = surf->EnergyAt(level, surf->Idx(f.cV(2)));
                 double det = J.determinant();
                 if (std::abs(det) > 1e-12) grad[t] = J.transpose().inverse() * Eigen::Vector2d(e1 - e0, e2 - e0);
                 else grad[t].setZero();
@@ -759,12 +797,23 @@ private:
                     if (fixed[j]) continue;
                     Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
                     if (!d.allFinite()) continue;
-                    double cap = st.params.maxStep * localEdge(emb, lf[j]);
+                    if (isOpenEnd(seg.idx[j]) && k >= 2) { // open ends move across the curve only
+                        Eigen::Vector2d t = (X.row(j == 0 ? 1 : k - 2) - X.row(j)).transpose();
+                        if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
+                    }
+                    double cap = st.params.maxStep * st.samples[seg.idx[j]].trust * localEdge(emb, lf[j]);
                     double len = d.norm();
                     if (len > cap) d *= cap / len;
                     if (len == 0) continue;
                     RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
                                                             X.row(j).transpose() + d, false);
+                    // The energy is piecewise linear, so its force does not vanish at the bottom
+                    // of a well and a sample would bounce across it by |f|/gamma: a move that
+                    // raised the sample's energy halves its step cap, a downhill one restores it.
+                    double eOld = surf->EnergyAt(level, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j))));
+                    double eNew = surf->EnergyAt(level, SurfacePoint(region.faces[w.face], toPoint(w.bary)));
+                    double &trust = st.samples[seg.idx[j]].trust;
+                    trust = eNew > eOld + 1e-9 ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
                     lf[j] = w.face;
                     B.row(j) = w.bary.transpose();
                     X.row(j) = toPlane(emb, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
@@ -806,6 +855,9 @@ private:
             gap.traced = true;
         }
     }
+
+    template <class V>
+    static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
 
     static Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, const std::array<int, 3> &T,
                                    const vcg::Point3d &b)
@@ -856,12 +908,20 @@ private:
                 if (fixed[i]) continue;
                 Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
                 if (!d.allFinite()) continue;
-                double len = d.norm(), cap = st.params.maxStep * faceEdge(st.samples[i].p.face) / h;
+                if (isOpenEnd(i) && n >= 2) {
+                    Eigen::Vector3d t = (X.row(i == 0 ? 1 : n - 2) - X.row(i)).transpose();
+                    if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
+                }
+                double len = d.norm(), cap = st.params.maxStep * st.samples[i].trust * faceEdge(st.samples[i].p.face) / h;
                 if (len > cap) d *= cap / len;
                 Eigen::Vector3d q = X.row(i).transpose() + d;
                 vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
-                st.samples[i].p = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
-                                                                        d.norm() * h + 1.5 * h);
+                SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
+                                                                       d.norm() * h + 1.5 * h);
+                double &trust = st.samples[i].trust; // same step control as the embedding method
+                trust = surf->EnergyAt(energyLevel(), np) > surf->EnergyAt(energyLevel(), st.samples[i].p) + 1e-9
+                            ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
+                st.samples[i].p = np;
             }
             stats.updates++;
             stats.msUpdate.push_back(msSince(tu));
@@ -883,7 +943,7 @@ private:
         double e[3];
         for (int k = 0; k < 3; ++k) {
             p[k] = vcg::Point3d::Construct(ff.cP(k));
-            e[k] = surf->EnergyAt(surf->Idx(ff.cV(k)));
+            e[k] = surf->EnergyAt(energyLevel(), surf->Idx(ff.cV(k)));
         }
         vcg::Point3d n = (p[1] - p[0]) ^ (p[2] - p[0]);
         double a2 = n.SquaredNorm();
@@ -893,27 +953,28 @@ private:
         return g / a2;
     }
 
-    // ----- convergence: largest move below tolerance for `window` operations in a row, or
-    // the snake oscillates in place (same positions as 2 and 4 operations ago).
+    // ----- convergence: the largest move per operation stays below the tolerance for
+    // `window` operations, or -- robust to oscillation and jitter -- the curve as a whole
+    // has not moved farther than twice the tolerance over the last 2 * window operations.
     void updateConvergence(double maxMove, const std::vector<vcg::Point3d> &pos)
     {
         const double tol = st.params.convergenceTol;
+        const int W = st.params.convergenceWindow;
         moveHistory.push_back(maxMove);
-        while (int(moveHistory.size()) > st.params.convergenceWindow) moveHistory.pop_front();
-        bool still = int(moveHistory.size()) == st.params.convergenceWindow &&
+        while (int(moveHistory.size()) > W) moveHistory.pop_front();
+        bool still = int(moveHistory.size()) == W &&
                      std::all_of(moveHistory.begin(), moveHistory.end(), [&](double v) { return v < tol; });
         posHistory.push_back(pos);
-        while (posHistory.size() > 5) posHistory.pop_front();
-        bool oscillating = false;
-        if (posHistory.size() == 5) {
-            auto maxDist = [&](const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b) {
-                double d = 0;
-                for (size_t i = 0; i < a.size() && i < b.size(); ++i) d = std::max(d, (a[i] - b[i]).Norm());
-                return a.size() == b.size() ? d / surf->MeanEdge() : 1e9;
-            };
-            oscillating = maxDist(posHistory[4], posHistory[2]) < tol && maxDist(posHistory[4], posHistory[0]) < tol;
-        }
+        while (int(posHistory.size()) > 2 * W + 1) posHistory.pop_front();
+        bool oscillating = int(posHistory.size()) == 2 * W + 1 &&
+                           curveMove(posHistory.front(), posHistory.back()) / surf->MeanEdge() < 2 * tol;
         stats.converged = still || oscillating;
+        if (stats.converged && energyLevel() == 1) { // captured: now settle on the precise energy
+            coarseStage = false; // keep the settled step caps: the samples are already close
+            stats.converged = false;
+            moveHistory.clear();
+            posHistory.clear();
+        }
     }
 };
 

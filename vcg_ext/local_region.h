@@ -74,7 +74,13 @@ public:
         std::vector<std::vector<int>> loops; // mesh vertex ids
         std::vector<std::vector<bool>> loopOnMeshBorder;
         for (int round = 0;; ++round) {
-            if (!boundaryLoops(s, loops, loopOnMeshBorder)) return false;
+            if (!boundaryLoops(s, loops, loopOnMeshBorder)) {
+                // The border touches itself at a vertex: take that vertex's whole star.
+                if (pinched < 0 || round > 8) return false;
+                for (vcg::face::VFIterator<FaceType> vfi(&m.vert[pinched]); !vfi.End(); ++vfi) add(s, s.Idx(vfi.F()));
+                error.clear();
+                continue;
+            }
             if (loops.empty()) return fail("the region is a closed surface");
             if (loops.size() == 1 || round > 4) break;
             // the longest loop is the outer one; every other loop is a hole
@@ -149,6 +155,7 @@ public:
 
 private:
     int gen = 0;
+    int pinched = -1; // a vertex where the region border touches itself
 
     void clear()
     {
@@ -197,6 +204,7 @@ private:
         MeshType &m = s.Mesh();
         loops.clear();
         onMeshBorder.clear();
+        pinched = -1;
         std::unordered_map<int, std::pair<int, bool>> next; // v0 -> (v1, edge is a mesh border)
         next.reserve(faces.size());
         for (int f : faces) {
@@ -212,8 +220,10 @@ private:
                 }
                 bool border = (g == nullptr || g == ff || g->IsD());
                 int v0 = s.Idx(ff->V(k)), v1 = s.Idx(ff->V((k + 1) % 3));
-                if (!next.emplace(v0, std::make_pair(v1, border)).second)
+                if (!next.emplace(v0, std::make_pair(v1, border)).second) {
+                    pinched = v0;
                     return fail("non-manifold vertex on the region border");
+                }
             }
         }
         while (!next.empty()) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -115,8 +116,8 @@ public:
     }
 
     /// Counts topological problems. Works without FF adjacency: per vertex, the corners of its
-    /// faces are grouped into fans through shared edges (O(F log valence), no global sort).
-    /// Empty meshes and point clouds give a report of zeros; NaN coordinates throw.
+    /// faces are grouped into fans through shared edges (linear in the number of faces, no
+    /// global sort). Empty meshes and point clouds give a report of zeros; NaN coordinates throw.
     static Report Inspect(MeshType &m)
     {
         Report r;
@@ -124,85 +125,110 @@ public:
         r.faces = m.fn;
         if (m.vn <= 0 || m.fn <= 0) return r;
         RequireSurface(m);
-        r.meanEdgeLength = MeanEdgeLength(m);
+        return InspectChecked(m);
+    }
 
+    /// Inspect() for a mesh that already passed RequireSurface().
+    static Report InspectChecked(const MeshType &m)
+    {
+        Report r;
+        r.vertices = m.vn;
+        r.faces = m.fn;
         const int nv = int(m.vert.size());
         const int nf = int(m.face.size());
-        std::vector<char> faceOk(nf, 0);
+
+        // Vertex indices of the live faces with three distinct vertices (faces with a repeated
+        // vertex have no meaningful edges and are left out of the topology).
+        std::vector<int> fv;
+        fv.reserve(size_t(m.fn) * 3);
+        double edgeSum = 0;
+        size_t edgeCnt = 0;
         for (int i = 0; i < nf; ++i) {
             const FaceType &f = m.face[i];
             if (f.IsD()) continue;
+            for (int k = 0; k < 3; ++k) {
+                edgeSum += vcg::Distance(vcg::Point3d::Construct(f.cV(k)->cP()),
+                                         vcg::Point3d::Construct(f.cV((k + 1) % 3)->cP()));
+                ++edgeCnt;
+            }
             if (IsDegenerate(f)) ++r.degenerateFaces;
-            // Faces with a repeated vertex have no meaningful edges; leave them out of the topology.
-            if (f.cV(0) != f.cV(1) && f.cV(1) != f.cV(2) && f.cV(2) != f.cV(0)) faceOk[i] = 1;
+            if (f.cV(0) != f.cV(1) && f.cV(1) != f.cV(2) && f.cV(2) != f.cV(0))
+                for (int k = 0; k < 3; ++k) fv.push_back(VIndex(m, f.cV(k)));
         }
+        r.meanEdgeLength = edgeCnt ? edgeSum / double(edgeCnt) : 0.0;
+        const int nt = int(fv.size() / 3);
 
-        // Vertex -> corners (face*3+k) table, built by counting sort.
+        // Vertex -> corners table (counting sort); a corner is t*3+k.
         std::vector<int> start(nv + 1, 0);
-        for (int i = 0; i < nf; ++i)
-            if (faceOk[i])
-                for (int k = 0; k < 3; ++k) ++start[VIndex(m, m.face[i].cV(k)) + 1];
+        for (int c = 0; c < 3 * nt; ++c) ++start[fv[c] + 1];
         for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
         std::vector<int> corners(start[nv]);
         {
             std::vector<int> fill(start.begin(), start.end() - 1);
-            for (int i = 0; i < nf; ++i)
-                if (faceOk[i])
-                    for (int k = 0; k < 3; ++k) corners[fill[VIndex(m, m.face[i].cV(k))]++] = i * 3 + k;
+            for (int c = 0; c < 3 * nt; ++c) corners[fill[fv[c]]++] = c;
         }
 
         // Surface components: union-find over vertices through face edges.
         std::vector<int> comp(nv);
         std::iota(comp.begin(), comp.end(), 0);
-        auto find = [](std::vector<int> &p, int x) {
-            while (p[x] != x) {
-                p[x] = p[p[x]];
-                x = p[x];
-            }
-            return x;
-        };
-        for (int i = 0; i < nf; ++i)
-            if (faceOk[i]) {
-                const int a = find(comp, VIndex(m, m.face[i].cV(0)));
-                const int b = find(comp, VIndex(m, m.face[i].cV(1)));
-                const int c = find(comp, VIndex(m, m.face[i].cV(2)));
-                comp[b] = a;
-                comp[c] = a;
-            }
+        for (int t = 0; t < nt; ++t) {
+            const int a = Find(comp, fv[3 * t]);
+            const int b = Find(comp, fv[3 * t + 1]);
+            const int c = Find(comp, fv[3 * t + 2]);
+            comp[b] = a;
+            comp[c] = a;
+        }
 
-        std::vector<std::pair<int, int>> nbr; // (neighbour vertex, local corner)
+        std::vector<int64_t> key; // (neighbour vertex << 32) | local corner, sorted per vertex
         std::vector<int> local;
         for (int v = 0; v < nv; ++v) {
             const int k0 = start[v], kn = start[v + 1] - start[v];
             if (kn == 0) continue;
-            if (find(comp, v) == v) ++r.components;
-            nbr.clear();
+            if (Find(comp, v) == v) ++r.components;
+            key.clear();
             for (int j = 0; j < kn; ++j) {
-                const int c = corners[k0 + j];
-                const FaceType &f = m.face[c / 3];
-                nbr.emplace_back(VIndex(m, f.cV((c % 3 + 1) % 3)), j);
-                nbr.emplace_back(VIndex(m, f.cV((c % 3 + 2) % 3)), j);
+                const int c = corners[k0 + j], t = c / 3, k = c % 3;
+                key.push_back((int64_t(fv[3 * t + (k + 1) % 3]) << 32) | j);
+                key.push_back((int64_t(fv[3 * t + (k + 2) % 3]) << 32) | j);
             }
-            std::sort(nbr.begin(), nbr.end());
+            // Valences are small: insertion sort beats std::sort here.
+            for (size_t a = 1; a < key.size(); ++a) {
+                const int64_t x = key[a];
+                size_t b = a;
+                for (; b > 0 && key[b - 1] > x; --b) key[b] = key[b - 1];
+                key[b] = x;
+            }
             local.resize(kn);
             std::iota(local.begin(), local.end(), 0);
-            for (size_t a = 0; a < nbr.size();) {
+            for (size_t a = 0; a < key.size();) {
+                const int64_t nb = key[a] >> 32;
                 size_t b = a + 1;
-                while (b < nbr.size() && nbr[b].first == nbr[a].first) ++b;
-                const size_t run = b - a; // number of faces sharing edge (v, nbr)
-                if (nbr[a].first > v) {   // count each edge once, from its lower endpoint
+                while (b < key.size() && (key[b] >> 32) == nb) ++b;
+                const size_t run = b - a; // number of faces sharing edge (v, nb)
+                if (nb > v) {             // count each edge once, from its lower endpoint
                     if (run == 1) ++r.borderEdges;
                     if (run > 2) ++r.nonManifoldEdges;
                 }
-                for (size_t c = a + 1; c < b; ++c) local[find(local, nbr[c].second)] = find(local, nbr[a].second);
+                const int ra = Find(local, int(key[a] & 0xffffffff));
+                for (size_t c = a + 1; c < b; ++c) local[Find(local, int(key[c] & 0xffffffff))] = ra;
                 a = b;
             }
             int fans = 0;
             for (int j = 0; j < kn; ++j)
-                if (find(local, j) == j) ++fans;
+                if (Find(local, j) == j) ++fans;
             if (fans > 1) ++r.nonManifoldVertices;
         }
         return r;
+    }
+
+private:
+    static int Find(std::vector<int> &p, int x)
+    {
+        while (p[x] != x) {
+            p[x] = p[p[x]];
+            x = p[x];
+        }
+        return x;
     }
 };
 

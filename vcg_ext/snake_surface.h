@@ -30,7 +30,7 @@ public:
 
     /// Checks the mesh and builds adjacency. FF and VF adjacency must be available
     /// (for MeshLab's CMeshO: enabled with updateDataMask before).
-    explicit SnakeSurface(MeshType &m) : mesh(m)
+    explicit SnakeSurface(MeshType &m, int captureSmoothing = DefaultCaptureSmoothing()) : mesh(m)
     {
         MeshValidation<MeshType>::RequireSurface(m);
         if (!tri::HasFFAdjacency(m) || !tri::HasVFAdjacency(m))
@@ -46,7 +46,48 @@ public:
         vertStamp.assign(m.vert.size(), 0);
         vertSlot.assign(m.vert.size(), -1);
         SetEnergyFromQuality();
+        SetCaptureSmoothing(captureSmoothing);
     }
+    static int DefaultCaptureSmoothing() { return 8; }
+
+    /// Coarse-to-fine capture (beyond the paper): besides the energy E read from quality
+    /// (level 0, precise), level 1 is E smoothed `steps` more rounds (Sec. 6.3) and
+    /// renormalized. Snakes first slither on level 1, whose wide basins capture features a
+    /// few edge lengths away, then settle on level 0, whose narrow wells localize them.
+    /// 0 steps: one level only. O(faces * steps), once.
+    void SetCaptureSmoothing(int steps)
+    {
+        if (steps < 0 || steps > 10000) throw SnakeError("Geometric snake: capture smoothing must be in [0, 10000].");
+        captureSteps = steps;
+        coarse.clear();
+        if (steps == 0) return;
+        coarse = energy;
+        std::vector<double> sum(coarse.size());
+        std::vector<int> cnt(coarse.size());
+        for (int it = 0; it < steps; ++it) {
+            std::fill(sum.begin(), sum.end(), 0.0);
+            std::fill(cnt.begin(), cnt.end(), 0);
+            for (const auto &f : mesh.face) {
+                if (f.IsD()) continue;
+                for (int k = 0; k < 3; ++k) { // each edge seen from both faces: symmetric weights
+                    int a = Idx(f.cV(k)), b = Idx(f.cV((k + 1) % 3));
+                    sum[a] += coarse[b]; ++cnt[a];
+                    sum[b] += coarse[a]; ++cnt[b];
+                }
+            }
+            for (size_t v = 0; v < coarse.size(); ++v)
+                if (cnt[v] > 0) coarse[v] = float(0.5 * coarse[v] + 0.5 * sum[v] / cnt[v]);
+        }
+        float lo = 1, hi = 0;
+        for (size_t v = 0; v < coarse.size(); ++v)
+            if (!mesh.vert[v].IsD()) { lo = std::min(lo, coarse[v]); hi = std::max(hi, coarse[v]); }
+        if (hi - lo > 1e-6f)
+            for (auto &e : coarse) e = std::min(1.0f, std::max(0.0f, (e - lo) / (hi - lo)));
+    }
+    int CaptureSmoothing() const { return captureSteps; }
+    int Levels() const { return coarse.empty() ? 1 : 2; }
+    /// Energy of level `level` (0 precise, 1 coarse) at vertex v.
+    float EnergyAt(int level, int v) const { return (level > 0 && !coarse.empty()) ? coarse[v] : energy[v]; }
 
     MeshType &Mesh() { return mesh; }
     const MeshType &Mesh() const { return mesh; }
@@ -96,13 +137,15 @@ public:
             if (!std::isfinite(q)) continue;
             energy[i] = float(std::min(1.0, std::max(0.0, (double(q) - lo) / (hi - lo))));
         }
+        if (captureSteps > 0) SetCaptureSmoothing(captureSteps);
     }
 
     /// Energy at a surface point: linear inside the face (Sec. 6.1).
-    double EnergyAt(const SurfacePoint &p) const
+    double EnergyAt(int level, const SurfacePoint &p) const
     {
         const FaceType &f = mesh.face[p.face];
-        return p.bary[0] * energy[Idx(f.cV(0))] + p.bary[1] * energy[Idx(f.cV(1))] + p.bary[2] * energy[Idx(f.cV(2))];
+        return p.bary[0] * EnergyAt(level, Idx(f.cV(0))) + p.bary[1] * EnergyAt(level, Idx(f.cV(1))) +
+               p.bary[2] * EnergyAt(level, Idx(f.cV(2)));
     }
 
     int Idx(const VertexType *v) const { return int(v - &mesh.vert[0]); }
@@ -127,7 +170,8 @@ private:
     double meanEdge = 1;
     int faceCount = 0, vertCount = 0;
     int generation = 0;
-    std::vector<float> energy;
+    int captureSteps = 0;
+    std::vector<float> energy, coarse;
     std::vector<std::string> warnings;
 };
 

@@ -19,9 +19,12 @@ namespace tri {
 ///
 /// Plain convex combination (Tutte/Floater) pins the real boundary onto a convex polygon,
 /// which distorts the faces near it. Here `layers` rings of virtual vertices are attached
-/// outside the real boundary (each one offset outwards in the tangent plane by the local
-/// boundary edge length), and only the outermost virtual ring is pinned to a circle
-/// (arc-length spaced). The real boundary becomes interior, so it is free, and the
+/// outside the real boundary, each offset outwards in the tangent plane, with offsets
+/// growing geometrically (1, 3, 7, ... local edge lengths) so the virtual band is wide
+/// enough to absorb the mismatch between the region's shape and the pinned outline. Only the
+/// outermost virtual ring is pinned, onto a convex curve: an ellipse with the region's
+/// principal extents (a snake's region is an elongated strip, which a circle would bend),
+/// arc-length spaced. The real boundary becomes interior, so it is free, and the
 /// distortion stays low where the snake lives.
 ///
 /// Weights are mean-value weights (Floater 2003) computed on the 3D triangles, symmetrized:
@@ -78,7 +81,7 @@ public:
                 if (!(out3.Norm() > 1e-300)) out3 = vcg::Point3d(1, 0, 0);
                 out3.Normalize();
                 if (!(len > 0)) len = unit;
-                all[nv + (r - 1) * nb + i] = p + out3 * (len * r);
+                all[nv + (r - 1) * nb + i] = p + out3 * (len * double((1 << r) - 1));
             }
         }
         std::vector<std::array<int, 3>> strip;
@@ -121,16 +124,43 @@ public:
         for (const auto &t : tri) addTri(t);
         for (const auto &t : strip) addTri(t);
 
-        // Pin the outermost ring onto a circle, arc-length spaced, counter-clockwise.
-        std::vector<double> cum(nb + 1, 0.0);
-        for (int i = 0; i < nb; ++i)
-            cum[i + 1] = cum[i] + std::max(1e-12 * unit, (all[firstFixed + (i + 1) % nb] - all[firstFixed + i]).Norm());
-        double L = cum[nb];
-        double R = L / (2 * M_PI);
-        out.uv.assign(total, Eigen::Vector2d::Zero());
+        // Pin the outermost ring onto an ellipse with the ring's principal extents,
+        // counter-clockwise, arc-length spaced, starting at the ring's extreme point along
+        // the major axis.
+        Eigen::Vector3d c3 = Eigen::Vector3d::Zero();
+        for (int i = 0; i < nb; ++i) c3 += toE(all[firstFixed + i]);
+        c3 /= nb;
+        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
         for (int i = 0; i < nb; ++i) {
-            double a = 2 * M_PI * cum[i] / L;
-            out.uv[firstFixed + i] = Eigen::Vector2d(R * std::cos(a), R * std::sin(a));
+            Eigen::Vector3d d = toE(all[firstFixed + i]) - c3;
+            cov += d * d.transpose();
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov / nb);
+        Eigen::Vector3d axis = eig.eigenvectors().col(2);
+        double s1 = std::sqrt(std::max(0.0, eig.eigenvalues()[2])), s2 = std::sqrt(std::max(0.0, eig.eigenvalues()[1]));
+        double aspect = (s1 > 0 && s2 > 0) ? std::min(8.0, s1 / s2) : 1.0;
+        if (!std::isfinite(aspect) || aspect < 1) aspect = 1;
+        int start = 0;
+        double best = -1e300;
+        for (int i = 0; i < nb; ++i) {
+            double pr = (toE(all[firstFixed + i]) - c3).dot(axis);
+            if (pr > best) { best = pr; start = i; }
+        }
+        std::vector<double> cum(nb + 1, 0.0);
+        for (int k = 0; k < nb; ++k) {
+            int i = (start + k) % nb, j = (start + k + 1) % nb;
+            cum[k + 1] = cum[k] + std::max(1e-12 * unit, (all[firstFixed + j] - all[firstFixed + i]).Norm());
+        }
+        const int ns = 512; // ellipse (aspect, 1) by arc length
+        std::vector<double> ecum(ns + 1, 0.0);
+        auto ell = [&](double t) { return Eigen::Vector2d(aspect * std::cos(t), std::sin(t)); };
+        for (int k = 0; k < ns; ++k) ecum[k + 1] = ecum[k] + (ell(2 * M_PI * (k + 1) / ns) - ell(2 * M_PI * k / ns)).norm();
+        out.uv.assign(total, Eigen::Vector2d::Zero());
+        for (int k = 0, seg = 0; k < nb; ++k) {
+            double target = cum[k] / cum[nb] * ecum[ns];
+            while (seg + 1 < ns && ecum[seg + 1] < target) ++seg;
+            double f = (ecum[seg + 1] > ecum[seg]) ? (target - ecum[seg]) / (ecum[seg + 1] - ecum[seg]) : 0.0;
+            out.uv[firstFixed + (start + k) % nb] = ell(2 * M_PI * (seg + f) / ns);
         }
 
         // Solve L_ff u_f = -L_fc u_c.
@@ -167,6 +197,8 @@ public:
         out.virtualVertices = layers * nb;
         return true;
     }
+
+    static Eigen::Vector3d toE(const vcg::Point3d &p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 
     /// Signed area of a 2D triangle (positive = counter-clockwise).
     static double SignedArea(const Eigen::Vector2d &a, const Eigen::Vector2d &b, const Eigen::Vector2d &c)
