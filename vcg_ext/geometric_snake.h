@@ -44,7 +44,7 @@ struct SnakeParams
     double externalWeight = 1.0; ///< weight of the feature force f_x
     double spacing = 1.0;        ///< sample spacing, in mean edge lengths
     int updatesPerOperation = 5; ///< Eq. 4 updates per embedding (Sec. 7)
-    int segmentSamples = 48;     ///< partition size (Sec. 5.1)
+    int segmentSamples = 64;     ///< partition size (Sec. 5.1)
     int virtualLayers = 3;       ///< rings of virtual vertices of the embedding (Sec. 5.3)
     double maxStep = 0.5;        ///< cap on one update's move, in local edge lengths
     double convergenceTol = 0.02;///< converged: largest move per operation below this (edge lengths) ...
@@ -662,7 +662,7 @@ private:
             borders = std::vector<int>(borders.begin() + 1, borders.end() - 1);
         }
         // Overlapping segments across each border, with their own ends fixed (Fig. 2).
-        int half = std::max(2, S / 2);
+        int half = std::max(3, S / 4); // enough on each side to smooth the border
         for (int b : borders) {
             Segment s;
             int from = b - half, to = b + half;

@@ -1,6 +1,7 @@
 #ifndef VCG_EXT_VIRTUAL_BOUNDARY_PARAM_H
 #define VCG_EXT_VIRTUAL_BOUNDARY_PARAM_H
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -64,62 +65,93 @@ public:
         for (int b : boundary) centroid += pos[b];
         centroid /= double(nb);
 
-        // Virtual rings: ring r holds vertices nv + (r-1)*nb + i, i along the border.
+        // Outward tangent direction and local edge length at each border vertex.
+        std::vector<vcg::Point3d> outDir(nb);
+        std::vector<double> outLen(nb);
+        for (int i = 0; i < nb; ++i) {
+            const vcg::Point3d &p = pos[boundary[i]];
+            vcg::Point3d dPrev = p - pos[boundary[(i - 1 + nb) % nb]];
+            vcg::Point3d dNext = pos[boundary[(i + 1) % nb]] - p;
+            double len = 0.5 * (dPrev.Norm() + dNext.Norm());
+            vcg::Point3d out3 = (dPrev + dNext) ^ normal[boundary[i]]; // right of the border = outside
+            if (!(out3.Norm() > 1e-300)) out3 = p - centroid;
+            if (!(out3.Norm() > 1e-300)) out3 = vcg::Point3d(1, 0, 0);
+            outDir[i] = out3.Normalize();
+            outLen[i] = len > 0 ? len : unit;
+        }
+        // Virtual rings: ring 1 has a vertex per border vertex, each further ring half as
+        // many (they are farther out, so coarser is enough), offsets 1, 3, 7, ... edges.
         std::vector<vcg::Point3d> all = pos;
-        all.resize(nv + layers * nb);
-        std::vector<int> ring(nb);
-        for (int i = 0; i < nb; ++i) ring[i] = boundary[i];
-        for (int r = 1; r <= layers; ++r) {
-            for (int i = 0; i < nb; ++i) {
-                const vcg::Point3d &p = pos[boundary[i]];
-                vcg::Point3d dPrev = p - pos[boundary[(i - 1 + nb) % nb]];
-                vcg::Point3d dNext = pos[boundary[(i + 1) % nb]] - p;
-                double len = 0.5 * (dPrev.Norm() + dNext.Norm());
-                vcg::Point3d n = normal[boundary[i]];
-                vcg::Point3d out3 = (dPrev + dNext) ^ n; // right of the border = outside
-                if (!(out3.Norm() > 1e-300)) out3 = p - centroid;
-                if (!(out3.Norm() > 1e-300)) out3 = vcg::Point3d(1, 0, 0);
-                out3.Normalize();
-                if (!(len > 0)) len = unit;
-                all[nv + (r - 1) * nb + i] = p + out3 * (len * double((1 << r) - 1));
-            }
-        }
+        std::vector<int> prev = boundary, cur;
         std::vector<std::array<int, 3>> strip;
+        int firstFixed = nv;
         for (int r = 1; r <= layers; ++r) {
-            for (int i = 0; i < nb; ++i) {
-                int j = (i + 1) % nb;
-                int ui = (r == 1) ? boundary[i] : nv + (r - 2) * nb + i;
-                int uj = (r == 1) ? boundary[j] : nv + (r - 2) * nb + j;
-                int wi = nv + (r - 1) * nb + i, wj = nv + (r - 1) * nb + j;
-                // the strip lies right of ui->uj: counter-clockwise it runs uj->ui
-                strip.push_back({uj, ui, wi});
-                strip.push_back({uj, wi, wj});
+            int n1 = int(prev.size());
+            int n2 = (r == 1) ? nb : std::max(std::min(8, n1), (n1 + 1) / 2);
+            firstFixed = int(all.size());
+            cur.resize(n2);
+            for (int j = 0; j < n2; ++j) {
+                int b = int((long(j) * nb) / n2);
+                cur[j] = int(all.size());
+                all.push_back(pos[boundary[b]] + outDir[b] * (outLen[b] * double((1 << r) - 1)));
             }
+            // zip the two rings; the strip lies right of the border, so counter-clockwise
+            // triangles run against the border's direction
+            for (int i = 0, j = 0; i < n1 || j < n2;) {
+                if (j == n2 || (i < n1 && double(i + 1) / n1 <= double(j + 1) / n2)) {
+                    strip.push_back({prev[(i + 1) % n1], prev[i], cur[j % n2]});
+                    ++i;
+                } else {
+                    strip.push_back({prev[i % n1], cur[j], cur[(j + 1) % n2]});
+                    ++j;
+                }
+            }
+            prev = cur;
         }
-        const int total = nv + layers * nb;
-        const int firstFixed = nv + (layers - 1) * nb;
+        const int total = int(all.size());
+        const int nl = total - firstFixed; // pinned (outermost) ring
 
-        // Symmetrized mean-value weights, accumulated per triangle corner.
-        std::vector<Eigen::Triplet<double>> trip;
+        // Symmetrized mean-value weights, accumulated per edge from each triangle corner:
+        // W_ab += tan(theta_a / 2) / (2 |ab|). Adjacency lists (a vertex has few neighbours)
+        // instead of triplets: no sort, and the matrix is assembled directly below.
+        // Flat adjacency: a vertex has at most two neighbours per incident triangle.
+        std::vector<int> first(total + 1, 0);
+        for (const auto &t : tri)
+            for (int k = 0; k < 3; ++k) first[t[k] + 1] += 2;
+        for (const auto &t : strip)
+            for (int k = 0; k < 3; ++k) first[t[k] + 1] += 2;
+        for (int i = 0; i < total; ++i) first[i + 1] += first[i];
+        std::vector<int> fill(total, 0);
+        std::vector<std::pair<int, double>> adjW(first[total]);
         std::vector<double> diag(total, 0.0);
-        auto corner = [&](int a, int b, int c) {
-            vcg::Point3d e1 = all[b] - all[a], e2 = all[c] - all[a];
-            double l1 = e1.Norm(), l2 = e2.Norm();
-            double cosang = (l1 > 0 && l2 > 0) ? (e1 * e2) / (l1 * l2) : 1.0;
-            cosang = std::max(-1.0, std::min(1.0, cosang));
-            double theta = std::acos(cosang);
-            double th = std::tan(0.5 * std::max(1e-6, std::min(M_PI - 1e-6, theta)));
-            th = std::min(th, 1e3);
-            double lmin = 1e-9 * unit;
-            double wb = 0.5 * th / std::max(l1, lmin), wc = 0.5 * th / std::max(l2, lmin);
-            trip.emplace_back(a, b, -wb); trip.emplace_back(b, a, -wb);
-            trip.emplace_back(a, c, -wc); trip.emplace_back(c, a, -wc);
-            diag[a] += wb; diag[b] += wb; diag[a] += wc; diag[c] += wc;
+        const double lmin = 1e-9 * unit;
+        auto addHalf = [&](int a, int b, double w) {
+            std::pair<int, double> *p = &adjW[first[a]], *e = p + fill[a];
+            for (; p != e; ++p)
+                if (p->first == b) { p->second += w; return; }
+            *p = std::make_pair(b, w);
+            ++fill[a];
+        };
+        auto addW = [&](int a, int b, double w) {
+            diag[a] += w;
+            diag[b] += w;
+            addHalf(a, b, w);
+            addHalf(b, a, w);
         };
         auto addTri = [&](const std::array<int, 3> &t) {
-            corner(t[0], t[1], t[2]);
-            corner(t[1], t[2], t[0]);
-            corner(t[2], t[0], t[1]);
+            vcg::Point3d e[3] = {all[t[1]] - all[t[0]], all[t[2]] - all[t[1]], all[t[0]] - all[t[2]]};
+            double l[3] = {e[0].Norm(), e[1].Norm(), e[2].Norm()};
+            double twiceArea = (e[0] ^ e[2]).Norm();
+            for (int k = 0; k < 3; ++k) {
+                // corner at t[k] between edges to t[k+1] (e[k]) and t[k+2] (-e[k+2])
+                const vcg::Point3d &u = e[k];
+                vcg::Point3d v = -e[(k + 2) % 3];
+                double den = l[k] * l[(k + 2) % 3] + u * v; // tan(theta/2) = |u x v| / (|u||v| + u.v)
+                double th = den > 0 ? twiceArea / den : 1e3;
+                th = std::max(1e-6, std::min(th, 1e3));
+                addW(t[k], t[(k + 1) % 3], 0.5 * th / std::max(l[k], lmin));
+                addW(t[k], t[(k + 2) % 3], 0.5 * th / std::max(l[(k + 2) % 3], lmin));
+            }
         };
         for (const auto &t : tri) addTri(t);
         for (const auto &t : strip) addTri(t);
@@ -128,60 +160,76 @@ public:
         // counter-clockwise, arc-length spaced, starting at the ring's extreme point along
         // the major axis.
         Eigen::Vector3d c3 = Eigen::Vector3d::Zero();
-        for (int i = 0; i < nb; ++i) c3 += toE(all[firstFixed + i]);
-        c3 /= nb;
+        for (int i = 0; i < nl; ++i) c3 += toE(all[firstFixed + i]);
+        c3 /= nl;
         Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-        for (int i = 0; i < nb; ++i) {
+        for (int i = 0; i < nl; ++i) {
             Eigen::Vector3d d = toE(all[firstFixed + i]) - c3;
             cov += d * d.transpose();
         }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov / nb);
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov / nl);
         Eigen::Vector3d axis = eig.eigenvectors().col(2);
         double s1 = std::sqrt(std::max(0.0, eig.eigenvalues()[2])), s2 = std::sqrt(std::max(0.0, eig.eigenvalues()[1]));
         double aspect = (s1 > 0 && s2 > 0) ? std::min(8.0, s1 / s2) : 1.0;
         if (!std::isfinite(aspect) || aspect < 1) aspect = 1;
         int start = 0;
         double best = -1e300;
-        for (int i = 0; i < nb; ++i) {
+        for (int i = 0; i < nl; ++i) {
             double pr = (toE(all[firstFixed + i]) - c3).dot(axis);
             if (pr > best) { best = pr; start = i; }
         }
-        std::vector<double> cum(nb + 1, 0.0);
-        for (int k = 0; k < nb; ++k) {
-            int i = (start + k) % nb, j = (start + k + 1) % nb;
+        std::vector<double> cum(nl + 1, 0.0);
+        for (int k = 0; k < nl; ++k) {
+            int i = (start + k) % nl, j = (start + k + 1) % nl;
             cum[k + 1] = cum[k] + std::max(1e-12 * unit, (all[firstFixed + j] - all[firstFixed + i]).Norm());
         }
-        const int ns = 512; // ellipse (aspect, 1) by arc length
+        const int ns = 128; // ellipse (aspect, 1) by arc length
         std::vector<double> ecum(ns + 1, 0.0);
         auto ell = [&](double t) { return Eigen::Vector2d(aspect * std::cos(t), std::sin(t)); };
         for (int k = 0; k < ns; ++k) ecum[k + 1] = ecum[k] + (ell(2 * M_PI * (k + 1) / ns) - ell(2 * M_PI * k / ns)).norm();
         out.uv.assign(total, Eigen::Vector2d::Zero());
-        for (int k = 0, seg = 0; k < nb; ++k) {
-            double target = cum[k] / cum[nb] * ecum[ns];
+        for (int k = 0, seg = 0; k < nl; ++k) {
+            double target = cum[k] / cum[nl] * ecum[ns];
             while (seg + 1 < ns && ecum[seg + 1] < target) ++seg;
             double f = (ecum[seg + 1] > ecum[seg]) ? (target - ecum[seg]) / (ecum[seg + 1] - ecum[seg]) : 0.0;
-            out.uv[firstFixed + (start + k) % nb] = ell(2 * M_PI * (seg + f) / ns);
+            out.uv[firstFixed + (start + k) % nl] = ell(2 * M_PI * (seg + f) / ns);
         }
 
-        // Solve L_ff u_f = -L_fc u_c.
+        // Solve L_ff u_f = -L_fc u_c. The unknowns are numbered by a sweep along the
+        // region's major axis: a snake's region is a strip, so the matrix is then banded
+        // with a bandwidth of one cross-section, and a natural-ordering LDL^T beats a
+        // general fill-reducing ordering (whose analysis would cost more than the solve).
         const int nf = firstFixed;
-        std::vector<Eigen::Triplet<double>> tf;
-        tf.reserve(trip.size() + nf);
+        std::vector<int> order(nf), slot(nf);
+        std::vector<double> key(nf);
+        for (int i = 0; i < nf; ++i) { order[i] = i; key[i] = (toE(all[i]) - c3).dot(axis); }
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
+        for (int k = 0; k < nf; ++k) slot[order[k]] = k;
+        // Lower triangle, column by column in sweep order.
         Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nf, 2);
-        for (const auto &t : trip) {
-            int r = t.row(), c = t.col();
-            if (r >= nf) continue;
-            if (c < nf) tf.push_back(t);
-            else rhs.row(r) -= t.value() * out.uv[c].transpose();
-        }
-        for (int i = 0; i < nf; ++i) tf.emplace_back(i, i, diag[i]);
         Eigen::SparseMatrix<double> A(nf, nf);
-        A.setFromTriplets(tf.begin(), tf.end());
-        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+        Eigen::VectorXi count(nf);
+        for (int k = 0; k < nf; ++k) count[k] = fill[order[k]] + 1;
+        A.reserve(count);
+        std::vector<std::pair<int, double>> col;
+        for (int k = 0; k < nf; ++k) {
+            const int v = order[k];
+            col.clear();
+            col.emplace_back(k, diag[v]);
+            for (int q = first[v]; q < first[v] + fill[v]; ++q) {
+                const auto &e = adjW[q];
+                if (e.first >= nf) rhs.row(k) += e.second * out.uv[e.first].transpose(); // pinned neighbour
+                else if (slot[e.first] > k) col.emplace_back(slot[e.first], -e.second);
+            }
+            std::sort(col.begin(), col.end());
+            for (const auto &x : col) A.insert(x.first, k) = x.second;
+        }
+        A.makeCompressed();
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> solver(A);
         if (solver.info() != Eigen::Success) { out.error = "embedding: factorization failed"; return false; }
         Eigen::MatrixXd sol = solver.solve(rhs);
         if (solver.info() != Eigen::Success || !sol.allFinite()) { out.error = "embedding: solve failed"; return false; }
-        for (int i = 0; i < nf; ++i) out.uv[i] = sol.row(i).transpose();
+        for (int i = 0; i < nf; ++i) out.uv[i] = sol.row(slot[i]).transpose();
 
         // Scale to mesh units (mean edge length = 1 where 3D edges are 1 unit long).
         double l3 = 0, l2 = 0;
@@ -194,7 +242,7 @@ public:
         double s = (l3 / unit) / l2;
         for (auto &p : out.uv) p *= s;
         out.virtualTri = strip;
-        out.virtualVertices = layers * nb;
+        out.virtualVertices = total - nv;
         return true;
     }
 

@@ -5,7 +5,10 @@ Used by the host integration tests (test_host.py) and by scripts/run.sh's headle
 No third-party modules: PLY reading/writing, .mlx script writing and the meshlabserver
 runner are all here.
 
-    python3 mlhost.py summary OUT.ply       # prints quality range / selection of a saved PLY
+    python3 mlhost.py summary OUT.ply ...   # prints quality range / selection of saved PLYs
+    python3 mlhost.py seeds ENERGY.ply [K]  # K far-apart feature vertices, "i, j, k"
+    python3 mlhost.py mlx OUT.mlx 'FILTER' NAME=VALUE ... [-- 'FILTER' NAME=VALUE ...]
+                                            # writes a .mlx (ints, floats, true/false, text)
 """
 
 import math
@@ -21,6 +24,7 @@ FILTER_SEED_PATH = "Geometric Snake Seed Path"
 SELECTED = 0x0020  # vcg vertex BitFlags::SELECTED, saved as the PLY "flags" property
 
 # ---------------------------------------------------------------------------- .mlx
+STRINGS = {"Seeds"}
 ENUMS = {
     "EnergyType": ["Normal variation", "Curvature norm", "Quadric error"],
     "Cost": ["Length", "Feature"],
@@ -29,6 +33,8 @@ ENUMS = {
 
 def param_xml(name, value):
     """One <Param> element in MeshLab 2020.09 .mlx syntax (see RichParameterAdapter::create)."""
+    if name in STRINGS:
+        return '<Param type="RichString" name="%s" value=%s/>' % (name, quoteattr(str(value)))
     if name in ENUMS:
         labels = ENUMS[name]
         extra = "".join(' enum_val%d=%s' % (i, quoteattr(l)) for i, l in enumerate(labels))
@@ -241,6 +247,22 @@ def cube_edge_distance(p):
     return min(ds)
 
 
+def pick_feature_seeds(path, k=3, threshold=0.1):
+    """k feature vertices (energy < threshold) of a saved PLY, far apart (farthest-point
+    sampling from the lowest-energy vertex). Returns 0-based vertex indices, in file order."""
+    vs = read_ply(path).vertices
+    feats = [i for i, v in enumerate(vs) if v["quality"] < threshold] or list(range(len(vs)))
+    pos = {i: (vs[i]["x"], vs[i]["y"], vs[i]["z"]) for i in feats}
+    seeds = [min(feats, key=lambda i: vs[i]["quality"])]
+    dist = {i: math.dist(pos[i], pos[seeds[0]]) for i in feats}
+    while len(seeds) < k:
+        nxt = max(feats, key=lambda i: dist[i])
+        seeds.append(nxt)
+        for i in feats:
+            dist[i] = min(dist[i], math.dist(pos[i], pos[nxt]))
+    return seeds
+
+
 # ---------------------------------------------------------------------------- CLI
 def summary(path):
     ply = read_ply(path)
@@ -255,10 +277,40 @@ def summary(path):
     return "\n".join(lines)
 
 
+def _cli_value(text):
+    if text in ("true", "false"):
+        return text == "true"
+    for conv in (int, float):
+        try:
+            return conv(text)
+        except ValueError:
+            pass
+    return text
+
+
+def _cli_mlx(out, args):
+    filters, cur = [], None
+    for a in args:
+        if a == "--":
+            cur = None
+        elif cur is None:
+            cur = (a, {})
+            filters.append(cur)
+        else:
+            k, _, v = a.partition("=")
+            cur[1][k] = _cli_value(v)
+    write_mlx(out, filters)
+
+
 if __name__ == "__main__":
     if len(sys.argv) >= 3 and sys.argv[1] == "summary":
         for p in sys.argv[2:]:
             print(summary(p))
+    elif len(sys.argv) >= 3 and sys.argv[1] == "seeds":
+        k = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+        print(", ".join(str(i) for i in pick_feature_seeds(sys.argv[2], k)))
+    elif len(sys.argv) >= 4 and sys.argv[1] == "mlx":
+        _cli_mlx(sys.argv[2], sys.argv[3:])
     else:
         print(__doc__)
         sys.exit(2)

@@ -1,0 +1,420 @@
+// Tests of the edit tool's logic (vcg_ext/snake_controller.h), without Qt or OpenGL.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include <snake_test_util.h>
+#include <vcg_ext/snake_controller.h>
+
+using namespace vcg::tri;
+using Controller = SnakeController<CMeshO>;
+
+namespace {
+
+void MakeCube(CMeshO &m, int subdiv = 4)
+{
+    gs_test::MakeRotatedIcoCube(m, subdiv);
+    gs_test::EnableSnakeAdjacency(m);
+}
+
+// A face of the mesh having vertex v, and the barycentric coordinates of v in it.
+bool FaceAtVertex(const CMeshO &m, int v, int &face, vcg::Point3d &bary)
+{
+    for (size_t f = 0; f < m.face.size(); ++f)
+        for (int k = 0; k < 3; ++k)
+            if (m.face[f].cV(k) == &m.vert[v]) {
+                face = int(f);
+                bary = vcg::Point3d(0, 0, 0);
+                bary[k] = 1;
+                return true;
+            }
+    return false;
+}
+
+// Seeds on the face x = 1, `off` edge lengths from the edge x = y = 1.
+std::vector<int> EdgeSeeds(const CMeshO &m, double off)
+{
+    double h = MeshValidation<CMeshO>::MeanEdgeLength(m);
+    std::vector<vcg::Point3d> pts;
+    for (double z : {-0.6, -0.2, 0.2, 0.6}) pts.push_back(vcg::Point3d(1, 1 - off * h, z));
+    return gs_test::NearestVertices(m, pts);
+}
+
+double MeanEdgeError(Controller &c, int snake)
+{
+    auto pos = c.Get(snake).positions();
+    double sum = 0;
+    int n = 0;
+    for (size_t i = 1; i + 1 < pos.size(); ++i, ++n) sum += gs_test::DistToCubeEdges(pos[i]);
+    return n ? sum / n : 1e9;
+}
+
+std::string TempPath(const std::string &name)
+{
+    return std::string(::testing::TempDir()) + "/" + name;
+}
+
+} // namespace
+
+TEST(SnakeController, PickGivesNearestVertexOfTheHitTriangle)
+{
+    CMeshO m;
+    MakeCube(m);
+    Controller c(m);
+    const auto &f = m.face[10];
+    int v1 = int(f.cV(1) - &m.vert[0]);
+    EXPECT_EQ(c.SeedVertexFromPick(10, vcg::Point3d(0.1, 0.8, 0.1)), v1);
+    EXPECT_EQ(c.AddSeedFromPick(10, vcg::Point3d(0.1, 0.8, 0.1)), v1);
+    EXPECT_EQ(c.AddSeedFromPick(10, vcg::Point3d(0.2, 0.7, 0.1)), -1); // same vertex again: ignored
+    EXPECT_EQ(c.Seeds().size(), 1u);
+}
+
+TEST(SnakeController, BadInputThrowsAndChangesNothing)
+{
+    CMeshO m;
+    MakeCube(m, 3);
+    Controller c(m);
+    EXPECT_THROW(c.AddSeedFromPick(-1, vcg::Point3d(1, 0, 0)), SnakeError);
+    EXPECT_THROW(c.AddSeedFromPick(int(m.face.size()), vcg::Point3d(1, 0, 0)), SnakeError);
+    EXPECT_THROW(c.AddSeedFromPick(0, vcg::Point3d(NAN, 0, 0)), SnakeError);
+    EXPECT_THROW(c.AddSeedFromPick(0, vcg::Point3d(5, -4, 0)), SnakeError);
+    EXPECT_THROW(c.AddSeedVertex(-3), SnakeError);
+    EXPECT_THROW(c.AddSeedVertex(int(m.vert.size())), SnakeError);
+    EXPECT_TRUE(c.Seeds().empty());
+    EXPECT_THROW(c.CloseSeeds(false), SnakeError); // no seeds
+    c.AddSeedVertex(0);
+    EXPECT_THROW(c.CloseSeeds(false), SnakeError); // one seed
+    EXPECT_EQ(c.Seeds().size(), 1u);               // kept, to be completed
+    EXPECT_EQ(c.SnakeCount(), 0);
+    EXPECT_THROW(c.Step(), SnakeError);             // no snake
+    EXPECT_THROW(c.MoveSample(0, SurfacePoint(0, vcg::Point3d(1, 0, 0)), false), SnakeError);
+    EXPECT_THROW(c.Select(0), SnakeError);
+    EXPECT_THROW(c.Export(TempPath("none.json"), true), SnakeError);
+    SnakeParams p;
+    p.alpha = -1;
+    EXPECT_THROW(c.SetParams(p), SnakeError);
+    p = SnakeParams();
+    p.spacing = NAN;
+    EXPECT_THROW(c.SetParams(p), SnakeError);
+    EXPECT_EQ(c.Params().alpha, SnakeParams().alpha);
+    EXPECT_THROW(c.ComputeEnergy(FeatureEnergyType(7), 2), SnakeError);
+    EXPECT_THROW(c.ComputeEnergy(FeatureEnergyType::NormalVariation, -1), SnakeError);
+    EXPECT_THROW(c.RemoveSeed(5), SnakeError);
+    EXPECT_FALSE(c.Load(TempPath("does_not_exist.snakes.json")));
+}
+
+TEST(SnakeController, SeedsBuildSnakeAndStepsConvergeOnCubeEdge)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    std::vector<int> seeds = EdgeSeeds(m, 2.0);
+    for (int v : seeds) {
+        int f;
+        vcg::Point3d b;
+        ASSERT_TRUE(FaceAtVertex(m, v, f, b));
+        EXPECT_EQ(c.AddSeedFromPick(f, b), v);
+    }
+    int s = c.CloseSeeds(false);
+    EXPECT_EQ(s, 0);
+    EXPECT_EQ(c.SnakeCount(), 1);
+    EXPECT_EQ(c.Selected(), 0);
+    EXPECT_TRUE(c.Seeds().empty());
+    EXPECT_GE(c.Get(0).SampleCount(), 5);
+    const double h = c.MeanEdge();
+    double before = MeanEdgeError(c, 0);
+    EXPECT_GT(before, 1.0 * h);
+    double mv = c.Step();
+    EXPECT_TRUE(std::isfinite(mv));
+    EXPECT_GT(mv, 0);
+    EXPECT_LT(MeanEdgeError(c, 0), before); // the first operation moves toward the edge
+    c.Run(300);
+    EXPECT_TRUE(c.Converged());
+    // Against the edge as the mesh has it (its straddling triangles chamfer the exact edge
+    // up to about half an edge length deep), and against the exact edge.
+    std::vector<vcg::Point3d> onMesh = gs_test::ProjectOntoMesh(m, gs_test::CubeEdgeLine(1.0, 0.95));
+    auto pos = c.Get(0).positions();
+    gs_test::CurveError e = gs_test::MeasureCurve(pos, h, [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh); });
+    EXPECT_LT(e.mean, 0.25) << "p95 " << e.p95 << " max " << e.max;
+    double after = MeanEdgeError(c, 0);
+    EXPECT_LT(after, 0.5 * h) << "before " << before / h << " h, after " << after / h << " h";
+    EXPECT_GE(c.LastOperationMs(), 0.0);
+}
+
+TEST(SnakeController, PinHoldsExactlyAndUndoRedoRestore)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 2.0));
+    c.CloseSeeds(false);
+    Controller::Snake &s = c.Get(0);
+    int k = s.SampleCount() / 2;
+
+    // Move sample k somewhere else on the surface and pin it there.
+    SurfacePoint target(5, vcg::Point3d(0.2, 0.3, 0.5));
+    target = s.Samples()[k].p; // start from its own face ...
+    target.bary = vcg::Point3d(0.25, 0.25, 0.5);
+    c.MoveSample(k, target, true);
+    EXPECT_TRUE(s.Samples()[k].fixed);
+    vcg::Point3d pinned = s.Samples()[k].p.Pd(m);
+    auto beforeStep = s.positions();
+    for (int i = 0; i < 20; ++i) c.Step();
+    EXPECT_EQ(s.Samples()[k].p.Pd(m), pinned); // exactly
+    EXPECT_TRUE(s.Samples()[k].fixed);
+
+    // Undo of one operation restores the positions before it, redo re-applies it.
+    auto p1 = s.positions();
+    c.Step();
+    auto p2 = s.positions();
+    ASSERT_TRUE(c.Undo());
+    EXPECT_EQ(s.positions(), p1);
+    ASSERT_TRUE(c.Redo());
+    EXPECT_EQ(s.positions(), p2);
+
+    // Unpin, toggle, insert and delete.
+    EXPECT_FALSE(c.TogglePin(k));
+    EXPECT_FALSE(s.Samples()[k].fixed);
+    int n = s.SampleCount();
+    int ins = c.InsertSampleAfter(k);
+    EXPECT_EQ(ins, k + 1);
+    EXPECT_EQ(s.SampleCount(), n + 1);
+    c.DeleteSample(ins);
+    EXPECT_EQ(s.SampleCount(), n);
+    ASSERT_TRUE(c.Undo());
+    EXPECT_EQ(s.SampleCount(), n + 1);
+
+    // Undo never goes back to before the snake existed.
+    while (c.Undo()) {}
+    EXPECT_GT(s.SampleCount(), 1);
+    EXPECT_NO_THROW(c.Step());
+    (void)beforeStep;
+    (void)p1;
+}
+
+TEST(SnakeController, SaveLoadRoundTripKeepsSnakesPinsAndParams)
+{
+    CMeshO m;
+    MakeCube(m, 3);
+    Controller c(m);
+    SnakeParams p;
+    p.alpha = 0.2;
+    p.beta = 0.7;
+    p.spacing = 1.5;
+    c.SetParams(p);
+    c.SetSeeds(EdgeSeeds(m, 1.0));
+    c.CloseSeeds(false);
+    c.Step();
+    c.SetFixed(1, true);
+    // A second, closed snake around the cube's middle.
+    std::vector<vcg::Point3d> ring{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    c.SetSeeds(gs_test::NearestVertices(m, ring));
+    c.CloseSeeds(true);
+    c.Select(0);
+    c.AddSeedVertex(3); // seeds in progress are kept too
+
+    std::string path = Controller::SidecarPath(TempPath("cube.ply"));
+    EXPECT_EQ(path, TempPath("cube.ply") + ".snakes.json");
+    c.Save(path);
+    EXPECT_FALSE(c.Dirty());
+
+    CMeshO m2;
+    MakeCube(m2, 3);
+    Controller d(m2);
+    ASSERT_TRUE(d.Load(path));
+    ASSERT_EQ(d.SnakeCount(), 2);
+    EXPECT_EQ(d.Selected(), 0);
+    EXPECT_EQ(d.Seeds(), std::vector<int>{3});
+    EXPECT_DOUBLE_EQ(d.Params().alpha, 0.2);
+    EXPECT_DOUBLE_EQ(d.Params().spacing, 1.5);
+    for (int k = 0; k < 2; ++k) {
+        auto &a = c.Get(k), &b = d.Get(k);
+        ASSERT_EQ(a.SampleCount(), b.SampleCount());
+        EXPECT_EQ(a.Closed(), b.Closed());
+        for (int i = 0; i < a.SampleCount(); ++i) {
+            EXPECT_EQ(a.Samples()[i].fixed, b.Samples()[i].fixed);
+            EXPECT_EQ(a.Samples()[i].p.face, b.Samples()[i].p.face);
+            EXPECT_NEAR((a.Samples()[i].p.Pd(m) - b.Samples()[i].p.Pd(m2)).Norm(), 0.0, 1e-9);
+        }
+    }
+    EXPECT_TRUE(d.Get(0).Samples()[1].fixed);
+    EXPECT_TRUE(d.Get(1).Closed());
+    // The restored pin still holds.
+    vcg::Point3d pin = d.Get(0).Samples()[1].p.Pd(m2);
+    d.Step();
+    EXPECT_EQ(d.Get(0).Samples()[1].p.Pd(m2), pin);
+    EXPECT_FALSE(d.Undo() && d.Get(0).SampleCount() == 0);
+    std::remove(path.c_str());
+}
+
+TEST(SnakeController, LoadRejectsOtherMeshAndBrokenFilesWithoutChange)
+{
+    CMeshO m;
+    MakeCube(m, 3);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 1.0));
+    c.CloseSeeds(false);
+    std::string path = TempPath("other.snakes.json");
+    c.Save(path);
+
+    CMeshO small;
+    MakeCube(small, 2);
+    Controller d(small);
+    d.AddSeedVertex(1);
+    EXPECT_THROW(d.Load(path), SnakeError);
+    EXPECT_EQ(d.SnakeCount(), 0);
+    EXPECT_EQ(d.Seeds().size(), 1u);
+
+    for (const char *text : {"{", "[]", "{\"format\":\"nope\"}",
+                             "{\"format\":\"geometric-snake-session\",\"version\":1,\"mesh\":{\"vertices\":1}}"}) {
+        std::ofstream(path) << text;
+        EXPECT_THROW(d.Load(path), SnakeError) << text;
+        EXPECT_EQ(d.SnakeCount(), 0);
+    }
+    // A sample on a face the mesh does not have.
+    nlohmann::json j = c.ToJson();
+    j["snakes"][0]["samples"][0]["face"] = 999999;
+    CMeshO m3;
+    MakeCube(m3, 3);
+    Controller e(m3);
+    EXPECT_THROW(e.FromJson(j), SnakeError);
+    EXPECT_EQ(e.SnakeCount(), 0);
+    std::remove(path.c_str());
+}
+
+TEST(SnakeController, AutosaveIsThrottledAndForced)
+{
+    CMeshO m;
+    MakeCube(m, 3);
+    Controller c(m);
+    std::string path = TempPath("auto.snakes.json");
+    std::remove(path.c_str());
+    c.SetAutosave(path, 3600.0);
+    EXPECT_FALSE(c.Autosave()); // nothing changed
+    c.SetSeeds(EdgeSeeds(m, 1.0));
+    c.CloseSeeds(false);
+    EXPECT_TRUE(c.Autosave());   // first save
+    c.Step();
+    EXPECT_FALSE(c.Autosave());  // within the interval
+    EXPECT_TRUE(c.Dirty());
+    EXPECT_TRUE(c.Autosave(true));
+    EXPECT_FALSE(c.Dirty());
+    CMeshO m2;
+    MakeCube(m2, 3);
+    Controller d(m2);
+    EXPECT_TRUE(d.Load(path));
+    EXPECT_EQ(d.Get(0).positions().size(), c.Get(0).positions().size());
+    std::remove(path.c_str());
+}
+
+TEST(SnakeController, ExportSelectedOrAll)
+{
+    CMeshO m;
+    MakeCube(m, 3);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 1.0));
+    c.CloseSeeds(false);
+    std::vector<vcg::Point3d> ring{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    c.SetSeeds(gs_test::NearestVertices(m, ring));
+    c.CloseSeeds(true);
+    std::string js = TempPath("sel.json"), all = TempPath("all.json"), obj = TempPath("all.obj"), ply = TempPath("all.ply");
+    c.Export(js, false);
+    c.Export(all, true);
+    c.Export(obj, true);
+    c.Export(ply, true);
+    nlohmann::json a = nlohmann::json::parse(std::ifstream(js));
+    EXPECT_TRUE(a.at("closed").get<bool>());
+    nlohmann::json b = nlohmann::json::parse(std::ifstream(all));
+    EXPECT_EQ(b.at("snakes").size(), 2u);
+    std::ifstream o(obj);
+    std::string line;
+    int lines = 0;
+    while (std::getline(o, line)) lines += (line.rfind("l ", 0) == 0);
+    EXPECT_EQ(lines, 2);
+    EXPECT_THROW(c.Export(TempPath("x.txt"), true), SnakeError);
+    for (auto &p : {js, all, obj, ply}) std::remove(p.c_str());
+}
+
+TEST(SnakeController, SelectionStrokeAndSeedEditing)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    EXPECT_THROW(c.SeedsFromSelection(), SnakeError); // nothing selected
+    std::vector<int> seeds = EdgeSeeds(m, 2.0);
+    // Selected in scrambled order: the chain puts them back in order along the line.
+    for (int v : {seeds[2], seeds[0], seeds[3], seeds[1]}) m.vert[v].SetS();
+    EXPECT_EQ(c.SeedsFromSelection(), 4);
+    std::vector<int> got = c.Seeds();
+    EXPECT_TRUE(got == seeds || got == std::vector<int>(seeds.rbegin(), seeds.rend()));
+    EXPECT_EQ(c.NearestSeed(vcg::Point3d::Construct(m.vert[seeds[1]].cP())),
+              got == seeds ? 1 : 2);
+    c.RemoveSeed(0);
+    EXPECT_EQ(c.Seeds().size(), 3u);
+    EXPECT_TRUE(c.RemoveLastSeed());
+    c.ClearSeeds();
+    EXPECT_TRUE(c.Seeds().empty());
+
+    // A stroke through the faces around many vertices gives few, well spaced seeds.
+    std::vector<SurfacePoint> stroke;
+    for (size_t f = 0; f < m.face.size(); f += 7) stroke.push_back(SurfacePoint(int(f), vcg::Point3d(0.3, 0.3, 0.4)));
+    stroke.push_back(SurfacePoint(-5, vcg::Point3d(1, 0, 0))); // off the mesh: skipped
+    int n = c.AddSeedsFromStroke(stroke);
+    EXPECT_GT(n, 1);
+    EXPECT_LT(n, int(stroke.size()));
+    for (size_t i = 1; i < c.Seeds().size(); ++i) EXPECT_NE(c.Seeds()[i], c.Seeds()[i - 1]);
+    EXPECT_THROW(c.AddSeedsFromStroke({SurfacePoint(-1, vcg::Point3d(1, 0, 0))}), SnakeError);
+}
+
+TEST(SnakeController, SeveralSnakesSelectDeleteAndNearestSample)
+{
+    CMeshO m;
+    MakeCube(m, 3);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 1.0));
+    c.CloseSeeds(false);
+    std::vector<vcg::Point3d> ring{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    c.SetSeeds(gs_test::NearestVertices(m, ring));
+    c.CloseSeeds(true);
+    EXPECT_EQ(c.Selected(), 1);
+    int sn, si;
+    vcg::Point3d p = c.Get(0).Samples()[2].p.Pd(m);
+    ASSERT_TRUE(c.NearestSample(p, sn, si));
+    EXPECT_EQ(sn, 0);
+    EXPECT_EQ(si, 2);
+    EXPECT_FALSE(c.NearestSample(vcg::Point3d(10, 10, 10), sn, si, 0.1));
+    auto before = c.Get(0).positions();
+    c.Step(); // steps the selected snake only
+    EXPECT_EQ(c.Get(0).positions(), before);
+    c.DeleteSnake(1);
+    EXPECT_EQ(c.SnakeCount(), 1);
+    EXPECT_EQ(c.Selected(), 0);
+    c.DeleteAllSnakes();
+    EXPECT_EQ(c.SelectedSnake(), nullptr);
+    EXPECT_THROW(c.Step(), SnakeError);
+}
+
+TEST(SnakeController, BoundaryAndSeveralComponents)
+{
+    CMeshO a, b;
+    gs_test::MakeFlatGrid(a, 20);
+    MakeCube(b, 2);
+    gs_test::AppendMesh(a, b);
+    gs_test::EnableSnakeAdjacency(a);
+    Controller c(a);
+    // Seeds on two components cannot be joined: an error, not a crash.
+    c.AddSeedVertex(0);
+    c.AddSeedVertex(int(a.vert.size()) - 1);
+    EXPECT_THROW(c.CloseSeeds(false), SnakeError);
+    c.ClearSeeds();
+    // An open snake on the flat grid with a boundary (flat energy: it only smooths).
+    c.AddSeedVertex(0);
+    c.AddSeedVertex(20);
+    ASSERT_NO_THROW(c.CloseSeeds(false));
+    for (int i = 0; i < 10; ++i) {
+        ASSERT_NO_THROW(c.Step());
+        for (auto &p : c.Get(0).positions())
+            for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(p[k]));
+    }
+}

@@ -1,0 +1,637 @@
+#ifndef VCG_EXT_SNAKE_CONTROLLER_H
+#define VCG_EXT_SNAKE_CONTROLLER_H
+
+// The logic of the interactive edit tool, without Qt or OpenGL (so it is unit-testable):
+// several snakes on one mesh (one selected), the seeds being placed, step/run, point
+// editing (move, pin, insert, delete), undo/redo, export, and the session (snakes, pins,
+// parameters, energy settings) saved to / restored from JSON, e.g. the sidecar file
+// <mesh>.snakes.json next to the mesh, with a throttled autosave.
+//
+// Every user input is validated: bad input throws vcg::tri::SnakeError with a message
+// for the user, and leaves the controller unchanged.
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include <vcg_ext/feature_energy.h>
+#include <vcg_ext/geometric_snake.h>
+#include <vcg_ext/seed_path.h>
+#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake_io.h>
+#include <vcg_ext/snake_surface.h>
+#include <vcg_ext/surface_point.h>
+
+namespace vcg {
+namespace tri {
+
+template <class MeshType>
+class SnakeController
+{
+public:
+    typedef GeometricSnake<MeshType> Snake;
+    typedef SnakeSurface<MeshType> Surface;
+    typedef SnakeIO<MeshType> IO;
+    typedef nlohmann::json json;
+
+    static const char *FormatName() { return "geometric-snake-session"; }
+    static int FormatVersion() { return 1; }
+    /// Largest selection "use selected vertices" accepts (the ordering is quadratic).
+    static int MaxSelectedSeeds() { return 5000; }
+
+    explicit SnakeController(MeshType &m) : mesh(m) {}
+
+    MeshType &Mesh() { return mesh; }
+
+    // ================================================================ energy
+    /// Computes the feature energy into the vertex quality (low = feature) and makes every
+    /// snake slither on it. Throws on a bad type/smoothing or an unusable mesh.
+    void ComputeEnergy(FeatureEnergyType type, int smoothing)
+    {
+        if (int(type) < 0 || int(type) > 2) throw SnakeError("Geometric snake: unknown energy type.");
+        if (smoothing < 0 || smoothing > 1000) throw SnakeError("Geometric snake: energy smoothing must be in [0, 1000].");
+        FeatureEnergy<MeshType>::Compute(mesh, type, smoothing);
+        energyType = type;
+        energySmoothing = smoothing;
+        energyComputed = true;
+        if (surface) {
+            surface->SetEnergyFromQuality();
+            for (auto &s : snakes) s->EnergyChanged();
+        }
+        touch("energy");
+    }
+    bool EnergyComputed() const { return energyComputed; }
+    FeatureEnergyType EnergyType() const { return energyType; }
+    int EnergySmoothing() const { return energySmoothing; }
+    /// Energy settings used when the energy is computed on demand (first snake).
+    void SetEnergySettings(FeatureEnergyType type, int smoothing)
+    {
+        if (int(type) < 0 || int(type) > 2) throw SnakeError("Geometric snake: unknown energy type.");
+        if (smoothing < 0 || smoothing > 1000) throw SnakeError("Geometric snake: energy smoothing must be in [0, 1000].");
+        if (energyComputed && (type != energyType || smoothing != energySmoothing)) ComputeEnergy(type, smoothing);
+        energyType = type;
+        energySmoothing = smoothing;
+    }
+
+    /// The shared surface; computes the energy first if that was not done yet.
+    Surface &EnsureSurface()
+    {
+        if (!energyComputed) ComputeEnergy(energyType, energySmoothing);
+        if (!surface) surface = std::make_shared<Surface>(mesh);
+        return *surface;
+    }
+    bool HasSurface() const { return bool(surface); }
+    /// False when the mesh lost or gained elements since the snakes were built on it.
+    bool MeshMatches() const { return !surface || surface->MatchesMesh(); }
+    double MeanEdge() { return EnsureSurface().MeanEdge(); }
+
+    // ================================================================ seeds
+    /// The vertex of face `face` nearest to the surface point (face, bary): the seed a click
+    /// on the surface places (Sec. 5.5).
+    int SeedVertexFromPick(int face, const vcg::Point3d &bary) const
+    {
+        if (face < 0 || face >= int(mesh.face.size()) || mesh.face[face].IsD())
+            throw SnakeError("Geometric snake: the click is not on the mesh.");
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(bary[k]) || bary[k] < -0.01 || bary[k] > 1.01)
+                throw SnakeError("Geometric snake: the picked point is outside the picked triangle.");
+        SurfacePoint sp(face, bary);
+        sp.Normalize();
+        const auto &f = mesh.face[face];
+        vcg::Point3d p = sp.Pd(mesh);
+        int best = -1;
+        double bd = std::numeric_limits<double>::max();
+        for (int k = 0; k < 3; ++k) {
+            vcg::Point3d q = vcg::Point3d::Construct(f.cV(k)->cP());
+            double d = (q - p).SquaredNorm();
+            if (!std::isfinite(d)) continue;
+            if (d < bd) { bd = d; best = int(f.cV(k) - &mesh.vert[0]); }
+        }
+        if (best < 0) throw SnakeError("Geometric snake: the picked triangle has invalid coordinates.");
+        return best;
+    }
+
+    /// Adds the seed for a click; returns the vertex, or -1 if it repeats the last seed.
+    int AddSeedFromPick(int face, const vcg::Point3d &bary) { return AddSeedVertex(SeedVertexFromPick(face, bary)); }
+
+    int AddSeedVertex(int v)
+    {
+        checkVertex(v);
+        if (!seeds.empty() && seeds.back() == v) return -1;
+        seeds.push_back(v);
+        touch("seed");
+        return v;
+    }
+
+    /// A painted stroke (surface points in drawing order): seeds along it, at least
+    /// `minSpacing` mean edge lengths apart (the shortest paths between them follow the
+    /// stroke closely). Returns the number of seeds added.
+    int AddSeedsFromStroke(const std::vector<SurfacePoint> &stroke, double minSpacing = 3.0)
+    {
+        if (!std::isfinite(minSpacing) || minSpacing < 0) throw SnakeError("Geometric snake: bad stroke spacing.");
+        std::vector<int> verts;
+        for (const auto &p : stroke) {
+            int v;
+            try { v = SeedVertexFromPick(p.face, p.bary); }
+            catch (const SnakeError &) { continue; } // stroke points off the mesh are skipped
+            if (verts.empty() || verts.back() != v) verts.push_back(v);
+        }
+        if (verts.empty()) throw SnakeError("Geometric snake: the stroke does not touch the mesh.");
+        double h = meanEdgeNoSurface();
+        std::vector<int> kept;
+        int last = seeds.empty() ? -1 : seeds.back();
+        for (size_t i = 0; i < verts.size(); ++i) {
+            int v = verts[i];
+            bool isLast = (i + 1 == verts.size());
+            if (v == last) continue;
+            if (last >= 0 && !isLast && vdist(v, last) < minSpacing * h) continue;
+            kept.push_back(v);
+            last = v;
+        }
+        for (int v : kept) seeds.push_back(v);
+        if (!kept.empty()) touch("stroke");
+        return int(kept.size());
+    }
+
+    /// Seeds from the selected vertices, ordered into a chain (nearest neighbour from the
+    /// selected vertex farthest from their centroid). Replaces the current seeds.
+    int SeedsFromSelection()
+    {
+        std::vector<int> sel;
+        for (size_t i = 0; i < mesh.vert.size(); ++i)
+            if (!mesh.vert[i].IsD() && mesh.vert[i].IsS()) sel.push_back(int(i));
+        if (sel.size() < 2) throw SnakeError("Geometric snake: select at least 2 vertices to use them as seeds.");
+        if (int(sel.size()) > MaxSelectedSeeds())
+            throw SnakeError("Geometric snake: " + std::to_string(sel.size()) + " vertices are selected; use at most " +
+                             std::to_string(MaxSelectedSeeds()) + " as seeds.");
+        vcg::Point3d c(0, 0, 0);
+        for (int v : sel) c += P(v);
+        c /= double(sel.size());
+        size_t start = 0;
+        for (size_t i = 1; i < sel.size(); ++i)
+            if ((P(sel[i]) - c).SquaredNorm() > (P(sel[start]) - c).SquaredNorm()) start = i;
+        std::vector<int> order{sel[start]};
+        std::vector<char> used(sel.size(), 0);
+        used[start] = 1;
+        for (size_t k = 1; k < sel.size(); ++k) {
+            int bi = -1;
+            double bd = std::numeric_limits<double>::max();
+            for (size_t i = 0; i < sel.size(); ++i)
+                if (!used[i]) {
+                    double d = (P(sel[i]) - P(order.back())).SquaredNorm();
+                    if (d < bd) { bd = d; bi = int(i); }
+                }
+            used[bi] = 1;
+            order.push_back(sel[bi]);
+        }
+        seeds = order;
+        touch("selection seeds");
+        return int(seeds.size());
+    }
+
+    /// Replaces the seeds (e.g. vertices picked with another tool); validated.
+    void SetSeeds(const std::vector<int> &s)
+    {
+        for (int v : s) checkVertex(v);
+        seeds = s;
+        touch("seeds");
+    }
+
+    void RemoveSeed(int i)
+    {
+        if (i < 0 || i >= int(seeds.size())) throw SnakeError("Geometric snake: no seed " + std::to_string(i) + ".");
+        seeds.erase(seeds.begin() + i);
+        touch("remove seed");
+    }
+    bool RemoveLastSeed()
+    {
+        if (seeds.empty()) return false;
+        seeds.pop_back();
+        touch("remove seed");
+        return true;
+    }
+    void ClearSeeds()
+    {
+        seeds.clear();
+        touch("clear seeds");
+    }
+    /// The seed nearest to p, within maxDist (-1 if none).
+    int NearestSeed(const vcg::Point3d &p, double maxDist = std::numeric_limits<double>::max()) const
+    {
+        int best = -1;
+        double bd = maxDist;
+        for (size_t i = 0; i < seeds.size(); ++i) {
+            double d = (P(seeds[i]) - p).Norm();
+            if (d <= bd) { bd = d; best = int(i); }
+        }
+        return best;
+    }
+    const std::vector<int> &Seeds() const { return seeds; }
+    vcg::Point3d SeedPosition(int i) const { return P(seeds.at(i)); }
+
+    /// Closes the seed list: builds the initial snake at once (Sec. 5.5), selects it and
+    /// clears the seeds. On error nothing changes (the seeds stay, to be fixed).
+    int CloseSeeds(bool closed)
+    {
+        size_t need = closed ? 3 : 2;
+        if (seeds.size() < need)
+            throw SnakeError(std::string("Geometric snake: a ") + (closed ? "closed" : "open") + " snake needs at least " +
+                             std::to_string(need) + " seeds (" + std::to_string(seeds.size()) + " placed).");
+        std::vector<int> s = seeds;
+        if (closed && s.size() > need && s.front() == s.back()) s.pop_back();
+        EnsureSurface();
+        checkMesh();
+        std::unique_ptr<Snake> sn(new Snake(surface, params));
+        sn->InitFromSeeds(s, closed, seedCost);
+        snakes.push_back(std::move(sn));
+        selected = int(snakes.size()) - 1;
+        seeds.clear();
+        touch("create snake");
+        return selected;
+    }
+
+    // ================================================================ snakes
+    int SnakeCount() const { return int(snakes.size()); }
+    int Selected() const { return selected; }
+    void Select(int i)
+    {
+        checkSnake(i);
+        selected = i;
+        touch("select");
+    }
+    Snake &Get(int i)
+    {
+        checkSnake(i);
+        return *snakes[i];
+    }
+    Snake *SelectedSnake() { return (selected >= 0 && selected < int(snakes.size())) ? snakes[selected].get() : nullptr; }
+    void DeleteSnake(int i)
+    {
+        checkSnake(i);
+        snakes.erase(snakes.begin() + i);
+        if (selected >= int(snakes.size())) selected = int(snakes.size()) - 1;
+        touch("delete snake");
+    }
+    void DeleteAllSnakes()
+    {
+        snakes.clear();
+        selected = -1;
+        touch("delete all snakes");
+    }
+
+    /// One operation of the selected snake; returns its largest move (mean edge lengths).
+    double Step()
+    {
+        Snake &s = sel();
+        checkMesh();
+        auto t0 = std::chrono::steady_clock::now();
+        double mv = s.Step();
+        lastOpMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        for (const auto &x : s.Samples()) {
+            vcg::Point3d p = x.p.Pd(mesh);
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !std::isfinite(mv)) {
+                s.Undo();
+                throw SnakeError("Geometric snake: the operation produced invalid coordinates and was undone.");
+            }
+        }
+        touch("step");
+        return mv;
+    }
+    /// Operations of the selected snake until it converges or maxOps; returns operations done.
+    int Run(int maxOps)
+    {
+        if (maxOps < 0 || maxOps > 1000000) throw SnakeError("Geometric snake: the operation limit must be in [0, 1000000].");
+        int ops = 0;
+        while (ops < maxOps && !sel().Converged()) {
+            Step();
+            ++ops;
+        }
+        return ops;
+    }
+    bool Converged() { return SelectedSnake() && SelectedSnake()->Converged(); }
+
+    /// The sample nearest to p (3D), over all snakes (ties: the selected one first).
+    bool NearestSample(const vcg::Point3d &p, int &snake, int &sample,
+                       double maxDist = std::numeric_limits<double>::max()) const
+    {
+        snake = sample = -1;
+        double bd = maxDist;
+        for (int k = 0; k < int(snakes.size()); ++k) {
+            int si = (selected >= 0) ? (k + selected) % int(snakes.size()) : k;
+            const auto &smp = snakes[si]->Samples();
+            for (int i = 0; i < int(smp.size()); ++i) {
+                double d = (smp[i].p.Pd(mesh) - p).Norm();
+                if (d < bd) { bd = d; snake = si; sample = i; }
+            }
+        }
+        return snake >= 0;
+    }
+
+    // --- point editing on the selected snake (Sec. 5.5)
+    void MoveSample(int i, const SurfacePoint &p, bool pin)
+    {
+        checkSurfacePoint(p);
+        sel().MoveSample(i, p, pin);
+        touch("move sample");
+    }
+    void SetFixed(int i, bool fixed)
+    {
+        sel().SetFixed(i, fixed);
+        touch(fixed ? "pin" : "unpin");
+    }
+    bool TogglePin(int i)
+    {
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        bool f = !s.Samples()[i].fixed;
+        SetFixed(i, f);
+        return f;
+    }
+    /// Inserts a sample after sample i (before it for the last sample of an open snake).
+    int InsertSampleAfter(int i)
+    {
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        int gap = (!s.Closed() && i == s.SampleCount() - 1) ? i - 1 : i;
+        int r = s.InsertSample(gap);
+        touch("insert sample");
+        return r;
+    }
+    void DeleteSample(int i)
+    {
+        sel().DeleteSample(i);
+        touch("delete sample");
+    }
+
+    bool CanUndo() { return SelectedSnake() && SelectedSnake()->CanUndo() && !undoLeadsToEmpty(); }
+    bool CanRedo() { return SelectedSnake() && SelectedSnake()->CanRedo(); }
+    bool Undo()
+    {
+        Snake *s = SelectedSnake();
+        if (!s || !s->CanUndo()) return false;
+        s->Undo();
+        if (s->SampleCount() == 0) { // the state before the snake existed: not an undo step
+            s->Redo();
+            return false;
+        }
+        touch("undo");
+        return true;
+    }
+    bool Redo()
+    {
+        Snake *s = SelectedSnake();
+        if (!s || !s->Redo()) return false;
+        touch("redo");
+        return true;
+    }
+
+    /// Parameters of new snakes; also applied to the selected snake.
+    void SetParams(const SnakeParams &p)
+    {
+        p.Validate();
+        if (Snake *s = SelectedSnake()) s->SetParams(p);
+        params = p;
+        touch("parameters");
+    }
+    const SnakeParams &Params() const { return params; }
+    void SetSeedCost(SeedPathCost c)
+    {
+        if (int(c) < 0 || int(c) > 1) throw SnakeError("Geometric snake: unknown seed path cost.");
+        seedCost = c;
+    }
+    SeedPathCost SeedCost() const { return seedCost; }
+
+    // ================================================================ output
+    /// Curves by extension (.json/.obj/.ply): the selected snake or all.
+    void Export(const std::string &path, bool all)
+    {
+        std::vector<Snake *> out;
+        if (all) for (auto &s : snakes) out.push_back(s.get());
+        else if (SelectedSnake()) out.push_back(SelectedSnake());
+        if (out.empty()) throw SnakeError("Geometric snake: there is no snake to export.");
+        if (path.empty()) throw SnakeError("Geometric snake: no file name given.");
+        IO::WriteCurves(path, out);
+    }
+
+    /// The whole session: energy settings, parameters, seeds, snakes with pins.
+    json ToJson()
+    {
+        json j;
+        j["format"] = FormatName();
+        j["version"] = FormatVersion();
+        j["mesh"] = {{"vertices", int(mesh.vert.size())}, {"faces", int(mesh.face.size())}};
+        j["energy"] = {{"type", int(energyType)}, {"smoothing", energySmoothing}};
+        j["params"] = IO::ParamsJson(params);
+        j["seed_cost"] = int(seedCost);
+        j["selected"] = selected;
+        j["seeds"] = seeds;
+        j["snakes"] = json::array();
+        for (auto &s : snakes) j["snakes"].push_back(IO::ToJson(*s));
+        return j;
+    }
+
+    /// Restores a session saved by ToJson on this mesh. All or nothing: on error (other
+    /// mesh, broken file) the controller is unchanged and a SnakeError says why.
+    void FromJson(const json &j)
+    {
+        try {
+            if (!j.is_object() || j.value("format", std::string()) != FormatName())
+                throw SnakeError("Geometric snake: not a snake session file.");
+            if (j.value("version", 0) > FormatVersion())
+                throw SnakeError("Geometric snake: the session file is from a newer version.");
+            const json &jm = j.at("mesh");
+            if (jm.at("vertices").get<int>() != int(mesh.vert.size()) || jm.at("faces").get<int>() != int(mesh.face.size()))
+                throw SnakeError("Geometric snake: the session was saved on another mesh (" +
+                                 std::to_string(jm.at("vertices").get<int>()) + " vertices, " +
+                                 std::to_string(jm.at("faces").get<int>()) + " faces; this mesh has " +
+                                 std::to_string(mesh.vert.size()) + " and " + std::to_string(mesh.face.size()) + ").");
+            SnakeParams np = j.contains("params") ? IO::ParamsFromJson(j["params"]) : SnakeParams();
+            FeatureEnergyType et = FeatureEnergyType(j.at("energy").value("type", 0));
+            int es = j.at("energy").value("smoothing", 2);
+            if (int(et) < 0 || int(et) > 2 || es < 0 || es > 1000)
+                throw SnakeError("Geometric snake: bad energy settings in the session file.");
+            int sc = j.value("seed_cost", 0);
+            if (sc < 0 || sc > 1) throw SnakeError("Geometric snake: bad seed cost in the session file.");
+            std::vector<int> ns = j.value("seeds", std::vector<int>());
+            for (int v : ns) checkVertex(v);
+
+            if (!energyComputed || et != energyType || es != energySmoothing) ComputeEnergy(et, es);
+            EnsureSurface();
+            checkMesh();
+            std::vector<std::unique_ptr<Snake>> nsn;
+            for (const json &js : j.at("snakes")) {
+                SnakeParams sp = js.contains("params") ? IO::ParamsFromJson(js["params"], np) : np;
+                std::unique_ptr<Snake> s(new Snake(surface, sp));
+                s->InitFromSamples(IO::SamplesFromJson(mesh, js.at("samples")), js.value("closed", false));
+                nsn.push_back(std::move(s));
+            }
+            int nsel = j.value("selected", nsn.empty() ? -1 : 0);
+            if (nsel < -1 || nsel >= int(nsn.size())) nsel = nsn.empty() ? -1 : 0;
+            if (nsel < 0 && !nsn.empty()) nsel = 0;
+
+            snakes = std::move(nsn);
+            selected = nsel;
+            params = np;
+            seeds = ns;
+            seedCost = SeedPathCost(sc);
+            touch("load");
+        } catch (const json::exception &e) {
+            throw SnakeError(std::string("Geometric snake: broken session file (") + e.what() + ").");
+        }
+    }
+
+    /// The sidecar file of a mesh: "<mesh file>.snakes.json".
+    static std::string SidecarPath(const std::string &meshPath)
+    {
+        if (meshPath.empty()) return std::string();
+        return meshPath + ".snakes.json";
+    }
+
+    /// Writes the session atomically (temporary file, then rename): a crash never leaves
+    /// a half-written session behind.
+    void Save(const std::string &path)
+    {
+        if (path.empty()) throw SnakeError("Geometric snake: no file name to save the session to.");
+        std::string tmp = path + ".tmp";
+        {
+            std::ofstream out(tmp);
+            if (!out) throw SnakeError("Geometric snake: cannot write \"" + tmp + "\".");
+            out << ToJson().dump(1) << "\n";
+            out.flush();
+            if (!out) throw SnakeError("Geometric snake: writing \"" + tmp + "\" failed.");
+        }
+        if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+            std::remove(tmp.c_str());
+            throw SnakeError("Geometric snake: cannot replace \"" + path + "\".");
+        }
+        savedRevision = revision;
+    }
+
+    /// Loads a session file; false if there is none, throws if it is unusable.
+    bool Load(const std::string &path)
+    {
+        std::ifstream in(path);
+        if (!in) return false;
+        json j;
+        try { j = json::parse(in); }
+        catch (const json::exception &e) {
+            throw SnakeError("Geometric snake: \"" + path + "\" is not valid JSON (" + e.what() + ").");
+        }
+        FromJson(j);
+        savedRevision = revision;
+        return true;
+    }
+
+    /// Autosave target (empty: none) and minimum interval between two autosaves.
+    void SetAutosave(const std::string &path, double minIntervalSeconds = 1.0)
+    {
+        autosavePath = path;
+        autosaveInterval = minIntervalSeconds;
+    }
+    const std::string &AutosavePath() const { return autosavePath; }
+    /// Saves if something changed since the last save and (unless forced) the interval
+    /// has passed. Returns true if it wrote. Throws SnakeError if writing fails.
+    bool Autosave(bool force = false)
+    {
+        if (autosavePath.empty() || revision == savedRevision) return false;
+        auto now = std::chrono::steady_clock::now();
+        if (!force && lastAutosave.time_since_epoch().count() != 0 &&
+            std::chrono::duration<double>(now - lastAutosave).count() < autosaveInterval)
+            return false;
+        lastAutosave = now;
+        Save(autosavePath);
+        return true;
+    }
+    bool Dirty() const { return revision != savedRevision; }
+
+    // ================================================================ status
+    /// Increases with every change (for redraws, autosave and auto-export).
+    long Revision() const { return revision; }
+    const std::string &LastOperation() const { return lastOp; }
+    double LastOperationMs() const { return lastOpMs; }
+
+private:
+    MeshType &mesh;
+    std::shared_ptr<Surface> surface;
+    std::vector<std::unique_ptr<Snake>> snakes;
+    int selected = -1;
+    std::vector<int> seeds;
+    SnakeParams params;
+    SeedPathCost seedCost = SeedPathCost::Length;
+    FeatureEnergyType energyType = FeatureEnergyType::NormalVariation;
+    int energySmoothing = 2;
+    bool energyComputed = false;
+    long revision = 0, savedRevision = 0;
+    std::string lastOp;
+    double lastOpMs = 0;
+    std::string autosavePath;
+    double autosaveInterval = 1.0;
+    std::chrono::steady_clock::time_point lastAutosave;
+
+    void touch(const char *op)
+    {
+        ++revision;
+        lastOp = op;
+    }
+    vcg::Point3d P(int v) const { return vcg::Point3d::Construct(mesh.vert[v].cP()); }
+    double vdist(int a, int b) const { return (P(a) - P(b)).Norm(); }
+    double meanEdgeNoSurface() const
+    {
+        if (surface) return surface->MeanEdge();
+        double h = MeshValidation<MeshType>::MeanEdgeLength(mesh);
+        return (h > 0 && std::isfinite(h)) ? h : 1.0;
+    }
+    void checkVertex(int v) const
+    {
+        if (v < 0 || v >= int(mesh.vert.size()) || mesh.vert[v].IsD())
+            throw SnakeError("Geometric snake: vertex " + std::to_string(v) + " is not on the mesh.");
+        vcg::Point3d p = P(v);
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throw SnakeError("Geometric snake: vertex " + std::to_string(v) + " has invalid coordinates.");
+    }
+    void checkSnake(int i) const
+    {
+        if (i < 0 || i >= int(snakes.size()))
+            throw SnakeError("Geometric snake: no snake " + std::to_string(i) + " (there are " +
+                             std::to_string(snakes.size()) + ").");
+    }
+    void checkSurfacePoint(const SurfacePoint &p) const
+    {
+        if (!p.IsValid() || p.face >= int(mesh.face.size()) || mesh.face[p.face].IsD())
+            throw SnakeError("Geometric snake: the point is not on the mesh.");
+        for (int k = 0; k < 3; ++k)
+            if (p.bary[k] < -0.01 || p.bary[k] > 1.01)
+                throw SnakeError("Geometric snake: the point is outside its triangle.");
+    }
+    void checkMesh() const
+    {
+        if (!MeshMatches())
+            throw SnakeError("Geometric snake: the mesh changed (vertices or faces were added or removed) since the "
+                             "snakes were built; restart the tool.");
+    }
+    Snake &sel()
+    {
+        Snake *s = SelectedSnake();
+        if (!s) throw SnakeError("Geometric snake: no snake selected (place seeds and close them first).");
+        return *s;
+    }
+    bool undoLeadsToEmpty()
+    {
+        // Probe without side effects is not possible through the engine API; an undo that
+        // would lead to the empty pre-creation state is reverted by Undo() itself.
+        return false;
+    }
+};
+
+} // namespace tri
+} // namespace vcg
+
+#endif
