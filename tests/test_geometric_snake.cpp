@@ -1,6 +1,7 @@
 // Unit and accuracy tests of the geometric snake engine (paper Sections 3-5).
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
 
 #include <snake_test_util.h>
@@ -375,3 +376,88 @@ INSTANTIATE_TEST_SUITE_P(Methods, CylinderRimAccuracy,
                                            AccuracyCase{SnakeMethod::LocalEmbedding, 3.0},
                                            AccuracyCase{SnakeMethod::Projection3D, 2.0},
                                            AccuracyCase{SnakeMethod::Projection3D, 3.0}));
+
+// ---------------------------------------------------------------- fandisk: a CAD mesh's sharp edges
+namespace {
+
+// The longest chain of sharp mesh edges (dihedral angle above 40 degrees) through vertices
+// of sharp-degree 2: a crease of the CAD model, exact because it is made of mesh edges.
+std::vector<int> LongestSharpChain(CMeshO &m)
+{
+    std::map<int, std::vector<int>> g;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            CFaceO *o = f.FFp(k);
+            if (o == &f || o < &f) continue;
+            if (vcg::AngleN(f.N(), o->N()) < vcg::math::ToRad(40.f)) continue;
+            int a = int(vcg::tri::Index(m, f.V(k))), b = int(vcg::tri::Index(m, f.V((k + 1) % 3)));
+            g[a].push_back(b);
+            g[b].push_back(a);
+        }
+    std::vector<int> best;
+    double bestLen = 0;
+    for (auto &kv : g) {
+        if (kv.second.size() == 2) continue; // start at chain ends and corners
+        for (int next : kv.second) {
+            std::vector<int> chain{kv.first, next};
+            while (g[chain.back()].size() == 2 && chain.size() < 2000) {
+                const auto &nb = g[chain.back()];
+                int n = nb[0] == chain[chain.size() - 2] ? nb[1] : nb[0];
+                if (n == chain.front()) break;
+                chain.push_back(n);
+            }
+            double len = 0;
+            for (size_t i = 1; i < chain.size(); ++i) len += (m.vert[chain[i]].P() - m.vert[chain[i - 1]].P()).Norm();
+            if (len > bestLen) { bestLen = len; best = chain; }
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+class FandiskAccuracy : public ::testing::TestWithParam<SnakeMethod> {};
+
+TEST_P(FandiskAccuracy, SnakeLandsOnSharpEdges)
+{
+    CMeshO m;
+    ASSERT_TRUE(gs_test::LoadMesh(m, std::string(GS_DATA_DIR) + "/fandisk.ply"));
+    EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
+    auto surf = std::make_shared<Surface>(m);
+    const double h = surf->MeanEdge();
+    std::vector<int> chain = LongestSharpChain(m);
+    ASSERT_GE(chain.size(), 10u);
+    std::vector<vcg::Point3d> crease;
+    for (int v : chain) crease.push_back(vcg::Point3d::Construct(m.vert[v].P()));
+    // seeds two edge lengths to the left of the crease, at 20 .. 80 % of its length
+    std::vector<vcg::Point3d> pts;
+    for (double f : {0.2, 0.4, 0.6, 0.8}) {
+        size_t i = size_t(f * (chain.size() - 1));
+        int a = chain[i], b = chain[i + 1];
+        CFaceO *left = nullptr;
+        for (vcg::face::VFIterator<CFaceO> vfi(&m.vert[a]); !vfi.End(); ++vfi)
+            if (vfi.F()->V((vfi.I() + 1) % 3) == &m.vert[b]) left = vfi.F();
+        ASSERT_NE(left, nullptr);
+        vcg::Point3d t = crease[i + 1] - crease[i], n = vcg::Point3d::Construct(left->N());
+        vcg::Point3d d = (n ^ t).Normalize();
+        pts.push_back((crease[i] + crease[i + 1]) / 2 + d * (2 * h));
+    }
+    Snake s(surf, [] { SnakeParams p; p.method = GetParam(); return p; }());
+    s.InitFromSeeds(gs_test::NearestVertices(m, pts), false);
+    auto dist = [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, crease); };
+    gs_test::CurveError e0 = gs_test::MeasureCurve(s.positions(), h, dist);
+    EXPECT_GT(e0.mean, 0.8);
+    s.Run(300);
+    gs_test::CurveError e = gs_test::MeasureCurve(s.positions(), h, dist);
+    EXPECT_LT(e.p95, 0.25) << "mean " << e.mean << " max " << e.max << " (started at " << e0.mean << ")";
+    EXPECT_LT(e.mean, 0.1);
+    RecordProperty("initial_mean", std::to_string(e0.mean));
+    RecordProperty("final_p95", std::to_string(e.p95));
+    std::printf("fandisk crease of %zu edges: mean distance %.2f -> %.3f h (p95 %.3f), %d samples, %d operations\n",
+                chain.size() - 1, e0.mean, e.mean, e.p95, s.SampleCount(), s.Stats().operations);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, FandiskAccuracy,
+                         ::testing::Values(SnakeMethod::LocalEmbedding, SnakeMethod::Projection3D));
