@@ -63,6 +63,10 @@ public:
             if (!s.FaceUsable(f)) continue;
             for (int k = 0; k < 3; ++k) {
                 VertexType *v = m.face[f].V(k);
+                int vi = s.Idx(v);
+                if (s.vertStamp[vi] == gen) continue; // star already taken
+                s.vertStamp[vi] = gen;
+                s.vertSlot[vi] = -1; // not yet a local vertex
                 for (vcg::face::VFIterator<FaceType> vfi(v); !vfi.End(); ++vfi) add(s, s.Idx(vfi.F()));
             }
             add(s, f);
@@ -110,7 +114,7 @@ public:
         for (int f : faces)
             for (int k = 0; k < 3; ++k) {
                 int v = s.Idx(m.face[f].V(k));
-                if (s.vertStamp[v] != gen) {
+                if (s.vertStamp[v] != gen || s.vertSlot[v] < 0) {
                     s.vertStamp[v] = gen;
                     s.vertSlot[v] = int(verts.size());
                     verts.push_back(v);
