@@ -21,7 +21,13 @@
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/seed_path.h>
+#include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake_io.h>
+#include <vcg_ext/snake_mesh_store.h>
+
+#include <QFileInfo>
+#include <fstream>
 
 using namespace vcg;
 
@@ -56,7 +62,7 @@ bool compactIfNeeded(CMeshO &m)
 
 FilterGeometricSnakePlugin::FilterGeometricSnakePlugin()
 {
-	typeList << FP_FEATURE_ENERGY << FP_SEED_PATH;
+	typeList << FP_FEATURE_ENERGY << FP_SEED_PATH << FP_SNAKE << FP_EXPORT;
 	for (FilterIDType tt : types())
 		actionList << new QAction(filterName(tt), this);
 }
@@ -71,6 +77,8 @@ QString FilterGeometricSnakePlugin::filterName(FilterIDType filterId) const
 	switch (filterId) {
 	case FP_FEATURE_ENERGY: return "Compute Geometric Snake Feature Energy";
 	case FP_SEED_PATH: return "Geometric Snake Seed Path";
+	case FP_SNAKE: return "Geometric Snake from Seed Vertices";
+	case FP_EXPORT: return "Export Geometric Snake Curves";
 	default: assert(0); return "";
 	}
 }
@@ -99,6 +107,29 @@ QString FilterGeometricSnakePlugin::filterInfo(FilterIDType filterId) const
 		       "are cheaper, so the path follows features; if the mesh has no vertex quality yet, "
 		       "the normal-variation energy is computed first." +
 		       paperReference();
+	case FP_SNAKE:
+		return "Runs a <b>geometric snake</b> from seed vertices until it has slithered onto a nearby "
+		       "feature curve (a crease, a rim, a sharp edge). The seeds (0-based vertex indices, in "
+		       "file order) are joined by shortest edge paths; samples are taken along that path and "
+		       "moved by the paper's method: each operation embeds the local region around the snake "
+		       "in the plane (convex combination with a virtual boundary) and solves the snake's "
+		       "equation of motion there (Eq. 4), up to 5 times, then maps back onto the surface. "
+		       "The alternative method updates in 3D and projects onto the surface after every step.<br>"
+		       "The feature energy is the vertex quality if <i>Use vertex quality</i> is on (any "
+		       "quality field works: low = feature), else the normal-variation energy is computed "
+		       "and stored in the vertex quality.<br>"
+		       "The curve can be written to a file (.json with samples, curve and timings; .obj; "
+		       ".ply) and added as a layer of edges. It is also kept on the mesh, so the Geometric "
+		       "Snake edit tool shows it and <i>Export Geometric Snake Curves</i> can write it." +
+		       paperReference();
+	case FP_EXPORT:
+		return "Writes the geometric snakes kept on the current mesh (made with the Geometric Snake "
+		       "edit tool or the <i>Geometric Snake from Seed Vertices</i> filter) to a file: "
+		       "<b>.json</b> (surface points with face and barycentric coordinates, and the curve), "
+		       "<b>.obj</b> (<code>l</code> records) or <b>.ply</b> (vertices and edges), chosen by "
+		       "the extension. If the mesh holds no snakes, the edit tool's sidecar file next to the "
+		       "mesh (<code>&lt;mesh&gt;.snakes.json</code>) is read instead." +
+		       paperReference();
 	default: assert(0); return "";
 	}
 }
@@ -108,6 +139,8 @@ MeshFilterInterface::FilterClass FilterGeometricSnakePlugin::getClass(QAction *a
 	switch (ID(a)) {
 	case FP_FEATURE_ENERGY: return FilterClass(MeshFilterInterface::Quality | MeshFilterInterface::VertexColoring);
 	case FP_SEED_PATH: return MeshFilterInterface::Selection;
+	case FP_SNAKE: return MeshFilterInterface::Quality;
+	case FP_EXPORT: return MeshFilterInterface::Layer; // Generic has no menu: MeshLab refuses it
 	default: return MeshFilterInterface::Generic;
 	}
 }
@@ -135,6 +168,8 @@ int FilterGeometricSnakePlugin::postCondition(QAction *a) const
 	switch (ID(a)) {
 	case FP_FEATURE_ENERGY: return MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
 	case FP_SEED_PATH: return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
+	case FP_SNAKE: return MeshModel::MM_VERTQUALITY;
+	case FP_EXPORT: return MeshModel::MM_NONE;
 	default: return MeshModel::MM_ALL;
 	}
 }
@@ -172,6 +207,51 @@ void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/,
 		    "Also add the path as a new layer named \"Seed path\" made of its vertices and edges. "
 		    "The current layer stays the input mesh."));
 		break;
+	case FP_SNAKE: {
+		const vcg::tri::SnakeParams d;
+		par.addParam(RichString("Seeds", "", "Seed vertices",
+		    "Comma-separated 0-based vertex indices, in file order, near the feature to capture, in "
+		    "the order the curve visits them (at least 2; 3 for a closed snake)."));
+		par.addParam(RichBool("Closed", false, "Closed snake", "Join the last seed back to the first: a closed curve."));
+		par.addParam(RichFloat("Alpha", float(d.alpha), "Alpha (tension)",
+		    "Weight of the first-derivative (tension) term of the spline energy, Eq. 2. Scale-free "
+		    "(positions are measured in mean edge lengths). Range [0, 10000]."));
+		par.addParam(RichFloat("Beta", float(d.beta), "Beta (rigidity)",
+		    "Weight of the second-derivative (rigidity) term of the spline energy, Eq. 2: larger "
+		    "gives smoother curves. Range [0, 10000]."));
+		par.addParam(RichFloat("Gamma", float(d.gamma), "Gamma (inverse step)",
+		    "Inverse time step of the update, Eq. 4: larger moves the snake in smaller, steadier "
+		    "steps. Range (0, 1e6]."));
+		par.addParam(RichFloat("ExternalWeight", float(d.externalWeight), "External weight",
+		    "Weight of the feature force (the gradient of the energy, which lies in [0,1]) against "
+		    "the spline energy. Range [0, 10000]."));
+		par.addParam(RichFloat("Spacing", float(d.spacing), "Sample spacing",
+		    "Distance between snake samples, in mean edge lengths of the mesh. Range [0.05, 1000]."));
+		par.addParam(RichInt("MaxOperations", 500, "Max operations",
+		    "Upper limit on snake operations (one embedding + up to 5 updates each); the snake "
+		    "usually converges much earlier. Range [0, 1000000]."));
+		par.addParam(RichEnum("Method", 0, QStringList() << "Local embedding (paper)" << "3D update + projection",
+		    "Method", "<b>Local embedding</b>: the paper's method, updates in the plane of a local "
+		    "parameterization. <b>3D update + projection</b>: the naive alternative of Sec. 4.2, for "
+		    "comparison."));
+		par.addParam(RichBool("UseQuality", false, "Use vertex quality",
+		    "Take the feature energy from the current vertex quality (low = feature; any range, it "
+		    "is normalized) instead of computing the normal-variation energy."));
+		par.addParam(RichString("OutputFile", "", "Output file",
+		    "Where to write the final curve; the extension chooses the format: .json (samples, "
+		    "initial and final curve, timings), .obj (l records) or .ply (edges). Empty: no file."));
+		par.addParam(RichBool("NewLayer", true, "Add curve as new layer",
+		    "Also add the final curve as a new layer made of vertices and edges."));
+		break;
+	}
+	case FP_EXPORT:
+		par.addParam(RichString("OutputFile", "", "Output file",
+		    "File to write: .json, .obj or .ply (by extension)."));
+		par.addParam(RichEnum("Which", 0, QStringList() << "All snakes" << "Selected snake", "Which snakes",
+		    "All the snakes kept on the mesh, or only the one selected in the edit tool."));
+		par.addParam(RichBool("NewLayer", false, "Add curves as new layer",
+		    "Also add the curves as a new layer made of vertices and edges."));
+		break;
 	default: break;
 	}
 }
@@ -184,7 +264,7 @@ bool FilterGeometricSnakePlugin::fail(const QString &msg)
 }
 
 bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, const RichParameterList &par,
-                                             vcg::CallBackPos * /*cb*/)
+                                             vcg::CallBackPos *cb)
 {
 	errorMessage.clear();
 	if (md.mm() == nullptr)
@@ -193,6 +273,8 @@ bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, 
 		switch (ID(filter)) {
 		case FP_FEATURE_ENERGY: return applyFeatureEnergy(md, par);
 		case FP_SEED_PATH: return applySeedPath(md, par);
+		case FP_SNAKE: return applySnake(md, par, cb);
+		case FP_EXPORT: return applyExport(md, par);
 		default: return fail("Unknown filter.");
 		}
 	} catch (const vcg::tri::SnakeError &e) {
@@ -268,7 +350,7 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 			return fail(QString("Seed vertex %1 does not exist: the mesh has %2 vertices (valid indices 0..%3).")
 			                .arg(s).arg(m.cm.vn).arg(m.cm.vn - 1));
 
-	m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
+	// SeedPath builds its own vertex adjacency: no optional component is needed.
 
 	if (cost == int(tri::SeedPathCost::Feature)) {
 		if (!m.hasDataMask(MeshModel::MM_VERTQUALITY)) {
@@ -324,6 +406,187 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 	Log("Seed path (%s, %s cost) through %d seeds: %d vertices selected, length %g.",
 	    path.closed ? "closed" : "open", cost == 0 ? "length" : "feature", int(seeds.size()),
 	    int(path.vertices.size()), path.length);
+	return true;
+}
+
+void FilterGeometricSnakePlugin::addCurveLayer(MeshDocument &md, const MeshModel &src, const QString &name,
+                                               const std::vector<std::vector<vcg::Point3d>> &curves,
+                                               const std::vector<bool> &closed)
+{
+	MeshModel *pl = md.addNewMesh("", name, false);
+	CMeshO &pm = pl->cm;
+	int nv = 0, ne = 0;
+	for (size_t c = 0; c < curves.size(); ++c) {
+		const auto &pts = curves[c];
+		if (pts.size() < 2) continue;
+		const int base = int(pm.vert.size());
+		auto vi = tri::Allocator<CMeshO>::AddVertices(pm, pts.size());
+		for (const auto &p : pts) (vi++)->P() = Point3m::Construct(p);
+		const int n = int(pts.size()), m = (closed[c] && n >= 3) ? n : n - 1;
+		auto ei = tri::Allocator<CMeshO>::AddEdges(pm, m);
+		for (int i = 0; i < m; ++i, ++ei) {
+			ei->V(0) = &pm.vert[base + i];
+			ei->V(1) = &pm.vert[base + (i + 1) % n];
+		}
+		nv += n;
+		ne += m;
+	}
+	pm.Tr = src.cm.Tr;
+	tri::UpdateBounding<CMeshO>::Box(pm);
+	Log("Added layer \"%s\": %d vertices, %d edges.", qUtf8Printable(pl->label()), nv, ne);
+}
+
+bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb)
+{
+	typedef tri::SnakeController<CMeshO> Controller;
+	MeshModel &m = *md.mm();
+	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(par.getString("Seeds").toStdString());
+	const bool closed = par.getBool("Closed");
+	tri::SnakeParams p;
+	p.alpha = par.getFloat("Alpha");
+	p.beta = par.getFloat("Beta");
+	p.gamma = par.getFloat("Gamma");
+	p.externalWeight = par.getFloat("ExternalWeight");
+	p.spacing = par.getFloat("Spacing");
+	const int method = par.getEnum("Method");
+	if (method < 0 || method > 1)
+		return fail(QString("Method must be 0 (local embedding) or 1 (3D update + projection), not %1.").arg(method));
+	p.method = tri::SnakeMethod(method);
+	p.Validate();
+	const int maxOps = par.getInt("MaxOperations");
+	if (maxOps < 0 || maxOps > 1000000)
+		return fail(QString("MaxOperations must be between 0 and 1000000, not %1.").arg(maxOps));
+	const bool useQuality = par.getBool("UseQuality");
+	const std::string out = par.getString("OutputFile").trimmed().toStdString();
+
+	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	if (compactIfNeeded(m.cm))
+		Log("Compacted the mesh (it had deleted elements); vertex indices refer to the compacted order.");
+	for (int s : seeds)
+		if (s < 0 || s >= m.cm.vn)
+			return fail(QString("Seed vertex %1 does not exist: the mesh has %2 vertices (valid indices 0..%3).")
+			                .arg(s).arg(m.cm.vn).arg(m.cm.vn - 1));
+	if (useQuality && !m.hasDataMask(MeshModel::MM_VERTQUALITY))
+		return fail("UseQuality is on, but the mesh has no vertex quality. Compute one first (e.g. \"Compute "
+		            "Geometric Snake Feature Energy\" or any quality filter), or turn UseQuality off.");
+	m.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
+
+	QElapsedTimer timer;
+	timer.start();
+	Controller ctl(m.cm);
+	if (useQuality) ctl.UseQualityAsEnergy();
+	ctl.SetParams(p);
+	ctl.SetSeeds(seeds);
+	ctl.CloseSeeds(closed);
+	for (const auto &w : ctl.EnsureSurface().Warnings()) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
+	tri::GeometricSnake<CMeshO> &snake = ctl.Get(0);
+	snake.Run(maxOps, [&](int op) {
+		if (cb != nullptr && maxOps > 0) cb(std::min(99, 100 * (op + 1) / maxOps), "Geometric snake...");
+		return true;
+	});
+	const tri::SnakeStats &st = snake.Stats();
+	std::vector<vcg::Point3d> curve = snake.PolylinePositions();
+	for (const auto &x : curve)
+		if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+			return fail("The snake produced invalid coordinates (please report this with the mesh).");
+
+	if (!out.empty()) {
+		std::vector<tri::GeometricSnake<CMeshO> *> list{&snake};
+		tri::SnakeIO<CMeshO>::WriteCurves(out, list);
+		Log("Wrote the curve to %s.", out.c_str());
+	}
+	if (par.getBool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {curve}, {closed});
+
+	// Keep the snake on the mesh with any the user already has there: curves are never lost.
+	nlohmann::json session = ctl.ToJson();
+	const std::string stored = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+	if (!stored.empty()) {
+		try {
+			nlohmann::json old = nlohmann::json::parse(stored);
+			if (old.value("format", std::string()) == Controller::FormatName() && old.contains("snakes") &&
+			    old["mesh"] == session["mesh"]) {
+				for (const auto &sn : session["snakes"]) old["snakes"].push_back(sn);
+				old["selected"] = int(old["snakes"].size()) - 1;
+				session = old;
+			}
+		} catch (const std::exception &) {
+			Log(GLLogStream::WARNING, "Geometric snake: the snakes stored on the mesh were unreadable and were replaced.");
+		}
+	}
+	tri::SnakeMeshStore<CMeshO>::Set(m.cm, session.dump());
+
+	double len = 0;
+	for (size_t i = 1; i < curve.size(); ++i) len += (curve[i] - curve[i - 1]).Norm();
+	Log("Geometric snake (%s, %s): %d samples, %d operations, %s, curve of %d points and length %g.",
+	    closed ? "closed" : "open", method == 0 ? "local embedding" : "3D update + projection", snake.SampleCount(),
+	    st.operations, st.converged ? "converged" : "NOT converged (raise MaxOperations?)", int(curve.size()), len);
+	Log("Geometric snake timing: %.1f ms total, median %.3f ms per operation, %.3f ms per embedding, %.4f ms per "
+	    "update (%d embeddings, %d updates).", timer.nsecsElapsed() * 1e-6,
+	    tri::SnakeStats::Median(st.msOperation), tri::SnakeStats::Median(st.msEmbedding),
+	    tri::SnakeStats::Median(st.msUpdate), st.embeddings, st.updates);
+	for (const auto &w : st.warnings) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
+	return true;
+}
+
+bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParameterList &par)
+{
+	MeshModel &m = *md.mm();
+	const std::string out = par.getString("OutputFile").trimmed().toStdString();
+	if (out.empty()) return fail("OutputFile is empty: give a .json, .obj or .ply file name.");
+	const bool all = par.getEnum("Which") == 0;
+
+	std::string session = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+	QString source = "the mesh";
+	if (session.empty() && !m.fullName().isEmpty()) {
+		const std::string side =
+		    tri::SnakeController<CMeshO>::SidecarPath(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
+		std::ifstream in(side);
+		if (in) {
+			session.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+			source = QString::fromStdString(side);
+		}
+	}
+	if (session.empty())
+		return fail("This mesh holds no geometric snakes (make some with the Geometric Snake edit tool or the "
+		            "\"Geometric Snake from Seed Vertices\" filter).");
+	nlohmann::json j;
+	try {
+		j = nlohmann::json::parse(session);
+	} catch (const std::exception &e) {
+		return fail(QString("The stored snakes are unreadable (%1).").arg(e.what()));
+	}
+	if (!j.contains("snakes") || !j["snakes"].is_array() || j["snakes"].empty())
+		return fail("This mesh holds no geometric snakes.");
+
+	// Rebuild the snakes on the mesh (the curve is traced again from the samples); the
+	// energy is not needed for that, so the mesh is left untouched.
+	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	const auto &jm = j["mesh"];
+	if (jm.value("vertices", -1) != int(m.cm.vert.size()) || jm.value("faces", -1) != int(m.cm.face.size()))
+		return fail("The stored snakes were made on another version of this mesh (its vertex or face count "
+		            "changed); they cannot be placed on it.");
+	m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
+	auto surf = std::make_shared<tri::SnakeSurface<CMeshO>>(m.cm, 0);
+	std::vector<std::unique_ptr<tri::GeometricSnake<CMeshO>>> snakes;
+	const int selected = j.value("selected", 0);
+	for (int i = 0; i < int(j["snakes"].size()); ++i) {
+		if (!all && i != selected) continue;
+		std::unique_ptr<tri::GeometricSnake<CMeshO>> s(new tri::GeometricSnake<CMeshO>(surf));
+		tri::SnakeIO<CMeshO>::FromJson(*s, j["snakes"][i]);
+		snakes.push_back(std::move(s));
+	}
+	if (snakes.empty()) return fail("No snake is selected.");
+	std::vector<tri::GeometricSnake<CMeshO> *> list;
+	std::vector<std::vector<vcg::Point3d>> curves;
+	std::vector<bool> closed;
+	for (auto &s : snakes) {
+		list.push_back(s.get());
+		curves.push_back(s->PolylinePositions());
+		closed.push_back(s->Closed());
+	}
+	tri::SnakeIO<CMeshO>::WriteCurves(out, list);
+	if (par.getBool("NewLayer")) addCurveLayer(md, m, "Geometric snake curves", curves, closed);
+	Log("Exported %d geometric snake(s) from %s to %s.", int(list.size()), qUtf8Printable(source), out.c_str());
 	return true;
 }
 

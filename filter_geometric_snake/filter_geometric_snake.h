@@ -21,11 +21,12 @@ class FilterGeometricSnakePlugin : public QObject, public MeshFilterInterface
 
 public:
 	// Keep the numbering append-only: .mlx scripts refer to filters by name, but the
-	// ids are used internally in switches. Room is left for the snake filters
-	// ("Geometric Snake from Seed Vertices", "Export Geometric Snake Curves").
+	// ids are used internally in switches.
 	enum {
 		FP_FEATURE_ENERGY = 0,
-		FP_SEED_PATH = 1
+		FP_SEED_PATH = 1,
+		FP_SNAKE = 2,
+		FP_EXPORT = 3
 	};
 
 	// Parameter limits shared by the GUI dialog and the scripted path.
@@ -47,6 +48,11 @@ public:
 private:
 	bool applyFeatureEnergy(MeshDocument &md, const RichParameterList &par);
 	bool applySeedPath(MeshDocument &md, const RichParameterList &par);
+	bool applySnake(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb);
+	bool applyExport(MeshDocument &md, const RichParameterList &par);
+	/// Adds a layer made of the curves' polylines as vertices and edges.
+	void addCurveLayer(MeshDocument &md, const MeshModel &src, const QString &name,
+	                   const std::vector<std::vector<vcg::Point3d>> &curves, const std::vector<bool> &closed);
 
 	/// Sets errorMessage and mirrors it in the Log (meshlabserver prints the Log but
 	/// not errorMessage). Always returns false, for `return fail(...)`.

@@ -128,7 +128,6 @@ public:
         }
         adj.assign(faces.size(), {-1, -1, -1});
         for (size_t t = 0; t < faces.size(); ++t) {
-            FaceType &f = m.face[faces[t]];
             for (int k = 0; k < 3; ++k) {
                 int g = neighbour(s, faces[t], k);
                 if (g >= 0) adj[t][k] = s.faceSlot[g];

@@ -59,6 +59,7 @@ public:
         if (int(type) < 0 || int(type) > 2) throw SnakeError("Geometric snake: unknown energy type.");
         if (smoothing < 0 || smoothing > 1000) throw SnakeError("Geometric snake: energy smoothing must be in [0, 1000].");
         FeatureEnergy<MeshType>::Compute(mesh, type, smoothing);
+        energyFromQuality = false;
         energyType = type;
         energySmoothing = smoothing;
         energyComputed = true;
@@ -68,6 +69,19 @@ public:
         }
         touch("energy");
     }
+    /// Any quality field can drive a snake: take the current vertex quality as the energy
+    /// (low = feature) instead of computing one. Saved sessions remember it.
+    void UseQualityAsEnergy()
+    {
+        energyFromQuality = true;
+        energyComputed = true;
+        if (surface) {
+            surface->SetEnergyFromQuality();
+            for (auto &s : snakes) s->EnergyChanged();
+        }
+        touch("energy");
+    }
+    bool EnergyFromQuality() const { return energyFromQuality; }
     bool EnergyComputed() const { return energyComputed; }
     FeatureEnergyType EnergyType() const { return energyType; }
     int EnergySmoothing() const { return energySmoothing; }
@@ -371,7 +385,7 @@ public:
         touch("delete sample");
     }
 
-    bool CanUndo() { return SelectedSnake() && SelectedSnake()->CanUndo() && !undoLeadsToEmpty(); }
+    bool CanUndo() { return SelectedSnake() && SelectedSnake()->CanUndo(); }
     bool CanRedo() { return SelectedSnake() && SelectedSnake()->CanRedo(); }
     bool Undo()
     {
@@ -428,7 +442,7 @@ public:
         j["format"] = FormatName();
         j["version"] = FormatVersion();
         j["mesh"] = {{"vertices", int(mesh.vert.size())}, {"faces", int(mesh.face.size())}};
-        j["energy"] = {{"type", int(energyType)}, {"smoothing", energySmoothing}};
+        j["energy"] = {{"type", energyFromQuality ? -1 : int(energyType)}, {"smoothing", energySmoothing}};
         j["params"] = IO::ParamsJson(params);
         j["seed_cost"] = int(seedCost);
         j["selected"] = selected;
@@ -454,16 +468,21 @@ public:
                                  std::to_string(jm.at("faces").get<int>()) + " faces; this mesh has " +
                                  std::to_string(mesh.vert.size()) + " and " + std::to_string(mesh.face.size()) + ").");
             SnakeParams np = j.contains("params") ? IO::ParamsFromJson(j["params"]) : SnakeParams();
-            FeatureEnergyType et = FeatureEnergyType(j.at("energy").value("type", 0));
+            const int etype = j.at("energy").value("type", 0); // -1: the vertex quality as it is
+            FeatureEnergyType et = FeatureEnergyType(std::max(0, etype));
             int es = j.at("energy").value("smoothing", 2);
-            if (int(et) < 0 || int(et) > 2 || es < 0 || es > 1000)
+            if (etype < -1 || etype > 2 || es < 0 || es > 1000)
                 throw SnakeError("Geometric snake: bad energy settings in the session file.");
             int sc = j.value("seed_cost", 0);
             if (sc < 0 || sc > 1) throw SnakeError("Geometric snake: bad seed cost in the session file.");
             std::vector<int> ns = j.value("seeds", std::vector<int>());
             for (int v : ns) checkVertex(v);
 
-            if (!energyComputed || et != energyType || es != energySmoothing) ComputeEnergy(et, es);
+            if (etype == -1) {
+                if (!energyFromQuality) UseQualityAsEnergy();
+            } else if (!energyComputed || energyFromQuality || et != energyType || es != energySmoothing) {
+                ComputeEnergy(et, es);
+            }
             EnsureSurface();
             checkMesh();
             std::vector<std::unique_ptr<Snake>> nsn;
@@ -569,6 +588,7 @@ private:
     FeatureEnergyType energyType = FeatureEnergyType::NormalVariation;
     int energySmoothing = 2;
     bool energyComputed = false;
+    bool energyFromQuality = false;
     long revision = 0, savedRevision = 0;
     std::string lastOp;
     double lastOpMs = 0;
@@ -622,12 +642,6 @@ private:
         Snake *s = SelectedSnake();
         if (!s) throw SnakeError("Geometric snake: no snake selected (place seeds and close them first).");
         return *s;
-    }
-    bool undoLeadsToEmpty()
-    {
-        // Probe without side effects is not possible through the engine API; an undo that
-        // would lead to the empty pre-creation state is reverted by Undo() itself.
-        return false;
     }
 };
 

@@ -21,13 +21,17 @@ from xml.sax.saxutils import quoteattr
 
 FILTER_ENERGY = "Compute Geometric Snake Feature Energy"
 FILTER_SEED_PATH = "Geometric Snake Seed Path"
+FILTER_SNAKE = "Geometric Snake from Seed Vertices"
+FILTER_EXPORT = "Export Geometric Snake Curves"
 SELECTED = 0x0020  # vcg vertex BitFlags::SELECTED, saved as the PLY "flags" property
 
 # ---------------------------------------------------------------------------- .mlx
-STRINGS = {"Seeds"}
+STRINGS = {"Seeds", "OutputFile"}
 ENUMS = {
     "EnergyType": ["Normal variation", "Curvature norm", "Quadric error"],
     "Cost": ["Length", "Feature"],
+    "Method": ["Local embedding (paper)", "3D update + projection"],
+    "Which": ["All snakes", "Selected snake"],
 }
 
 

@@ -18,7 +18,8 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mlhost  # noqa: E402
-from mlhost import FILTER_ENERGY, FILTER_SEED_PATH, SELECTED  # noqa: E402
+from mlhost import FILTER_ENERGY, FILTER_EXPORT, FILTER_SEED_PATH, FILTER_SNAKE, SELECTED  # noqa: E402
+import json  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.environ.get("GS_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
@@ -91,11 +92,12 @@ class HostTests(unittest.TestCase):
         self.assertEqual(rc, 0, out)
         with open(dump, encoding="utf-8", errors="replace") as f:
             text = f.read()
-        for name in (FILTER_ENERGY, FILTER_SEED_PATH):
+        for name in (FILTER_ENERGY, FILTER_SEED_PATH, FILTER_SNAKE, FILTER_EXPORT):
             self.assertIn("\\section", text)
             self.assertRegex(text, r"\\section f\d+ " + re.escape(name), "filter %r not loaded by MeshLab" % name)
         for label in ("Energy type", "Smoothing steps", "Colorize by energy", "Seed vertices", "Closed path",
-                      "Path cost", "Add path as new layer"):
+                      "Path cost", "Add path as new layer", "Alpha (tension)", "Max operations", "Use vertex quality",
+                      "Output file", "Which snakes"):
             self.assertIn(label, text)
 
     def test_energy_cube(self):
@@ -251,6 +253,120 @@ class HostTests(unittest.TestCase):
         mlhost.write_ply(bad, verts, self.cube_faces, binary=True)
         self.assert_filter_error(bad, [(FILTER_ENERGY, self.energy_params())], "NaN")
         self.assert_filter_error(bad, [(FILTER_SEED_PATH, self.seed_params("0,1"))], "NaN")
+
+    # ------------------------------------------------------------------ the snake filters
+    def snake_params(self, seeds, closed=False, method=0, out="", new_layer=True, use_quality=False, **kw):
+        p = {"Seeds": seeds, "Closed": closed, "Alpha": 0.05, "Beta": 0.5, "Gamma": 1.0, "ExternalWeight": 1.0,
+             "Spacing": 1.0, "MaxOperations": 500, "Method": method, "UseQuality": use_quality,
+             "OutputFile": out, "NewLayer": new_layer}
+        p.update(kw)
+        return p
+
+    def icocube_seeds(self, offset):
+        """Vertices of data/icocube.ply `offset` mean edge lengths off the cube edge x = y = 1,
+        on the face x = 1 (the mesh is a rotated icosphere projected onto [-1,1]^3)."""
+        ply = mlhost.read_ply(os.path.join(DATA, "icocube.ply"))
+        pts = [(v["x"], v["y"], v["z"]) for v in ply.vertices]
+        edges = []
+        for f in ply.faces:
+            idx = next(iter(f.values()))  # the vertex index list, whatever its name
+            for i in range(3):
+                a, b = pts[idx[i]], pts[idx[(i + 1) % 3]]
+                edges.append(math.dist(a, b))
+        h = sum(edges) / len(edges)
+        seeds = []
+        for z in (-0.6, -0.2, 0.2, 0.6):
+            target = (1.0, 1.0 - offset * h, z)
+            seeds.append(min(range(len(pts)), key=lambda i: math.dist(pts[i], target)))
+        return seeds, h
+
+    @staticmethod
+    def dist_to_edge(p):
+        return math.hypot(1.0 - p[0], 1.0 - p[1])  # the cube edge x = y = 1
+
+    def test_snake_converges_onto_cube_edge_json(self):
+        """The batch filter through meshlabserver: the snake started 2.5 edge lengths off the
+        edge ends on it; the JSON output follows the documented contract."""
+        seeds, h = self.icocube_seeds(2.5)
+        out_json = self.path("snake.json")
+        rc, out = self.run_script(os.path.join(DATA, "icocube.ply"),
+                                  [(FILTER_SNAKE, self.snake_params(",".join(map(str, seeds)), out=out_json))],
+                                  outputs=[["-o", self.path("out.ply"), "-m", "vq"]])
+        self.assertRegex(out, r"Geometric snake \(open, local embedding\): \d+ samples, \d+ operations, converged")
+        with open(out_json) as f:
+            j = json.load(f)
+        for key in ("closed", "initial", "samples", "polyline", "stats"):
+            self.assertIn(key, j)
+        self.assertFalse(j["closed"])
+        for key in ("operations", "updates", "embeddings", "converged", "seconds_total", "ms_per_embedding",
+                    "ms_per_update", "ms_per_operation"):
+            self.assertIn(key, j["stats"])
+        self.assertTrue(j["stats"]["converged"])
+        self.assertGreater(j["stats"]["embeddings"], 0)
+        for s in j["samples"]:
+            self.assertEqual(set(s), {"face", "bary", "position", "fixed"})
+            self.assertAlmostEqual(sum(s["bary"]), 1.0, places=6)
+        initial = [self.dist_to_edge(s["position"]) / h for s in j["initial"]["samples"]]
+        final = sorted(self.dist_to_edge(s["position"]) / h for s in j["samples"])
+        self.assertGreater(sum(initial) / len(initial), 1.5)
+        # the mesh cuts the exact edge like a chamfer up to ~0.45 h deep: nothing on it is closer
+        self.assertLess(final[int(0.95 * (len(final) - 1))], 0.6, final)
+        self.assertGreater(len(j["polyline"]), len(j["samples"]))  # edge crossings included
+        for p in j["polyline"]:
+            self.assertTrue(all(math.isfinite(c) for c in p))
+
+    def test_snake_projection_method_obj_and_export_filter(self):
+        """Method 1 writes an OBJ with l records; the snake is kept on the mesh, and the export
+        filter writes it again (PLY with an edge element) in the same script."""
+        seeds, h = self.icocube_seeds(2.0)
+        out_obj, out_ply = self.path("snake.obj"), self.path("curves.ply")
+        rc, out = self.run_script(os.path.join(DATA, "icocube.ply"),
+                                  [(FILTER_SNAKE, self.snake_params(",".join(map(str, seeds)), method=1, out=out_obj,
+                                                                    new_layer=False)),
+                                   (FILTER_EXPORT, {"OutputFile": out_ply, "Which": 0, "NewLayer": True})],
+                                  outputs=[["-o", self.path("out.ply")]])
+        self.assertIn("3D update + projection", out)
+        with open(out_obj) as f:
+            lines = f.read().splitlines()
+        verts = [l for l in lines if l.startswith("v ")]
+        lrec = [l for l in lines if l.startswith("l ")]
+        self.assertEqual(len(lrec), 1)
+        self.assertEqual(len(lrec[0].split()) - 1, len(verts))
+        self.assertRegex(out, r"Exported 1 geometric snake\(s\) from the mesh")
+        with open(out_ply) as f:
+            head = f.read()
+        self.assertRegex(head, r"element edge \d+")
+        nv = int(re.search(r"element vertex (\d+)", head).group(1))
+        ne = int(re.search(r"element edge (\d+)", head).group(1))
+        self.assertEqual(ne, nv - 1)
+
+    def test_snake_errors(self):
+        seeds, _ = self.icocube_seeds(2.0)
+        ok = ",".join(map(str, seeds))
+        ico = os.path.join(DATA, "icocube.ply")
+        self.assert_filter_error(ico, [(FILTER_SNAKE, self.snake_params(ok, Gamma=0.0))], "Gamma")
+        self.assert_filter_error(ico, [(FILTER_SNAKE, self.snake_params(ok, Spacing=1e-6))], "Spacing")
+        self.assert_filter_error(ico, [(FILTER_SNAKE, self.snake_params(ok, MaxOperations=-5))], "MaxOperations")
+        self.assert_filter_error(ico, [(FILTER_SNAKE, self.snake_params("1, 999999"))], "does not exist")
+        self.assert_filter_error(ico, [(FILTER_SNAKE, self.snake_params(ok, closed=True, out=self.path("x.txt")))],
+                                 "format")
+        # the icocube file has no quality: UseQuality must say so, not run on garbage
+        self.assert_filter_error(ico, [(FILTER_SNAKE, self.snake_params(ok, use_quality=True))], "no vertex quality")
+        self.assert_filter_error(ico, [(FILTER_EXPORT, {"OutputFile": self.path("e.json"), "Which": 0,
+                                                        "NewLayer": False})], "holds no geometric snakes")
+
+    def test_snake_on_quality_field(self):
+        """Any quality MeshLab can compute drives a snake: energy filter first, UseQuality on."""
+        seeds, h = self.icocube_seeds(2.0)
+        out_json = self.path("q.json")
+        self.run_script(os.path.join(DATA, "icocube.ply"),
+                        [(FILTER_ENERGY, self.energy_params(2, 2, False)),
+                         (FILTER_SNAKE, self.snake_params(",".join(map(str, seeds)), out=out_json, use_quality=True))],
+                        outputs=[["-o", self.path("out.ply")]])
+        with open(out_json) as f:
+            j = json.load(f)
+        final = [self.dist_to_edge(s["position"]) / h for s in j["samples"]]
+        self.assertLess(sum(final) / len(final), 0.6)
 
     def test_unknown_filter_is_detected(self):
         """The harness itself: a filter MeshLab does not know (e.g. its plugin failed to load)

@@ -1,0 +1,1020 @@
+#include <GL/glew.h>
+
+#include "edit_geometric_snake.h"
+
+#include <vcg_ext/snake_mesh_store.h>
+#include "snake_dock.h"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QRegularExpression>
+#include <QTextStream>
+
+#include <meshlab/glarea.h>
+#include <vcg/complex/algorithms/update/color.h>
+#include <wrap/qt/device_to_logical.h>
+
+using namespace vcg;
+using vcg::tri::SnakeError;
+using vcg::tri::SnakeParams;
+using vcg::tri::SurfacePoint;
+
+namespace {
+
+// Colours: bright over a dark outline, readable on any background; magenta does not occur
+// in MeshLab's quality ramp (red-yellow-green-cyan-blue).
+const GLubyte kSelected[3] = {255, 0, 255};
+const GLubyte kOther[3] = {150, 90, 255};
+const GLubyte kOutline[3] = {20, 20, 20};
+const GLubyte kSample[3] = {255, 255, 255};
+const GLubyte kPinned[3] = {255, 40, 40};
+const GLubyte kSeed[3] = {0, 230, 0};
+const GLubyte kCurrent[3] = {255, 200, 0};
+
+void mul4(const double *a, const double *b, double *r) // column-major r = a*b
+{
+    for (int c = 0; c < 4; ++c)
+        for (int rr = 0; rr < 4; ++rr) {
+            double s = 0;
+            for (int k = 0; k < 4; ++k) s += a[k * 4 + rr] * b[c * 4 + k];
+            r[c * 4 + rr] = s;
+        }
+}
+
+bool invert4(const double *m, double *inv)
+{
+    Eigen::Matrix4d a = Eigen::Map<const Eigen::Matrix4d>(m); // column-major, like GL
+    bool ok = false;
+    Eigen::Matrix4d b;
+    double det = a.determinant();
+    if (std::isfinite(det) && std::abs(det) > 1e-300) {
+        b = a.inverse();
+        ok = b.allFinite();
+    }
+    if (ok) {
+        Eigen::Map<Eigen::Matrix4d> out(inv);
+        out = b;
+    }
+    return ok;
+}
+
+Eigen::Vector4d apply(const double *m, const Eigen::Vector4d &v) { return Eigen::Map<const Eigen::Matrix4d>(m) * v; }
+
+} // namespace
+
+
+EditGeometricSnakePlugin::EditGeometricSnakePlugin()
+{
+    runTimer.setInterval(0);
+    connect(&runTimer, SIGNAL(timeout()), this, SLOT(runTick()));
+    for (int i = 0; i < 16; ++i) M[i] = Minv[i] = (i % 5 == 0) ? 1 : 0;
+}
+
+EditGeometricSnakePlugin::~EditGeometricSnakePlugin()
+{
+    runTimer.stop();
+    if (ctl && modelAlive()) stop(true);
+    delete dock.data();
+}
+
+const QString EditGeometricSnakePlugin::Info()
+{
+    return tr("Geometric snakes (Lee & Lee 2002): place seeds on the surface and let a snake slither onto a feature curve; "
+              "edit, pin, export.");
+}
+
+// ====================================================================== start / end
+bool EditGeometricSnakePlugin::StartEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont)
+{
+    doc = &md;
+    glArea = gla;
+    shared = cont;
+    if (md.mm() == nullptr) return false;
+    return startOn(*md.mm());
+}
+
+bool EditGeometricSnakePlugin::StartEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont)
+{
+    glArea = gla;
+    shared = cont;
+    return startOn(m);
+}
+
+bool EditGeometricSnakePlugin::startOn(MeshModel &m)
+{
+    if (ctl) stop(true);
+    if (!dock) {
+        dock = new SnakeDock(glArea ? glArea->window() : nullptr);
+        connectDock();
+    }
+    if (m.cm.fn < 1) {
+        dock->show();
+        report("Geometric snake: the current layer has no faces; select a triangle mesh layer.", true);
+        return true; // keep the panel, the user may switch layers
+    }
+    try {
+        m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK |
+                         MeshModel::MM_FACEMARK);
+    } catch (...) {
+        report("Geometric snake: cannot enable the mesh adjacency.", true);
+        return false;
+    }
+    model = &m;
+    ctl.reset(new Controller(m.cm));
+    currentSample = -1;
+    exportedRevision = storedRevision = -1;
+    std::string sidecar;
+    if (!m.fullName().isEmpty()) sidecar = Controller::SidecarPath(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
+
+    QString restored;
+    try {
+        ctl->SetEnergySettings(vcg::tri::FeatureEnergyType(dock->energyType->currentIndex()), dock->smoothing->value());
+    } catch (const SnakeError &) {
+    }
+    const std::string stored = vcg::tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+    if (!stored.empty()) {
+        try {
+            ctl->FromJson(nlohmann::json::parse(stored));
+            restored = "Restored the snakes kept on this mesh.";
+        } catch (const std::exception &e) {
+            report(QString("Geometric snake: could not restore the session: %1").arg(e.what()), true);
+        }
+    } else if (!sidecar.empty() && QFileInfo::exists(QString::fromStdString(sidecar))) {
+        try {
+            if (ctl->Load(sidecar)) restored = QString("Restored %1.").arg(QString::fromStdString(sidecar));
+        } catch (const std::exception &e) {
+            // keep the unusable file: it is not overwritten by the autosave
+            QString bak = QString::fromStdString(sidecar) + ".bak";
+            QFile::remove(bak);
+            QFile::copy(QString::fromStdString(sidecar), bak);
+            report(QString("Geometric snake: %1 (kept as %2)").arg(e.what(), bak), true);
+        }
+    }
+    ctl->SetAutosave(sidecar, 1.0);
+    if (ctl->SnakeCount() > 0) {
+        paramsToDock(ctl->Params());
+        dock->editMode->setChecked(true);
+        dock->energyType->setCurrentIndex(int(ctl->EnergyType()));
+        dock->smoothing->setValue(ctl->EnergySmoothing());
+    } else {
+        dock->seedMode->setChecked(true);
+        try { ctl->SetParams(paramsFromDock()); } catch (const SnakeError &) {}
+    }
+    dock->show();
+    refreshDock();
+    if (!restored.isEmpty()) report(restored, false);
+    else report(QString("Click on %1 to place seeds, then press Enter (open) or Shift+Enter (closed).").arg(m.label()), false);
+    if (restored.size()) Log(GLLogStream::FILTER, "Geometric snake: %s", restored.toStdString().c_str());
+    if (glArea) glArea->update();
+    return true;
+}
+
+bool EditGeometricSnakePlugin::modelAlive() const
+{
+    if (!model) return false;
+    if (!doc) return true;
+    return doc->meshList.contains(model);
+}
+
+void EditGeometricSnakePlugin::stop(bool save)
+{
+    setRunning(false);
+    if (ctl && save && modelAlive()) {
+        try {
+            vcg::tri::SnakeMeshStore<CMeshO>::Set(model->cm, ctl->ToJson().dump());
+            ctl->Autosave(true);
+        } catch (const std::exception &e) {
+            report(QString("Geometric snake: saving the session failed: %1").arg(e.what()), true);
+        }
+    }
+    ctl.reset();
+    model = nullptr;
+    pressed = stroking = false;
+    dragSample = -1;
+    stroke.clear();
+}
+
+void EditGeometricSnakePlugin::EndEdit(MeshModel &, GLArea *, MLSceneGLSharedDataContext *)
+{
+    stop(true);
+    if (dock) dock->hide();
+}
+
+void EditGeometricSnakePlugin::EndEdit(MeshDocument &, GLArea *, MLSceneGLSharedDataContext *)
+{
+    stop(true);
+    if (dock) dock->hide();
+}
+
+// ====================================================================== helpers
+void EditGeometricSnakePlugin::report(const QString &msg, bool error)
+{
+    if (dock) dock->setStatus(msg, error);
+    if (error) {
+        if (msg.toStdString() != lastError) Log(GLLogStream::WARNING, "%s", msg.toStdString().c_str());
+        lastError = msg.toStdString();
+    }
+}
+
+template <class F>
+bool EditGeometricSnakePlugin::guarded(const QString &what, F f)
+{
+    if (!ctl || !modelAlive()) {
+        report("Geometric snake: no mesh (select a mesh layer and start the tool again).", true);
+        return false;
+    }
+    try {
+        f();
+        return true;
+    } catch (const SnakeError &e) {
+        report(QString::fromStdString(e.what()), true);
+    } catch (const std::exception &e) {
+        report(QString("Geometric snake: %1 failed: %2").arg(what, e.what()), true);
+    } catch (...) {
+        report(QString("Geometric snake: %1 failed.").arg(what), true);
+    }
+    refreshDock();
+    if (glArea) glArea->update();
+    return false;
+}
+
+void EditGeometricSnakePlugin::afterChange(bool forceSave)
+{
+    if (!ctl) return;
+    static const char *autoExport = getenv("GS_SNAKE_AUTOEXPORT");
+    if (autoExport && *autoExport && ctl->Revision() != exportedRevision && ctl->SnakeCount() > 0) {
+        try {
+            ctl->Export(autoExport, true);
+            exportedRevision = ctl->Revision();
+        } catch (const std::exception &e) {
+            report(QString("Geometric snake: auto-export failed: %1").arg(e.what()), true);
+        }
+    }
+    try {
+        if (ctl->Autosave(forceSave) || (forceSave && storedRevision != ctl->Revision())) {
+            vcg::tri::SnakeMeshStore<CMeshO>::Set(model->cm, ctl->ToJson().dump());
+            storedRevision = ctl->Revision();
+        }
+    } catch (const std::exception &e) {
+        report(QString("Geometric snake: autosave failed: %1").arg(e.what()), true);
+        ctl->SetAutosave(std::string()); // do not retry on every operation
+    }
+    refreshDock();
+    if (glArea) glArea->update();
+}
+
+void EditGeometricSnakePlugin::refreshDock()
+{
+    if (!dock) return;
+    bool has = ctl != nullptr;
+    int nseeds = has ? int(ctl->Seeds().size()) : 0;
+    dock->seedLabel->setText(QString("%1 seed%2").arg(nseeds).arg(nseeds == 1 ? "" : "s"));
+    dock->buildOpen->setEnabled(nseeds >= 2);
+    dock->buildClosed->setEnabled(nseeds >= 3);
+    dock->removeLastSeed->setEnabled(nseeds > 0);
+    dock->clearSeeds->setEnabled(nseeds > 0);
+    Controller::Snake *s = has ? ctl->SelectedSnake() : nullptr;
+    for (QWidget *w : std::initializer_list<QWidget *>{dock->step, dock->run, dock->exportSelected, dock->addLayer,
+                                                        dock->deleteSnake, dock->insert, dock->remove, dock->pin})
+        w->setEnabled(s != nullptr);
+    dock->exportAll->setEnabled(has && ctl->SnakeCount() > 0);
+    dock->undo->setEnabled(s && s->CanUndo());
+    dock->redo->setEnabled(s && s->CanRedo());
+    {
+        QSignalBlocker b(dock->snakeList);
+        dock->snakeList->clear();
+        if (has)
+            for (int i = 0; i < ctl->SnakeCount(); ++i) {
+                auto &x = ctl->Get(i);
+                dock->snakeList->addItem(QString("Snake %1 (%2, %3 samples)")
+                                             .arg(i + 1)
+                                             .arg(x.Closed() ? "closed" : "open")
+                                             .arg(x.SampleCount()));
+            }
+        if (has && ctl->Selected() >= 0) dock->snakeList->setCurrentIndex(ctl->Selected());
+    }
+    if (s && currentSample >= s->SampleCount()) currentSample = -1;
+    dock->setConvergence(!s ? 0 : runTimer.isActive() ? 3 : s->Converged() ? 2 : 1);
+    if (s && dock->status->styleSheet().isEmpty()) {
+        const auto &st = s->Stats();
+        int pins = 0;
+        for (auto &x : s->Samples()) pins += x.fixed;
+        dock->setStatus(QString("%1 samples, %2 pinned | %3 ops | last: %4 (%5 ms) | move %6 h")
+                            .arg(s->SampleCount())
+                            .arg(pins)
+                            .arg(st.operations)
+                            .arg(QString::fromStdString(ctl->LastOperation()))
+                            .arg(ctl->LastOperationMs(), 0, 'f', 1)
+                            .arg(st.lastMaxMove, 0, 'f', 3),
+                        false);
+    }
+}
+
+SnakeParams EditGeometricSnakePlugin::paramsFromDock() const
+{
+    SnakeParams p = ctl ? ctl->Params() : SnakeParams();
+    p.alpha = dock->alpha->value();
+    p.beta = dock->beta->value();
+    p.gamma = dock->gamma->value();
+    p.externalWeight = dock->external->value();
+    p.spacing = dock->spacing->value();
+    return p;
+}
+
+void EditGeometricSnakePlugin::paramsToDock(const SnakeParams &p)
+{
+    QDoubleSpinBox *boxes[] = {dock->alpha, dock->beta, dock->gamma, dock->external, dock->spacing};
+    double vals[] = {p.alpha, p.beta, p.gamma, p.externalWeight, p.spacing};
+    for (int i = 0; i < 5; ++i) {
+        QSignalBlocker b(boxes[i]);
+        boxes[i]->setValue(vals[i]);
+    }
+}
+
+// ====================================================================== dock wiring
+void EditGeometricSnakePlugin::connectDock()
+{
+    SnakeDock *d = dock;
+    auto clicked = [this, d](QPushButton *b, std::function<void()> f) { connect(b, &QPushButton::clicked, this, f); };
+    clicked(d->buildOpen, [this] { buildSnake(false); });
+    clicked(d->buildClosed, [this] { buildSnake(true); });
+    clicked(d->removeLastSeed, [this] {
+        if (guarded("remove seed", [&] { ctl->RemoveLastSeed(); })) afterChange();
+    });
+    clicked(d->clearSeeds, [this] {
+        if (guarded("clear seeds", [&] { ctl->ClearSeeds(); })) afterChange();
+    });
+    clicked(d->useSelection, [this] {
+        if (guarded("use selection", [&] { ctl->SeedsFromSelection(); })) {
+            dock->seedMode->setChecked(true);
+            afterChange();
+            report(QString("%1 seeds from the selected vertices; press Enter to build the snake.").arg(ctl->Seeds().size()), false);
+        }
+    });
+    clicked(d->usePickPoints, [this] { usePickPoints(); });
+    connect(d->seedCost, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int i) {
+        guarded("seed cost", [&] { ctl->SetSeedCost(vcg::tri::SeedPathCost(i)); });
+    });
+    clicked(d->computeEnergy, [this] { computeEnergy(false); });
+    clicked(d->showEnergy, [this] { computeEnergy(true); });
+    for (QDoubleSpinBox *s : {d->alpha, d->beta, d->gamma, d->external, d->spacing})
+        connect(s, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double) { applyParams(); });
+    clicked(d->step, [this] { stepOnce(); });
+    connect(d->run, &QPushButton::toggled, this, [this](bool on) { setRunning(on); });
+    clicked(d->pin, [this] {
+        if (currentSample < 0) { report("Select a sample first (Edit samples mode, click on it).", true); return; }
+        if (guarded("pin", [&] { ctl->TogglePin(currentSample); })) afterChange();
+    });
+    clicked(d->insert, [this] {
+        if (currentSample < 0) { report("Select a sample first (Edit samples mode, click on it).", true); return; }
+        if (guarded("insert", [&] { currentSample = ctl->InsertSampleAfter(currentSample); })) afterChange();
+    });
+    clicked(d->remove, [this] {
+        if (currentSample < 0) { report("Select a sample first (Edit samples mode, click on it).", true); return; }
+        if (guarded("delete", [&] { ctl->DeleteSample(currentSample); currentSample = -1; })) afterChange();
+    });
+    clicked(d->undo, [this] {
+        if (guarded("undo", [&] { setRunning(false); ctl->Undo(); })) afterChange();
+    });
+    clicked(d->redo, [this] {
+        if (guarded("redo", [&] { setRunning(false); ctl->Redo(); })) afterChange();
+    });
+    connect(d->snakeList, QOverload<int>::of(&QComboBox::activated), this, [this](int i) {
+        if (guarded("select", [&] { setRunning(false); ctl->Select(i); currentSample = -1; })) {
+            if (ctl->SelectedSnake()) paramsToDock(ctl->SelectedSnake()->Params());
+            afterChange();
+        }
+    });
+    clicked(d->newSnake, [this] {
+        setRunning(false);
+        dock->seedMode->setChecked(true);
+        report("Place seeds for a new snake, then press Enter (open) or Shift+Enter (closed).", false);
+    });
+    clicked(d->deleteSnake, [this] {
+        if (guarded("delete snake", [&] { setRunning(false); ctl->DeleteSnake(ctl->Selected()); currentSample = -1; }))
+            afterChange(true);
+    });
+    clicked(d->exportSelected, [this] { exportCurves(false); });
+    clicked(d->exportAll, [this] { exportCurves(true); });
+    clicked(d->addLayer, [this] { addAsLayer(); });
+    clicked(d->saveSession, [this] {
+        if (ctl && ctl->AutosavePath().empty()) {
+            report("Geometric snake: this layer has no file name, so there is no sidecar file; use Export all.", true);
+            return;
+        }
+        if (guarded("save", [&] { ctl->Autosave(true); vcg::tri::SnakeMeshStore<CMeshO>::Set(model->cm, ctl->ToJson().dump()); }))
+            report(QString("Saved %1").arg(QString::fromStdString(ctl->AutosavePath())), false);
+    });
+}
+
+// ====================================================================== actions
+void EditGeometricSnakePlugin::buildSnake(bool closed)
+{
+    setRunning(false);
+    if (guarded("build snake", [&] {
+            ctl->SetParams(paramsFromDock());
+            auto t0 = std::chrono::steady_clock::now();
+            ctl->CloseSeeds(closed);
+            double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            Log(GLLogStream::FILTER, "Geometric snake: built a %s snake with %d samples in %.1f ms", closed ? "closed" : "open",
+                ctl->SelectedSnake()->SampleCount(), ms);
+        })) {
+        currentSample = -1;
+        dock->editMode->setChecked(true);
+        if (dock) dock->setStatus("", false);
+        afterChange(true);
+    }
+}
+
+void EditGeometricSnakePlugin::stepOnce()
+{
+    setRunning(false);
+    if (guarded("step", [&] { ctl->Step(); })) {
+        dock->setStatus("", false);
+        afterChange();
+    }
+}
+
+void EditGeometricSnakePlugin::setRunning(bool on)
+{
+    if (on && (!ctl || !ctl->SelectedSnake())) on = false;
+    if (on && ctl->SelectedSnake()->Converged()) {
+        // a converged snake restarts (e.g. after new parameters, it may move again)
+        if (!guarded("run", [&] { ctl->Step(); })) on = false;
+    }
+    if (on) runTimer.start();
+    else if (runTimer.isActive()) {
+        runTimer.stop();
+        if (ctl && modelAlive()) afterChange(true);
+    }
+    if (dock) {
+        QSignalBlocker b(dock->run);
+        dock->run->setChecked(on);
+        dock->run->setText(on ? "Pause" : "Run");
+    }
+    refreshDock();
+}
+
+void EditGeometricSnakePlugin::runTick()
+{
+    if (!ctl || !modelAlive() || !ctl->SelectedSnake()) {
+        setRunning(false);
+        return;
+    }
+    if (!guarded("run", [&] { ctl->Step(); })) {
+        setRunning(false);
+        return;
+    }
+    if (dock) dock->setStatus("", false);
+    if (ctl->SelectedSnake()->Converged()) {
+        setRunning(false);
+        const auto &st = ctl->SelectedSnake()->Stats();
+        Log(GLLogStream::FILTER, "Geometric snake: converged after %d operations (median %.1f ms per operation)",
+            st.operations, vcg::tri::SnakeStats::Median(st.msOperation));
+        return;
+    }
+    afterChange();
+}
+
+void EditGeometricSnakePlugin::applyParams()
+{
+    if (!ctl) return;
+    if (guarded("parameters", [&] { ctl->SetParams(paramsFromDock()); })) afterChange();
+}
+
+void EditGeometricSnakePlugin::computeEnergy(bool show)
+{
+    setRunning(false);
+    if (!guarded("energy", [&] {
+            auto t0 = std::chrono::steady_clock::now();
+            ctl->ComputeEnergy(vcg::tri::FeatureEnergyType(dock->energyType->currentIndex()), dock->smoothing->value());
+            double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            Log(GLLogStream::FILTER, "Geometric snake: energy computed in %.1f ms", ms);
+            if (show) {
+                model->updateDataMask(MeshModel::MM_VERTCOLOR);
+                vcg::tri::UpdateColor<CMeshO>::PerVertexQualityRamp(model->cm, 0.0f, 1.0f);
+                if (shared && glArea) {
+                    MLRenderingData::RendAtts atts;
+                    atts[MLRenderingData::ATT_NAMES::ATT_VERTCOLOR] = true;
+                    shared->meshAttributesUpdated(model->id(), false, atts);
+                    MLRenderingData dt;
+                    shared->getRenderInfoPerMeshView(model->id(), glArea->context(), dt);
+                    for (auto pm : {MLRenderingData::PR_SOLID, MLRenderingData::PR_WIREFRAME_TRIANGLES,
+                                    MLRenderingData::PR_POINTS}) {
+                        dt.set(pm, MLRenderingData::ATT_NAMES::ATT_VERTCOLOR, true);
+                        dt.set(pm, MLRenderingData::ATT_NAMES::ATT_FACECOLOR, false);
+                    }
+                    MLPerViewGLOptions opts;
+                    if (dt.get(opts)) {
+                        opts._persolid_fixed_color_enabled = false;
+                        opts._persolid_mesh_color_enabled = false;
+                        opts._perwire_fixed_color_enabled = false;
+                        opts._perpoint_fixed_color_enabled = false;
+                        dt.set(opts);
+                    }
+                    shared->setRenderingDataPerMeshView(model->id(), glArea->context(), dt);
+                    shared->manageBuffers(model->id());
+                }
+            }
+        }))
+        return;
+    report(show ? "Energy shown as colours (red = feature, blue = flat)." : "Energy recomputed.", false);
+    afterChange(true);
+}
+
+void EditGeometricSnakePlugin::exportCurves(bool all)
+{
+    if (!ctl) return;
+    setRunning(false);
+    QString dir = model && !model->fullName().isEmpty() ? QFileInfo(model->fullName()).absolutePath() : QDir::homePath();
+    QString base = model ? QFileInfo(model->label()).completeBaseName() : "snake";
+    QString path = QFileDialog::getSaveFileName(dock, all ? "Export all snakes" : "Export the selected snake",
+                                                dir + "/" + base + "_snake.json",
+                                                "Snake JSON (*.json);;OBJ polylines (*.obj);;PLY edges (*.ply)");
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += ".json";
+    if (guarded("export", [&] { ctl->Export(path.toStdString(), all); })) {
+        report(QString("Exported to %1").arg(path), false);
+        Log(GLLogStream::FILTER, "Geometric snake: exported to %s", path.toStdString().c_str());
+    }
+}
+
+void EditGeometricSnakePlugin::addAsLayer()
+{
+    setRunning(false);
+    if (!doc) { report("Geometric snake: no document.", true); return; }
+    std::vector<vcg::Point3d> pts;
+    bool closed = false;
+    int index = 0;
+    if (!guarded("add as layer", [&] {
+            Controller::Snake *s = ctl->SelectedSnake();
+            if (!s) throw SnakeError("Geometric snake: no snake selected.");
+            pts = s->PolylinePositions();
+            closed = s->Closed();
+            index = ctl->Selected() + 1;
+        }))
+        return;
+    if (pts.size() < 2) { report("Geometric snake: the curve is empty.", true); return; }
+    Matrix44m tr = model->cm.Tr;
+    QString label = QString("%1 snake %2").arg(QFileInfo(model->label()).completeBaseName()).arg(index);
+    MeshModel *nm = doc->addNewMesh("", label, false);
+    if (!nm) { report("Geometric snake: MeshLab refused to add a layer.", true); return; }
+    CMeshO &c = nm->cm;
+    auto vi = tri::Allocator<CMeshO>::AddVertices(c, pts.size());
+    for (size_t i = 0; i < pts.size(); ++i, ++vi) vi->P() = CMeshO::CoordType::Construct(pts[i]);
+    size_t ne = closed ? pts.size() : pts.size() - 1;
+    auto ei = tri::Allocator<CMeshO>::AddEdges(c, ne);
+    for (size_t i = 0; i < ne; ++i, ++ei) {
+        ei->V(0) = &c.vert[i];
+        ei->V(1) = &c.vert[(i + 1) % pts.size()];
+    }
+    c.Tr = tr;
+    nm->UpdateBoxAndNormals();
+    if (shared && glArea) {
+        shared->meshAttributesUpdated(nm->id(), true, MLRenderingData::RendAtts(true));
+        MLRenderingData dt;
+        MLRenderingData::RendAtts atts;
+        atts[MLRenderingData::ATT_NAMES::ATT_VERTPOSITION] = true;
+        dt.set(MLRenderingData::PR_WIREFRAME_EDGES, atts);
+        dt.set(MLRenderingData::PR_POINTS, atts);
+        shared->setRenderingDataPerMeshView(nm->id(), glArea->context(), dt);
+        shared->manageBuffers(nm->id());
+    }
+    report(QString("Added layer \"%1\" (%2 vertices, %3 edges).").arg(label).arg(pts.size()).arg(ne), false);
+    Log(GLLogStream::FILTER, "Geometric snake: added layer %s", label.toStdString().c_str());
+    if (glArea) glArea->update();
+}
+
+void EditGeometricSnakePlugin::usePickPoints()
+{
+    if (!ctl || !model) return;
+    // MeshLab's Pick Points tool saves <mesh>_picked_points.pp next to the mesh.
+    QString suggestion;
+    if (!model->fullName().isEmpty()) {
+        QFileInfo fi(model->fullName());
+        suggestion = fi.absolutePath() + "/" + fi.completeBaseName() + "_picked_points.pp";
+    }
+    QString path = suggestion;
+    if (path.isEmpty() || !QFileInfo::exists(path))
+        path = QFileDialog::getOpenFileName(dock, "Picked points file", suggestion, "Picked points (*.pp)");
+    if (path.isEmpty()) return;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly | QIODevice::Text)) { report("Geometric snake: cannot read " + path, true); return; }
+    QString text = QTextStream(&f).readAll();
+    QRegularExpression re("<point\\b([^>]*)>");
+    QRegularExpression attr("\\b(x|y|z|active)\\s*=\\s*\"([^\"]*)\"");
+    std::vector<int> seeds;
+    auto mi = re.globalMatch(text);
+    while (mi.hasNext()) {
+        QString a = mi.next().captured(1);
+        double xyz[3] = {NAN, NAN, NAN};
+        bool active = true;
+        auto ai = attr.globalMatch(a);
+        while (ai.hasNext()) {
+            auto m = ai.next();
+            QString n = m.captured(1);
+            if (n == "active") active = m.captured(2) != "0";
+            else xyz[n[0].toLatin1() - 'x'] = m.captured(2).toDouble();
+        }
+        if (!active || !std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) continue;
+        vcg::Point3d p(xyz[0], xyz[1], xyz[2]);
+        int best = -1;
+        double bd = 1e300;
+        for (size_t i = 0; i < model->cm.vert.size(); ++i) {
+            if (model->cm.vert[i].IsD()) continue;
+            double d = (vcg::Point3d::Construct(model->cm.vert[i].cP()) - p).SquaredNorm();
+            if (d < bd) { bd = d; best = int(i); }
+        }
+        if (best >= 0 && (seeds.empty() || seeds.back() != best)) seeds.push_back(best);
+    }
+    if (seeds.empty()) { report("Geometric snake: no picked points in " + path, true); return; }
+    if (guarded("pick points", [&] { ctl->SetSeeds(seeds); })) {
+        dock->seedMode->setChecked(true);
+        afterChange();
+        report(QString("%1 seeds from %2; press Enter to build the snake.").arg(seeds.size()).arg(path), false);
+    }
+}
+
+// ====================================================================== picking
+QPointF EditGeometricSnakePlugin::glPos(QMouseEvent *e, GLArea *gla) const
+{
+    vcg::Point2f p = QTLogicalToOpenGL(gla, e->pos());
+    return QPointF(p[0], p[1]);
+}
+
+bool EditGeometricSnakePlugin::project(const vcg::Point3d &p, vcg::Point3d &s) const
+{
+    Eigen::Vector4d c = apply(M, Eigen::Vector4d(p[0], p[1], p[2], 1.0));
+    if (!(c[3] > 0)) return false;
+    s = vcg::Point3d(viewport[0] + (c[0] / c[3] + 1) * 0.5 * viewport[2], viewport[1] + (c[1] / c[3] + 1) * 0.5 * viewport[3],
+                     (c[2] / c[3] + 1) * 0.5);
+    return std::isfinite(s[0]) && std::isfinite(s[1]);
+}
+
+/// Exact picking: the ray through the pixel, intersected with every triangle of the mesh;
+/// the nearest hit gives the face and barycentric coordinates.
+bool EditGeometricSnakePlugin::pick(const QPointF &g, SurfacePoint &sp, vcg::Point3d &xyz)
+{
+    if (!viewValid || !ctl || !model) return false;
+    double nx = 2.0 * (g.x() - viewport[0]) / viewport[2] - 1.0, ny = 2.0 * (g.y() - viewport[1]) / viewport[3] - 1.0;
+    Eigen::Vector4d a = apply(Minv, Eigen::Vector4d(nx, ny, -1, 1)), b = apply(Minv, Eigen::Vector4d(nx, ny, 1, 1));
+    if (a[3] == 0 || b[3] == 0) return false;
+    Eigen::Vector3d o = a.head<3>() / a[3], d = b.head<3>() / b[3] - o;
+    if (!o.allFinite() || !d.allFinite() || d.norm() == 0) return false;
+    const CMeshO &m = model->cm;
+    double bestT = std::numeric_limits<double>::max();
+    int bestF = -1;
+    Eigen::Vector3d bestB;
+    for (size_t fi = 0; fi < m.face.size(); ++fi) {
+        const CFaceO &f = m.face[fi];
+        if (f.IsD()) continue;
+        Eigen::Vector3d p0(f.cP(0)[0], f.cP(0)[1], f.cP(0)[2]), p1(f.cP(1)[0], f.cP(1)[1], f.cP(1)[2]),
+            p2(f.cP(2)[0], f.cP(2)[1], f.cP(2)[2]);
+        Eigen::Vector3d e1 = p1 - p0, e2 = p2 - p0, pv = d.cross(e2);
+        double det = e1.dot(pv);
+        if (!(std::abs(det) > 1e-300)) continue; // degenerate or edge-on
+        double inv = 1.0 / det;
+        Eigen::Vector3d tv = o - p0;
+        double u = tv.dot(pv) * inv;
+        if (u < -1e-9 || u > 1 + 1e-9) continue;
+        Eigen::Vector3d qv = tv.cross(e1);
+        double v = d.dot(qv) * inv;
+        if (v < -1e-9 || u + v > 1 + 1e-9) continue;
+        double t = e2.dot(qv) * inv;
+        if (t < 0 || t >= bestT || !std::isfinite(t)) continue;
+        bestT = t;
+        bestF = int(fi);
+        bestB = Eigen::Vector3d(1 - u - v, u, v);
+    }
+    if (bestF < 0) return false;
+    sp = SurfacePoint(bestF, vcg::Point3d(bestB[0], bestB[1], bestB[2]));
+    sp.Normalize();
+    xyz = sp.Pd(m);
+    return true;
+}
+
+int EditGeometricSnakePlugin::nearestSampleOnScreen(const QPointF &g, int &snake, double radius)
+{
+    snake = -1;
+    if (!ctl || !viewValid) return -1;
+    int best = -1;
+    double bd = radius * radius;
+    // the selected snake first, then the others
+    for (int k = 0; k < ctl->SnakeCount(); ++k) {
+        int si = ctl->Selected() >= 0 ? (k + ctl->Selected()) % ctl->SnakeCount() : k;
+        const auto &smp = ctl->Get(si).Samples();
+        for (int i = 0; i < int(smp.size()); ++i) {
+            vcg::Point3d s;
+            if (!project(smp[i].p.Pd(model->cm), s)) continue;
+            double dd = (s[0] - g.x()) * (s[0] - g.x()) + (s[1] - g.y()) * (s[1] - g.y());
+            if (dd < bd) { bd = dd; best = i; snake = si; }
+        }
+        if (best >= 0) break;
+    }
+    return best;
+}
+
+int EditGeometricSnakePlugin::nearestSeedOnScreen(const QPointF &g, double radius)
+{
+    if (!ctl || !viewValid) return -1;
+    int best = -1;
+    double bd = radius * radius;
+    for (int i = 0; i < int(ctl->Seeds().size()); ++i) {
+        vcg::Point3d s;
+        if (!project(ctl->SeedPosition(i), s)) continue;
+        double dd = (s[0] - g.x()) * (s[0] - g.x()) + (s[1] - g.y()) * (s[1] - g.y());
+        if (dd < bd) { bd = dd; best = i; }
+    }
+    return best;
+}
+
+// ====================================================================== mouse and keys
+void EditGeometricSnakePlugin::mousePressEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
+{
+    if (!ctl || &m != model || e->button() != Qt::LeftButton) return;
+    pressed = true;
+    pressPos = e->pos();
+    stroking = false;
+    stroke.clear();
+    dragSample = -1;
+    dragMoved = false;
+    QPointF g = glPos(e, gla);
+    if (dock->editMode->isChecked()) {
+        int sn = -1;
+        int i = nearestSampleOnScreen(g, sn, 20.0 * gla->devicePixelRatio());
+        if (i < 0) return;
+        if (sn != ctl->Selected()) {
+            guarded("select", [&] { setRunning(false); ctl->Select(sn); });
+            paramsToDock(ctl->SelectedSnake()->Params());
+        }
+        currentSample = i;
+        if (e->modifiers() & Qt::ShiftModifier) {
+            pressed = false;
+            setRunning(false);
+            if (guarded("pin", [&] { ctl->TogglePin(i); })) afterChange();
+            return;
+        }
+        dragSample = i;
+        refreshDock();
+        gla->update();
+    }
+}
+
+void EditGeometricSnakePlugin::mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
+{
+    if (!ctl || &m != model || !pressed || !(e->buttons() & Qt::LeftButton)) return;
+    QPointF g = glPos(e, gla);
+    bool far = (e->pos() - pressPos).manhattanLength() > 6;
+    SurfacePoint sp;
+    vcg::Point3d x;
+    if (dock->editMode->isChecked()) {
+        if (dragSample < 0 || !far) return;
+        if (pick(g, sp, x)) {
+            dragTarget = sp;
+            dragMoved = true;
+        }
+    } else if (!(e->modifiers() & Qt::ControlModifier)) {
+        if (!stroking && far) {
+            stroking = true;
+            // the press point starts the stroke
+            vcg::Point2f p0 = QTLogicalToOpenGL(gla, pressPos);
+            if (pick(QPointF(p0[0], p0[1]), sp, x)) stroke.push_back(sp);
+        }
+        if (stroking && pick(g, sp, x)) stroke.push_back(sp);
+    }
+    gla->update();
+}
+
+void EditGeometricSnakePlugin::mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
+{
+    if (!ctl || &m != model || e->button() != Qt::LeftButton || !pressed) return;
+    pressed = false;
+    QPointF g = glPos(e, gla);
+    if (dock->editMode->isChecked()) {
+        if (dragSample >= 0 && dragMoved) {
+            int i = dragSample;
+            setRunning(false);
+            if (guarded("move sample", [&] { ctl->MoveSample(i, dragTarget, dock->pinDragged->isChecked()); }))
+                afterChange();
+        }
+        dragSample = -1;
+        dragMoved = false;
+        gla->update();
+        return;
+    }
+    // seed mode
+    if (e->modifiers() & Qt::ControlModifier) {
+        int s = nearestSeedOnScreen(g, 15.0 * gla->devicePixelRatio());
+        if (s >= 0) {
+            if (guarded("remove seed", [&] { ctl->RemoveSeed(s); })) afterChange();
+        } else report("No seed near the click to remove.", false);
+        return;
+    }
+    if (stroking) {
+        stroking = false;
+        std::vector<SurfacePoint> st;
+        st.swap(stroke);
+        if (guarded("stroke", [&] { ctl->AddSeedsFromStroke(st); })) afterChange();
+        return;
+    }
+    SurfacePoint sp;
+    vcg::Point3d x;
+    if (!pick(g, sp, x)) {
+        report("The click is not on the mesh (no seed placed).", false);
+        return;
+    }
+    if (guarded("add seed", [&] { ctl->AddSeedFromPick(sp.face, sp.bary); })) {
+        dock->setStatus(QString("%1 seeds; Enter builds an open snake, Shift+Enter a closed one.").arg(ctl->Seeds().size()),
+                        false);
+        afterChange();
+    }
+}
+
+void EditGeometricSnakePlugin::keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla)
+{
+    if (!ctl || &m != model) return;
+    bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
+    switch (e->key()) {
+    case Qt::Key_Return:
+    case Qt::Key_Enter: buildSnake(shift); break;
+    case Qt::Key_Backspace:
+        if (guarded("remove seed", [&] { ctl->RemoveLastSeed(); })) afterChange();
+        break;
+    case Qt::Key_Space: stepOnce(); break;
+    case Qt::Key_R: setRunning(!runTimer.isActive()); break;
+    case Qt::Key_P: dock->pin->click(); break;
+    case Qt::Key_I: dock->insert->click(); break;
+    case Qt::Key_Delete: dock->remove->click(); break;
+    case Qt::Key_Z:
+        if (!ctrl) return;
+        if (shift) dock->redo->click();
+        else dock->undo->click();
+        break;
+    case Qt::Key_Y:
+        if (!ctrl) return;
+        dock->redo->click();
+        break;
+    case Qt::Key_S:
+        if (!ctrl) dock->seedMode->setChecked(true);
+        else return;
+        break;
+    case Qt::Key_E:
+        dock->editMode->setChecked(true);
+        break;
+    default: return;
+    }
+    e->accept();
+    gla->update();
+}
+
+// ====================================================================== drawing
+void EditGeometricSnakePlugin::Decorate(MeshModel &m, GLArea *gla, QPainter *)
+{
+    if (gla != glArea) return;
+    if (&m != model) {
+        // the current layer changed under us (MeshLab normally restarts the tool)
+        if (ctl && !modelAlive()) { ctl.reset(); model = nullptr; setRunning(false); }
+        return;
+    }
+    if (!ctl) return;
+    if (!ctl->MeshMatches()) {
+        setRunning(false);
+        report("Geometric snake: the mesh changed (elements added or removed); restart the tool.", true);
+        return;
+    }
+    // cache the view for picking: projection * modelview * mesh transform
+    double P[16], MV[16], T[16], PMV[16];
+    glGetDoublev(GL_PROJECTION_MATRIX, P);
+    glGetDoublev(GL_MODELVIEW_MATRIX, MV);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    Matrix44m tr = m.cm.Tr;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) T[c * 4 + r] = tr[r][c];
+    mul4(P, MV, PMV);
+    mul4(PMV, T, M);
+    viewValid = viewport[2] > 0 && viewport[3] > 0 && invert4(M, Minv);
+    try {
+        drawAll(m);
+    } catch (const std::exception &e) {
+        report(QString("Geometric snake: drawing failed: %1").arg(e.what()), true);
+    }
+}
+
+void EditGeometricSnakePlugin::drawAll(MeshModel &m)
+{
+    CMeshO &cm = m.cm;
+    double h = ctl->HasSurface() ? ctl->EnsureSurface().MeanEdge() : 0.01 * cm.bbox.Diag();
+    const double lift = 0.05 * h; // off the surface along the face normal, against z-fighting
+    float dpr = glArea ? float(glArea->devicePixelRatio()) : 1.f;
+    auto lifted = [&](const SurfacePoint &sp) {
+        vcg::Point3d p = sp.Pd(cm);
+        vcg::Point3d n = vcg::Point3d::Construct(cm.face[sp.face].cN());
+        double l = n.Norm();
+        if (l > 0 && std::isfinite(l)) p += n * (lift / l);
+        return p;
+    };
+
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glPushMatrix();
+    glMultMatrix(cm.Tr);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_TEXTURE_2D);
+    glDisable(GL_BLEND);
+    glDisable(GL_LINE_SMOOTH);
+    glDisable(GL_POINT_SMOOTH);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_TRUE);
+    // drawn a little in front of the surface in depth too (depth range trick), so the
+    // curve is never hidden by the faces it lies on but still by the mesh in front of it
+    glDepthRange(0.0, 0.99985);
+
+    auto vertex = [](const vcg::Point3d &p) { glVertex3d(p[0], p[1], p[2]); };
+    auto points = [&](const std::vector<vcg::Point3d> &pts, float size, const GLubyte *fill) {
+        if (pts.empty()) return;
+        glPointSize((size + 3) * dpr);
+        glColor3ubv(kOutline);
+        glBegin(GL_POINTS);
+        for (auto &p : pts) vertex(p);
+        glEnd();
+        glPointSize(size * dpr);
+        glColor3ubv(fill);
+        glBegin(GL_POINTS);
+        for (auto &p : pts) vertex(p);
+        glEnd();
+    };
+
+    for (int k = 0; k < ctl->SnakeCount(); ++k) {
+        auto &s = ctl->Get(k);
+        bool sel = k == ctl->Selected();
+        std::vector<SurfacePoint> pl = s.Polyline();
+        std::vector<vcg::Point3d> xyz;
+        xyz.reserve(pl.size());
+        for (auto &sp : pl) xyz.push_back(lifted(sp));
+        GLenum mode = s.Closed() ? GL_LINE_LOOP : GL_LINE_STRIP;
+        glLineWidth((sel ? 7.f : 5.f) * dpr);
+        glColor3ubv(kOutline);
+        glBegin(mode);
+        for (auto &p : xyz) vertex(p);
+        glEnd();
+        glLineWidth((sel ? 3.5f : 2.5f) * dpr);
+        glColor3ubv(sel ? kSelected : kOther);
+        glBegin(mode);
+        for (auto &p : xyz) vertex(p);
+        glEnd();
+        if (sel) {
+            std::vector<vcg::Point3d> free, pinned, cur;
+            const auto &smp = s.Samples();
+            for (int i = 0; i < int(smp.size()); ++i) {
+                vcg::Point3d p = lifted(smp[i].p);
+                (smp[i].fixed ? pinned : free).push_back(p);
+                if (i == currentSample) cur.push_back(p);
+            }
+            points(free, 4.f, kSample);
+            points(pinned, 9.f, kPinned);
+            points(cur, 6.f, kCurrent);
+        }
+    }
+    // seeds
+    {
+        std::vector<vcg::Point3d> sp;
+        for (int i = 0; i < int(ctl->Seeds().size()); ++i) {
+            vcg::Point3d p = ctl->SeedPosition(i);
+            const auto &v = cm.vert[ctl->Seeds()[i]];
+            vcg::Point3d n = vcg::Point3d::Construct(v.cN());
+            if (n.Norm() > 0 && std::isfinite(n.Norm())) p += n * (lift / n.Norm());
+            sp.push_back(p);
+        }
+        points(sp, 9.f, kSeed);
+    }
+    // stroke being painted, sample being dragged
+    {
+        std::vector<vcg::Point3d> st;
+        for (auto &s : stroke) st.push_back(lifted(s));
+        points(st, 3.f, kSeed);
+        Controller::Snake *s = ctl->SelectedSnake();
+        if (dragSample >= 0 && dragMoved && s && dragSample < s->SampleCount()) {
+            vcg::Point3d a = lifted(s->Samples()[dragSample].p), b = lifted(dragTarget);
+            glLineWidth(2.f * dpr);
+            glColor3ubv(kCurrent);
+            glBegin(GL_LINES);
+            vertex(a);
+            vertex(b);
+            glEnd();
+            points({b}, 8.f, kCurrent);
+        }
+    }
+    glDepthRange(0.0, 1.0);
+    glPopMatrix();
+    glPopAttrib();
+}
