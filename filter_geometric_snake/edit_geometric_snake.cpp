@@ -3,6 +3,8 @@
 #include "edit_geometric_snake.h"
 
 #include <vcg_ext/snake_mesh_store.h>
+#include <vcg/complex/algorithms/closest.h>
+#include <vcg/space/index/grid_static_ptr.h>
 #include "snake_dock.h"
 
 #include <chrono>
@@ -129,6 +131,7 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         return false;
     }
     model = &m;
+    pickGrid.reset(); // the mesh may have changed since the tool last ran
     ctl.reset(new Controller(m.cm));
     currentSample = -1;
     exportedRevision = storedRevision = -1;
@@ -660,8 +663,9 @@ bool EditGeometricSnakePlugin::project(const vcg::Point3d &p, vcg::Point3d &s) c
     return std::isfinite(s[0]) && std::isfinite(s[1]);
 }
 
-/// Exact picking: the ray through the pixel, intersected with every triangle of the mesh;
-/// the nearest hit gives the face and barycentric coordinates.
+/// Exact picking: the ray through the pixel against the mesh's triangles, with vcglib's
+/// ray casting on a uniform grid (tri::DoRay), so a click costs the same on a 1M-face mesh;
+/// the hit gives the face and barycentric coordinates.
 bool EditGeometricSnakePlugin::pick(const QPointF &g, SurfacePoint &sp, vcg::Point3d &xyz)
 {
     if (!viewValid || !ctl || !model) return false;
@@ -670,33 +674,23 @@ bool EditGeometricSnakePlugin::pick(const QPointF &g, SurfacePoint &sp, vcg::Poi
     if (a[3] == 0 || b[3] == 0) return false;
     Eigen::Vector3d o = a.head<3>() / a[3], d = b.head<3>() / b[3] - o;
     if (!o.allFinite() || !d.allFinite() || d.norm() == 0) return false;
-    const CMeshO &m = model->cm;
-    double bestT = std::numeric_limits<double>::max();
-    int bestF = -1;
-    Eigen::Vector3d bestB;
-    for (size_t fi = 0; fi < m.face.size(); ++fi) {
-        const CFaceO &f = m.face[fi];
-        if (f.IsD()) continue;
-        Eigen::Vector3d p0(f.cP(0)[0], f.cP(0)[1], f.cP(0)[2]), p1(f.cP(1)[0], f.cP(1)[1], f.cP(1)[2]),
-            p2(f.cP(2)[0], f.cP(2)[1], f.cP(2)[2]);
-        Eigen::Vector3d e1 = p1 - p0, e2 = p2 - p0, pv = d.cross(e2);
-        double det = e1.dot(pv);
-        if (!(std::abs(det) > 1e-300)) continue; // degenerate or edge-on
-        double inv = 1.0 / det;
-        Eigen::Vector3d tv = o - p0;
-        double u = tv.dot(pv) * inv;
-        if (u < -1e-9 || u > 1 + 1e-9) continue;
-        Eigen::Vector3d qv = tv.cross(e1);
-        double v = d.dot(qv) * inv;
-        if (v < -1e-9 || u + v > 1 + 1e-9) continue;
-        double t = e2.dot(qv) * inv;
-        if (t < 0 || t >= bestT || !std::isfinite(t)) continue;
-        bestT = t;
-        bestF = int(fi);
-        bestB = Eigen::Vector3d(1 - u - v, u, v);
+    CMeshO &m = model->cm;
+    if (!pickGrid || pickGridFaces != m.face.size() || pickGridMesh != &m) {
+        pickGrid.reset(new vcg::GridStaticPtr<CFaceO, Scalarm>());
+        pickGrid->Set(m.face.begin(), m.face.end());
+        pickGridFaces = m.face.size();
+        pickGridMesh = &m;
     }
-    if (bestF < 0) return false;
-    sp = SurfacePoint(bestF, vcg::Point3d(bestB[0], bestB[1], bestB[2]));
+    vcg::Ray3<Scalarm> ray(Point3m(o[0], o[1], o[2]), Point3m(d[0], d[1], d[2]));
+    Scalarm t = 0;
+    CFaceO *f = vcg::tri::DoRay(m, *pickGrid, ray, Scalarm(d.norm() * 2), t);
+    if (f == nullptr || f->IsD() || !std::isfinite(t)) return false;
+    ray.Normalize();
+    const Point3m hit = ray.Origin() + ray.Direction() * t;
+    vcg::Triangle3<Scalarm> tri(f->cP(0), f->cP(1), f->cP(2));
+    Point3m bary;
+    if (!vcg::InterpolationParameters(tri, hit, bary)) return false; // a degenerate face: ignore the click
+    sp = SurfacePoint(int(vcg::tri::Index(m, f)), vcg::Point3d::Construct(bary));
     sp.Normalize();
     xyz = sp.Pd(m);
     return true;

@@ -17,6 +17,8 @@
 #include <QTimer>
 
 #include <common/interfaces.h>
+#include <vcg/space/index/grid_static_ptr.h>
+#include <memory>
 #include <vcg_ext/snake_controller.h>
 
 class SnakeDock;
@@ -87,6 +89,9 @@ private:
 
     // picking
     bool pick(const QPointF &glPos, vcg::tri::SurfacePoint &sp, vcg::Point3d &xyz);
+    std::unique_ptr<vcg::GridStaticPtr<CFaceO, Scalarm>> pickGrid; // built on the first click
+    size_t pickGridFaces = 0;
+    const CMeshO *pickGridMesh = nullptr;
     bool project(const vcg::Point3d &p, vcg::Point3d &screen) const;
     int nearestSampleOnScreen(const QPointF &glPos, int &snake, double radiusPx);
     int nearestSeedOnScreen(const QPointF &glPos, double radiusPx);

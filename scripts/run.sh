@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # First command: setup, build, install the plugins into Debian's MeshLab, run the headless
-# demo (meshlabserver: energy + seed path on data/fandisk.ply, summary printed, outputs in
-# build/demo/), then, if there is a display, open MeshLab on the mesh.
+# demo (meshlabserver: energy, seed path and a geometric snake on data/fandisk.ply, summary
+# printed, outputs in build/demo/), then, if there is a display, open MeshLab on the mesh
+# with the Geometric Snake edit tool already started.
 #   usage: scripts/run.sh [MESH.ply]        (default: data/fandisk.ply)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -19,11 +20,10 @@ echo "[run] plugins installed in $(grep -E '^GS_MESHLAB_PLUGIN_DIR' build/CMakeC
 bash scripts/demo_headless.sh "$mesh"
 
 if [ -n "${DISPLAY:-}" ]; then
-  echo "[run] opening MeshLab on $mesh"
-  echo "[run]   Filters > Quality Measure and Computations > Compute Geometric Snake Feature Energy"
-  echo "[run]   Filters > Selection > Geometric Snake Seed Path"
-  # (hook: once the edit tool exists, report "tool ready" here: Edit > Geometric Snake.)
-  exec meshlab "$mesh"
+  echo "[run] opening MeshLab on $mesh with the Geometric Snake tool started (Edit > Geometric Snake):"
+  echo "[run]   click a few points near a crease, Enter (open) or Shift+Enter (closed) builds the snake,"
+  echo "[run]   R runs it until it converges; drag a sample to move and pin it; the panel exports the curve."
+  GS_SNAKE_AUTOSTART=1 exec meshlab "$mesh"
 else
   echo "[run] no DISPLAY: headless demo only (outputs in build/demo/; open them in MeshLab elsewhere)"
 fi
