@@ -7,6 +7,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -433,7 +434,7 @@ private:
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
     bool coarseStage = true;
-    std::deque<double> moveHistory;
+    std::deque<double> moveHistory, travelHistory;
     std::deque<std::vector<vcg::Point3d>> posHistory;
     std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
     LocalRegion<MeshType> region;
@@ -506,6 +507,7 @@ private:
         coarseStage = true;
         stats.converged = false;
         moveHistory.clear();
+        travelHistory.clear();
         posHistory.clear();
     }
     void invalidateAround(int i)
@@ -790,7 +792,16 @@ private:
             Eigen::MatrixXd F(k, 2);
             for (int u = 0; u < updates; ++u) {
                 auto tu = clock::now();
-                for (int j = 0; j < k; ++j) F.row(j) = st.params.externalWeight * gradient(lf[j]).transpose();
+                for (int j = 0; j < k; ++j) {
+                    // Only the feature force across the curve: along a feature valley the
+                    // energy still varies a little, and its tangential part would slide the
+                    // samples towards the strongest spots (corners) and bunch them there.
+                    Eigen::Vector2d f = st.params.externalWeight * gradient(lf[j]);
+                    Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
+                                         X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
+                    if (t.norm() > 0) { t.normalize(); f -= f.dot(t) * t; }
+                    F.row(j) = f.transpose();
+                }
                 Eigen::MatrixXd Xn = spline.Update(X, F);
                 bool left = false;
                 for (int j = 0; j < k; ++j) {
@@ -903,6 +914,11 @@ private:
                 F.row(i) << st.params.externalWeight * g[0], st.params.externalWeight * g[1],
                     st.params.externalWeight * g[2];
             }
+            for (int i = 0; i < n; ++i) { // the feature force across the curve only (see moveSegment)
+                int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0), b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
+                Eigen::Vector3d t = (X.row(b) - X.row(a)).transpose();
+                if (t.norm() > 0) { t.normalize(); F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose(); }
+            }
             Eigen::MatrixXd Xn = spline.Update(X, F);
             for (int i = 0; i < n; ++i) {
                 if (fixed[i]) continue;
@@ -962,12 +978,20 @@ private:
         const int W = st.params.convergenceWindow;
         moveHistory.push_back(maxMove);
         while (int(moveHistory.size()) > W) moveHistory.pop_front();
+        travelHistory.push_back(maxMove);
+        while (int(travelHistory.size()) > 2 * W) travelHistory.pop_front();
         bool still = int(moveHistory.size()) == W &&
                      std::all_of(moveHistory.begin(), moveHistory.end(), [&](double v) { return v < tol; });
         posHistory.push_back(pos);
         while (int(posHistory.size()) > 2 * W + 1) posHistory.pop_front();
-        bool oscillating = int(posHistory.size()) == 2 * W + 1 &&
-                           curveMove(posHistory.front(), posHistory.back()) / surf->MeanEdge() < 2 * tol;
+        bool oscillating = false;
+        if (int(posHistory.size()) == 2 * W + 1) {
+            // net displacement of the curve over the window against the way travelled: a curve
+            // that only jitters in place (a sample bouncing at a corner) has gone nowhere
+            double net = curveMove(posHistory.front(), posHistory.back()) / surf->MeanEdge();
+            double travelled = std::accumulate(travelHistory.begin(), travelHistory.end(), 0.0);
+            oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
+        }
         stats.converged = still || oscillating;
         if (stats.converged && energyLevel() == 1) { // captured: now settle on the precise energy
             coarseStage = false; // keep the settled step caps: the samples are already close

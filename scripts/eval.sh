@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Regenerates the evaluation (issue 5): accuracy sweep, the paper's Table 1 today, scaling,
+# tables and plots under docs/eval/. See docs/evaluation.md.
+#
+#   scripts/eval.sh            full run (about 10-15 minutes on 2 cores)
+#   scripts/eval.sh --quick    smoke run (< 2 minutes): fewer cases, no scaling benchmark;
+#                              writes to docs/eval/quick/ so the full results are kept
+#
+# Environment: BUILD_DIR (default /work/build-eval), MESHLAB_SOURCE_DIR (default
+# <repo>/build/meshlab-src), JOBS (default 2).
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${BUILD_DIR:-/work/build-eval}"
+MESHLAB_SOURCE_DIR="${MESHLAB_SOURCE_DIR:-$ROOT/build/meshlab-src}"
+JOBS="${JOBS:-2}"
+QUICK=0
+[[ "${1:-}" == "--quick" ]] && QUICK=1
+
+OUT="$ROOT/docs/eval"
+[[ $QUICK == 1 ]] && OUT="$ROOT/docs/eval/quick"
+mkdir -p "$OUT"
+T0=$(date +%s)
+
+echo "== build (gs_eval, bench_table1) in $BUILD_DIR"
+mkdir -p "$BUILD_DIR"
+cmake -S "$ROOT" -B "$BUILD_DIR" -DGS_BUILD_PLUGINS=OFF -DMESHLAB_SOURCE_DIR="$MESHLAB_SOURCE_DIR" \
+      -DCMAKE_BUILD_TYPE=Release > "$BUILD_DIR/gs_eval_build.log" 2>&1
+cmake --build "$BUILD_DIR" -j"$JOBS" --target gs_eval bench_table1 >> "$BUILD_DIR/gs_eval_build.log" 2>&1
+
+echo "== accuracy sweep"
+if [[ $QUICK == 1 ]]; then
+  "$BUILD_DIR/bench/eval/gs_eval" --quick --out "$OUT/sweep.csv" 2> "$OUT/sweep.log"
+else
+  "$BUILD_DIR/bench/eval/gs_eval" --out "$OUT/sweep.csv" 2> "$OUT/sweep.log"
+fi
+tail -1 "$OUT/sweep.log"
+
+echo "== Table 1 and scaling benchmark"
+if [[ $QUICK == 1 ]]; then
+  FILTER='BM_Table1/.*method:0'
+  REPS=1
+else
+  FILTER='.'
+  REPS=3
+fi
+"$BUILD_DIR/bench/bench_table1" --benchmark_filter="$FILTER" --benchmark_repetitions=$REPS \
+    --benchmark_out="$OUT/bench_table1.json" --benchmark_out_format=json > "$OUT/bench_table1.txt" 2>&1
+grep -E "median|^BM_" "$OUT/bench_table1.txt" | grep -v -E "_mean|_stddev|_cv" | head -40 || true
+
+echo "== tables and plots"
+python3 "$ROOT/bench/eval/report.py" "$OUT/sweep.csv" "$OUT/bench_table1.json" "$OUT"
+
+echo "== done in $(( $(date +%s) - T0 )) s: $OUT/results.md"
