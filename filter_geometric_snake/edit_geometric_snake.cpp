@@ -101,6 +101,7 @@ bool EditGeometricSnakePlugin::StartEdit(MeshDocument &md, GLArea *gla, MLSceneG
     glArea = gla;
     shared = cont;
     if (md.mm() == nullptr) return false;
+    if (md.isBusy()) return false; // MeshLab is still loading or filtering the mesh
     return startOn(*md.mm());
 }
 
@@ -122,6 +123,15 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         dock->show();
         report("Geometric snake: the current layer has no faces; select a triangle mesh layer.", true);
         return true; // keep the panel, the user may switch layers
+    }
+    try {
+        // vcglib's adjacency asserts (aborting MeshLab) on faces that repeat a vertex: check first
+        vcg::tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+        vcg::tri::MeshValidation<CMeshO>::RequireAdjacencySafe(m.cm);
+    } catch (const std::exception &e) {
+        dock->show();
+        report(QString("Geometric snake: %1").arg(e.what()), true);
+        return true; // keep the panel: the user can clean the mesh and restart the tool
     }
     try {
         m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK |

@@ -15,15 +15,20 @@ EditGeometricSnakeFactory::EditGeometricSnakeFactory()
     // mesh, so the README's first command opens MeshLab ready to snake. MeshLab enables
     // edit actions once a mesh is loaded; poll for that (at most a minute).
     if (qgetenv("GS_SNAKE_AUTOSTART") == "1") {
+        // MeshLab processes events while it loads a mesh and the action may be enabled then;
+        // the tool refuses to start on a busy document (StartEdit returns false, MeshLab
+        // unchecks the action), so keep triggering until it stays started.
         QTimer *t = new QTimer(this);
-        t->setInterval(300);
-        int *left = new int(200);
-        connect(t, &QTimer::timeout, this, [this, t, left] {
-            const bool ready = editSnake->isEnabled() && !editSnake->associatedWidgets().isEmpty();
-            if (ready && !editSnake->isChecked()) editSnake->trigger();
-            if (ready || --*left <= 0) {
+        t->setInterval(500);
+        int *left = new int(240), *started = new int(0);
+        connect(t, &QTimer::timeout, this, [this, t, left, started] {
+            const bool enabled = editSnake->isEnabled() && !editSnake->associatedWidgets().isEmpty();
+            if (editSnake->isChecked()) ++*started;
+            else if (enabled) { *started = 0; editSnake->trigger(); }
+            if (*started >= 2 || --*left <= 0) {
                 t->stop();
                 delete left;
+                delete started;
             }
         });
         t->start();

@@ -469,6 +469,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	if (useQuality && !m.hasDataMask(MeshModel::MM_VERTQUALITY))
 		return fail("UseQuality is on, but the mesh has no vertex quality. Compute one first (e.g. \"Compute "
 		            "Geometric Snake Feature Energy\" or any quality filter), or turn UseQuality off.");
+	tri::MeshValidation<CMeshO>::RequireAdjacencySafe(m.cm); // before MeshLab builds the adjacency
 	m.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
 
 	QElapsedTimer timer;
@@ -565,6 +566,7 @@ bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParamet
 	if (jm.value("vertices", -1) != int(m.cm.vert.size()) || jm.value("faces", -1) != int(m.cm.face.size()))
 		return fail("The stored snakes were made on another version of this mesh (its vertex or face count "
 		            "changed); they cannot be placed on it.");
+	tri::MeshValidation<CMeshO>::RequireAdjacencySafe(m.cm);
 	m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
 	auto surf = std::make_shared<tri::SnakeSurface<CMeshO>>(m.cm, 0);
 	std::vector<std::unique_ptr<tri::GeometricSnake<CMeshO>>> snakes;

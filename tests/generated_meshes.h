@@ -236,6 +236,7 @@ bool LoadMesh(M &m, const std::string &path)
     const int err = vcg::tri::io::Importer<M>::Open(m, path.c_str(), mask);
     if (err != 0 && vcg::tri::io::Importer<M>::ErrorCritical(err)) return false;
     vcg::tri::Clean<M>::RemoveDuplicateVertex(m);
+    vcg::tri::Clean<M>::RemoveDegenerateFace(m); // welding can make faces repeat a vertex
     vcg::tri::Clean<M>::RemoveUnreferencedVertex(m);
     detail::Finalize(m);
     return m.fn > 0;

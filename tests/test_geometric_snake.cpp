@@ -286,6 +286,23 @@ TEST(GeometricSnake, EditingUndoRedoAndJsonRoundTrip)
     for (auto key : {"closed", "initial", "samples", "polyline", "stats"}) EXPECT_TRUE(j.contains(key)) << key;
 }
 
+TEST(GeometricSnake, FaceRepeatingAVertexIsRefusedBeforeAdjacency)
+{
+    // vcglib's adjacency asserts on such faces (aborting MeshLab): the surface must refuse first
+    CMeshO m;
+    gs_test::MakeFromArrays(m, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 2}, {1, 3, 2}, {1, 1, 3}});
+    EXPECT_THROW(MeshValidation<CMeshO>::RequireAdjacencySafe(m), SnakeError);
+    m.vert.EnableVFAdjacency();
+    m.face.EnableVFAdjacency();
+    m.face.EnableFFAdjacency();
+    try {
+        Surface s(m);
+        FAIL() << "accepted a face that repeats a vertex";
+    } catch (const SnakeError &e) {
+        EXPECT_NE(std::string(e.what()).find("same vertex twice"), std::string::npos) << e.what();
+    }
+}
+
 TEST(GeometricSnake, BadInputIsAClearError)
 {
     CMeshO m;

@@ -93,6 +93,26 @@ public:
         }
     }
 
+    /// Throws SnakeError if a live face uses the same vertex twice. vcglib's adjacency
+    /// (UpdateTopology::FaceFace / VertexFace), which the snakes need, asserts on such faces
+    /// and would abort MeshLab; the message says how to clean them.
+    static void RequireAdjacencySafe(const MeshType &m)
+    {
+        int bad = 0, first = -1;
+        for (size_t i = 0; i < m.face.size(); ++i) {
+            const FaceType &f = m.face[i];
+            if (f.IsD()) continue;
+            if (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0)) {
+                if (first < 0) first = int(i);
+                ++bad;
+            }
+        }
+        if (bad > 0)
+            throw SnakeError(std::to_string(bad) + " faces (the first is face " + std::to_string(first) +
+                             ") use the same vertex twice. Remove them first: Filters > Cleaning and Repairing > "
+                             "Remove Zero Area Faces (or Remove Duplicate Faces).");
+    }
+
     /// Mean length of the edges of live faces (interior edges are counted once per face, which
     /// is the same weighting as counting them once). Throws SnakeError if it is not positive.
     static double MeanEdgeLength(const MeshType &m)

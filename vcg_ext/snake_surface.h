@@ -33,6 +33,7 @@ public:
     explicit SnakeSurface(MeshType &m, int captureSmoothing = DefaultCaptureSmoothing()) : mesh(m)
     {
         MeshValidation<MeshType>::RequireSurface(m);
+        MeshValidation<MeshType>::RequireAdjacencySafe(m);
         if (!tri::HasFFAdjacency(m) || !tri::HasVFAdjacency(m))
             throw SnakeError("Geometric snake: the mesh needs face-face and vertex-face adjacency enabled.");
         tri::UpdateTopology<MeshType>::FaceFace(m);
