@@ -48,6 +48,13 @@ fi
     --benchmark_out="$OUT/bench_table1.json" --benchmark_out_format=json > "$OUT/bench_table1.txt" 2>&1
 grep -E "median|^BM_" "$OUT/bench_table1.txt" | grep -v -E "_mean|_stddev|_cv" | head -40 || true
 
+echo "== a sample through meshlabserver (the batch filter; needs the plugins installed: scripts/run.sh or test.sh)"
+if command -v meshlabserver >/dev/null && ls /usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_geometric_snake.so >/dev/null 2>&1; then
+  python3 "$ROOT/bench/eval/meshlabserver_sample.py" "$OUT" | tail -10
+else
+  echo "   skipped: meshlabserver or the installed plugin is missing"
+fi
+
 echo "== tables and plots"
 python3 "$ROOT/bench/eval/report.py" "$OUT/sweep.csv" "$OUT/bench_table1.json" "$OUT"
 

@@ -1,6 +1,7 @@
 // Unit and accuracy tests of the geometric snake engine (paper Sections 3-5).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <map>
 #include <random>
 
@@ -387,6 +388,79 @@ TEST_P(CylinderRimAccuracy, ClosedSnakeConvergesOntoTheRim)
     EXPECT_LT(gs_test::MeasureCurve(s.PolylinePositions(), h, dist).p95, 0.3);
     EXPECT_LT(gs_test::MeasureCurve(s.positions(), h, [](const vcg::Point3d &x) { return gs_test::DistToCylinderRims(x); }).max, 0.65);
 }
+
+TEST_P(CylinderRimAccuracy, OpenSnakeConvergesOntoTheRim)
+{
+    CMeshO m;
+    auto surf = PrepareCylinder(m);
+    double h = surf->MeanEdge();
+    SnakeParams p;
+    p.method = GetParam().method;
+    Snake s(surf, p);
+    // picks below the rim over 135 degrees of arc
+    std::vector<vcg::Point3d> pts;
+    for (int i = 0; i < 4; ++i) {
+        double a = 0.75 * M_PI * i / 3;
+        pts.push_back(vcg::Point3d(std::cos(a), std::sin(a), 1.0 - GetParam().offset * h));
+    }
+    s.InitFromSeeds(gs_test::NearestVertices(m, pts), false);
+    std::vector<vcg::Point3d> onMesh = gs_test::ProjectOntoMesh(m, gs_test::CylinderRimLine(1.0, 1.0));
+    auto dist = [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh, true); };
+    EXPECT_GT(gs_test::MeasureCurve(s.positions(), h, dist).mean, 1.5);
+    s.Run(300);
+    EXPECT_TRUE(s.Converged());
+    // measured: mean 0.08-0.10 h, 95th percentile 0.23-0.30 h (the ends of an open arc settle last)
+    gs_test::CurveError e = gs_test::MeasureCurve(s.positions(), h, dist);
+    EXPECT_LT(e.mean, 0.15) << "p95 " << e.p95 << " max " << e.max;
+    EXPECT_LT(e.p95, 0.35) << "mean " << e.mean << " max " << e.max;
+}
+
+class CubeLoopAccuracy : public ::testing::TestWithParam<AccuracyCase> {};
+
+TEST_P(CubeLoopAccuracy, ClosedSnakeConvergesOntoTheFaceBorder)
+{
+    // the 4 edges around the face z = 1: a closed feature with 4 right-angle corners, which the
+    // rigidity of the snake rounds; away from the corners the curve lies on the edges
+    CMeshO m;
+    auto surf = PrepareCube(m);
+    double h = surf->MeanEdge();
+    SnakeParams p;
+    p.method = GetParam().method;
+    Snake s(surf, p);
+    const double a = 1.0 - GetParam().offset * h;
+    std::vector<vcg::Point3d> pts;
+    for (auto q : std::vector<std::array<double, 2>>{{-a, -a}, {0, -a}, {a, -a}, {a, 0}, {a, a}, {0, a}, {-a, a}, {-a, 0}})
+        pts.push_back(vcg::Point3d(q[0], q[1], 1.0));
+    s.InitFromSeeds(gs_test::NearestVertices(m, pts), true);
+    std::vector<vcg::Point3d> border;
+    for (int side = 0; side < 4; ++side)
+        for (int i = 0; i < 100; ++i) {
+            double t = -1 + 2.0 * i / 100;
+            vcg::Point3d q = side == 0 ? vcg::Point3d(t, -1, 1) : side == 1 ? vcg::Point3d(1, t, 1)
+                           : side == 2 ? vcg::Point3d(-t, 1, 1) : vcg::Point3d(-1, -t, 1);
+            border.push_back(q);
+        }
+    std::vector<vcg::Point3d> onMesh = gs_test::ProjectOntoMesh(m, border);
+    s.Run(300);
+    EXPECT_TRUE(s.Converged());
+    std::vector<vcg::Point3d> away; // samples more than 3 edge lengths from a corner
+    for (auto &x : s.positions())
+        if (std::min(1 - std::abs(x[0]), 1 - std::abs(x[1])) > 3 * h || std::max(1 - std::abs(x[0]), 1 - std::abs(x[1])) > 3 * h)
+            if (!(1 - std::abs(x[0]) < 3 * h && 1 - std::abs(x[1]) < 3 * h)) away.push_back(x);
+    ASSERT_GT(away.size(), s.positions().size() / 2);
+    // measured: mean 0.07-0.11 h, 95th percentile 0.27-0.29 h away from the corners
+    gs_test::CurveError e = gs_test::MeasureCurve(away, h, [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh, true); });
+    EXPECT_LT(e.mean, 0.15) << "p95 " << e.p95 << " max " << e.max;
+    EXPECT_LT(e.p95, 0.35) << "mean " << e.mean << " max " << e.max;
+    // and the whole loop, corners included, stays within an edge length of them
+    EXPECT_LT(gs_test::MeasureCurve(s.positions(), h, [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh, true); }).max, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, CubeLoopAccuracy,
+                         ::testing::Values(AccuracyCase{SnakeMethod::LocalEmbedding, 2.0},
+                                           AccuracyCase{SnakeMethod::LocalEmbedding, 3.0},
+                                           AccuracyCase{SnakeMethod::Projection3D, 2.0},
+                                           AccuracyCase{SnakeMethod::Projection3D, 3.0}));
 
 INSTANTIATE_TEST_SUITE_P(Methods, CylinderRimAccuracy,
                          ::testing::Values(AccuracyCase{SnakeMethod::LocalEmbedding, 2.0},
