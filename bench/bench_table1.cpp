@@ -70,36 +70,9 @@ Scene &GetScene(int idx)
     return *s;
 }
 
-// A closed snake of `samples` samples about one edge length apart (as in the paper, samples
-// taken along the seed path): seeds are the vertices nearest to 8 points on a circle of
-// circumference samples * h in the tangent plane at the topmost point of the model (the same
-// construction as bench_geometric_snake.cpp).
 std::unique_ptr<Snake> MakeLoop(Scene &sc, int samples, SnakeMethod method)
 {
-    CMeshO &m = sc.mesh;
-    const double h = sc.surf->MeanEdge();
-    vcg::tri::UpdateBounding<CMeshO>::Box(m);
-    vcg::Point3d c = vcg::Point3d::Construct(m.bbox.Center());
-    c[1] = m.bbox.max[1];
-    int cv = gs_test::NearestVertex(m, c);
-    vcg::Point3d o = vcg::Point3d::Construct(m.vert[cv].cP()), n = vcg::Point3d::Construct(m.vert[cv].cN()).Normalize();
-    vcg::Point3d t1 = (std::abs(n[0]) < 0.9 ? vcg::Point3d(1, 0, 0) : vcg::Point3d(0, 1, 0)) ^ n;
-    t1.Normalize();
-    vcg::Point3d t2 = n ^ t1;
-    double r = samples * h / (2 * M_PI);
-    std::vector<vcg::Point3d> pts;
-    for (int i = 0; i < 8; ++i) {
-        double a = 2 * M_PI * i / 8;
-        pts.push_back(o + t1 * (r * std::cos(a)) + t2 * (r * std::sin(a)));
-    }
-    std::vector<int> seeds = gs_test::NearestVertices(m, pts);
-    auto path = SeedPath<CMeshO>::Compute(m, seeds, true);
-    SnakeParams p;
-    p.method = method;
-    p.spacing = path.length / samples / h;
-    std::unique_ptr<Snake> s(new Snake(sc.surf, p));
-    s->InitFromPath(path.vertices, true);
-    return s;
+    return gs_test::MakeSnakeLoop(sc.mesh, sc.surf, samples, method);
 }
 
 void Report(benchmark::State &state, Snake &s, const CMeshO &m)

@@ -4,6 +4,8 @@
 // Shared helpers for the snake tests: CMeshO with the adjacency the engine needs, seeds
 // placed near known features, and distances of a curve to the exact feature.
 
+#include <memory>
+
 #include <common/ml_mesh_type.h>
 #include <generated_meshes.h>
 #include <vcg_ext/feature_energy.h>
@@ -67,6 +69,36 @@ CurveError MeasureCurve(const std::vector<vcg::Point3d> &pts, double h, DistFn d
     e.p95 = d[std::min(d.size() - 1, size_t(0.95 * (d.size() - 1) + 0.5))];
     e.max = d.back();
     return e;
+}
+
+/// A closed snake of `samples` samples about one edge length apart, as in the paper (samples
+/// taken along the seed path's edges), for the benchmarks: seeds are the vertices nearest to 8
+/// points on a circle of circumference samples * h in the tangent plane at the model's top.
+inline std::unique_ptr<vcg::tri::GeometricSnake<CMeshO>> MakeSnakeLoop(
+    CMeshO &m, std::shared_ptr<vcg::tri::SnakeSurface<CMeshO>> surf, int samples, vcg::tri::SnakeMethod method)
+{
+    const double h = surf->MeanEdge();
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    vcg::Point3d c = vcg::Point3d::Construct(m.bbox.Center());
+    c[1] = m.bbox.max[1];
+    int cv = NearestVertex(m, c);
+    vcg::Point3d o = vcg::Point3d::Construct(m.vert[cv].cP()), n = vcg::Point3d::Construct(m.vert[cv].cN()).Normalize();
+    vcg::Point3d t1 = (std::abs(n[0]) < 0.9 ? vcg::Point3d(1, 0, 0) : vcg::Point3d(0, 1, 0)) ^ n;
+    t1.Normalize();
+    vcg::Point3d t2 = n ^ t1;
+    double r = samples * h / (2 * M_PI);
+    std::vector<vcg::Point3d> pts;
+    for (int i = 0; i < 8; ++i) {
+        double a = 2 * M_PI * i / 8;
+        pts.push_back(o + t1 * (r * std::cos(a)) + t2 * (r * std::sin(a)));
+    }
+    auto path = vcg::tri::SeedPath<CMeshO>::Compute(m, NearestVertices(m, pts), true);
+    vcg::tri::SnakeParams p;
+    p.method = method;
+    p.spacing = path.length / samples / h;
+    std::unique_ptr<vcg::tri::GeometricSnake<CMeshO>> s(new vcg::tri::GeometricSnake<CMeshO>(surf, p));
+    s->InitFromPath(path.vertices, true);
+    return s;
 }
 
 /// The exact feature as it exists on the mesh: points of the exact feature curve, each moved
