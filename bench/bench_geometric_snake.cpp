@@ -13,7 +13,7 @@
 #include <map>
 #include <memory>
 
-#include <snake_test_util.h>
+#include <snake_bench_util.h>
 
 namespace {
 
@@ -81,22 +81,7 @@ void BM_Operation(benchmark::State &state)
 void BM_Convergence(benchmark::State &state)
 {
     Scene &sc = GetScene(int(state.range(2)));
-    double ops = 0, energy = 0, converged = 0;
-    for (auto _ : state) {
-        state.PauseTiming();
-        auto s = MakeLoop(sc, int(state.range(0)), SnakeMethod(state.range(1)));
-        state.ResumeTiming();
-        converged = s->Run(2000) ? 1 : 0;
-        state.PauseTiming();
-        ops = s->Stats().operations;
-        energy = 0;
-        for (auto &x : s->Samples()) energy += sc.surf->EnergyAt(0, x.p);
-        energy /= s->SampleCount();
-        state.ResumeTiming();
-    }
-    state.counters["operations"] = ops;
-    state.counters["converged"] = converged;
-    state.counters["mean_sample_energy"] = energy;
+    gs_bench::MeasureConvergence(state, sc.mesh, sc.surf, int(state.range(0)), SnakeMethod(state.range(1)), 2000);
 }
 
 } // namespace
