@@ -481,8 +481,13 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	ctl.CloseSeeds(closed);
 	for (const auto &w : ctl.EnsureSurface().Warnings()) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
 	tri::GeometricSnake<CMeshO> &snake = ctl.Get(0);
+	int shown = -1;
 	snake.Run(maxOps, [&](int op) {
-		if (cb != nullptr && maxOps > 0) cb(std::min(99, 100 * (op + 1) / maxOps), "Geometric snake...");
+		const int pct = maxOps > 0 ? std::min(99, 100 * (op + 1) / maxOps) : 99;
+		if (cb != nullptr && pct / 10 != shown) { // meshlabserver prints every call: every 10 %
+			shown = pct / 10;
+			cb(pct, "Geometric snake...");
+		}
 		return true;
 	});
 	const tri::SnakeStats &st = snake.Stats();
