@@ -23,19 +23,7 @@ MESH = os.path.join(ROOT, "data", "icocube.ply")
 
 
 def seeds_and_h(offset):
-    ply = mlhost.read_ply(MESH)
-    pts = [(v["x"], v["y"], v["z"]) for v in ply.vertices]
-    lengths = []
-    for f in ply.faces:
-        idx = next(iter(f.values()))
-        for i in range(3):
-            lengths.append(math.dist(pts[idx[i]], pts[idx[(i + 1) % 3]]))
-    h = sum(lengths) / len(lengths)
-    seeds = []
-    for z in (-0.6, -0.2, 0.2, 0.6):
-        target = (1.0, 1.0 - offset * h, z)
-        seeds.append(min(range(len(pts)), key=lambda i: math.dist(pts[i], target)))
-    return seeds, h
+    return mlhost.cube_edge_seeds(MESH, offset)
 
 
 def main(out_dir):

@@ -268,6 +268,25 @@ def pick_feature_seeds(path, k=3, threshold=0.1):
 
 
 # ---------------------------------------------------------------------------- CLI
+def cube_edge_seeds(path, offset):
+    """For a rotated icosphere projected onto [-1,1]^3 (data/icocube.ply): the vertices nearest to
+    4 points `offset` mean edge lengths off the cube edge x = y = 1 on the face x = 1, and the mean
+    edge length h. Returns (seeds, h)."""
+    ply = read_ply(path)
+    pts = [(v["x"], v["y"], v["z"]) for v in ply.vertices]
+    lengths = []
+    for f in ply.faces:
+        idx = next(iter(f.values()))  # the vertex index list, whatever its name
+        for i in range(3):
+            lengths.append(math.dist(pts[idx[i]], pts[idx[(i + 1) % 3]]))
+    h = sum(lengths) / len(lengths)
+    seeds = []
+    for z in (-0.6, -0.2, 0.2, 0.6):
+        target = (1.0, 1.0 - offset * h, z)
+        seeds.append(min(range(len(pts)), key=lambda i: math.dist(pts[i], target)))
+    return seeds, h
+
+
 def summary(path):
     ply = read_ply(path)
     vs = ply.vertices

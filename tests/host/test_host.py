@@ -263,22 +263,7 @@ class HostTests(unittest.TestCase):
         return p
 
     def icocube_seeds(self, offset):
-        """Vertices of data/icocube.ply `offset` mean edge lengths off the cube edge x = y = 1,
-        on the face x = 1 (the mesh is a rotated icosphere projected onto [-1,1]^3)."""
-        ply = mlhost.read_ply(os.path.join(DATA, "icocube.ply"))
-        pts = [(v["x"], v["y"], v["z"]) for v in ply.vertices]
-        edges = []
-        for f in ply.faces:
-            idx = next(iter(f.values()))  # the vertex index list, whatever its name
-            for i in range(3):
-                a, b = pts[idx[i]], pts[idx[(i + 1) % 3]]
-                edges.append(math.dist(a, b))
-        h = sum(edges) / len(edges)
-        seeds = []
-        for z in (-0.6, -0.2, 0.2, 0.6):
-            target = (1.0, 1.0 - offset * h, z)
-            seeds.append(min(range(len(pts)), key=lambda i: math.dist(pts[i], target)))
-        return seeds, h
+        return mlhost.cube_edge_seeds(os.path.join(DATA, "icocube.ply"), offset)
 
     @staticmethod
     def dist_to_edge(p):
