@@ -95,7 +95,7 @@ const QString EditGeometricSnakePlugin::Info()
 }
 
 // ====================================================================== start / end
-bool EditGeometricSnakePlugin::StartEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont)
+bool EditGeometricSnakePlugin::startEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont)
 {
     doc = &md;
     glArea = gla;
@@ -105,7 +105,7 @@ bool EditGeometricSnakePlugin::StartEdit(MeshDocument &md, GLArea *gla, MLSceneG
     return startOn(*md.mm());
 }
 
-bool EditGeometricSnakePlugin::StartEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont)
+bool EditGeometricSnakePlugin::startEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont)
 {
     glArea = gla;
     shared = cont;
@@ -195,7 +195,7 @@ bool EditGeometricSnakePlugin::modelAlive() const
 {
     if (!model) return false;
     if (!doc) return true;
-    return doc->meshList.contains(model);
+    return gs::host::HasMesh(*doc, model);
 }
 
 void EditGeometricSnakePlugin::stop(bool save)
@@ -216,13 +216,13 @@ void EditGeometricSnakePlugin::stop(bool save)
     stroke.clear();
 }
 
-void EditGeometricSnakePlugin::EndEdit(MeshModel &, GLArea *, MLSceneGLSharedDataContext *)
+void EditGeometricSnakePlugin::endEdit(MeshModel &, GLArea *, MLSceneGLSharedDataContext *)
 {
     stop(true);
     if (dock) dock->hide();
 }
 
-void EditGeometricSnakePlugin::EndEdit(MeshDocument &, GLArea *, MLSceneGLSharedDataContext *)
+void EditGeometricSnakePlugin::endEdit(MeshDocument &, GLArea *, MLSceneGLSharedDataContext *)
 {
     stop(true);
     if (dock) dock->hide();
@@ -881,7 +881,7 @@ void EditGeometricSnakePlugin::keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea 
 }
 
 // ====================================================================== drawing
-void EditGeometricSnakePlugin::Decorate(MeshModel &m, GLArea *gla, QPainter *)
+void EditGeometricSnakePlugin::decorate(MeshModel &m, GLArea *gla, QPainter *)
 {
     if (gla != glArea) return;
     if (&m != model) {

@@ -16,17 +16,16 @@
 #include <QPointer>
 #include <QTimer>
 
-#include <common/interfaces.h>
+#include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 #include <vcg/space/index/grid_static_ptr.h>
 #include <memory>
 #include <vcg_ext/snake_controller.h>
 
 class SnakeDock;
 
-class EditGeometricSnakePlugin : public QObject, public MeshEditInterface
+class EditGeometricSnakePlugin : public QObject, public gs::EditToolBase
 {
     Q_OBJECT
-    Q_INTERFACES(MeshEditInterface)
 
 public:
     typedef vcg::tri::SnakeController<CMeshO> Controller;
@@ -36,11 +35,11 @@ public:
 
     static const QString Info();
 
-    bool StartEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
-    bool StartEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
-    void EndEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
-    void EndEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
-    void Decorate(MeshModel &m, GLArea *gla, QPainter *p) override;
+    bool startEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
+    bool startEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
+    void endEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
+    void endEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
+    void decorate(MeshModel &m, GLArea *gla, QPainter *p) override;
     void mousePressEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
@@ -63,7 +62,7 @@ private:
     int currentSample = -1;
     std::string lastError;
 
-    // cached view (from the last Decorate) for exact picking
+    // cached view (from the last decorate) for exact picking
     double M[16];         // projection * modelview * mesh transform (column-major, like GL)
     double Minv[16];
     int viewport[4] = {0, 0, 1, 1};

@@ -9,7 +9,7 @@ EditGeometricSnakeFactory::EditGeometricSnakeFactory()
     editSnake = new QAction(QIcon(":/images/geometric_snake.png"), "Geometric Snake", this);
     editSnake->setToolTip("Geometric Snake: place seeds on the surface and let a snake slither onto a feature curve");
     editSnake->setCheckable(true);
-    actionList << editSnake;
+    addEditAction(editSnake);
 
     // GS_SNAKE_AUTOSTART=1 (set by scripts/run.sh): start the tool as soon as MeshLab has a
     // mesh, so the README's first command opens MeshLab ready to snake. MeshLab enables
@@ -35,14 +35,14 @@ EditGeometricSnakeFactory::EditGeometricSnakeFactory()
     }
 }
 
-QList<QAction *> EditGeometricSnakeFactory::actions() const { return actionList; }
+QString EditGeometricSnakeFactory::pluginName() const { return "EditGeometricSnake"; }
 
-MeshEditInterface *EditGeometricSnakeFactory::getMeshEditInterface(QAction *action)
+gs::EditToolBase *EditGeometricSnakeFactory::getEditTool(const QAction *action)
 {
     if (action == editSnake) return new EditGeometricSnakePlugin();
     return nullptr;
 }
 
-QString EditGeometricSnakeFactory::getEditToolDescription(QAction *) { return EditGeometricSnakePlugin::Info(); }
+QString EditGeometricSnakeFactory::getEditToolDescription(const QAction *) { return EditGeometricSnakePlugin::Info(); }
 
 MESHLAB_PLUGIN_NAME_EXPORTER(EditGeometricSnakeFactory)

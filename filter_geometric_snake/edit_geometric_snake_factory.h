@@ -2,24 +2,22 @@
 #define GS_EDIT_GEOMETRIC_SNAKE_FACTORY_H
 
 #include <QObject>
-#include <common/interfaces.h>
+#include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 
-class EditGeometricSnakeFactory : public QObject, public MeshEditInterfaceFactory
+class EditGeometricSnakeFactory : public QObject, public gs::EditPluginBase
 {
     Q_OBJECT
-    MESHLAB_PLUGIN_IID_EXPORTER(MESH_EDIT_INTERFACE_FACTORY_IID)
-    Q_INTERFACES(MeshEditInterfaceFactory)
+    GS_EDIT_PLUGIN
 
 public:
     EditGeometricSnakeFactory();
     virtual ~EditGeometricSnakeFactory() { delete editSnake; }
 
-    virtual QList<QAction *> actions() const;
-    virtual MeshEditInterface *getMeshEditInterface(QAction *);
-    virtual QString getEditToolDescription(QAction *);
+    QString pluginName() const override;
+    gs::EditToolBase *getEditTool(const QAction *) override;
+    QString getEditToolDescription(const QAction *) override;
 
 private:
-    QList<QAction *> actionList;
     QAction *editSnake;
 };
 

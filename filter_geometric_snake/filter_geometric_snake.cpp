@@ -1,5 +1,5 @@
 /****************************************************************************
-* Geometric Snakes for MeshLab 2020.09                                      *
+* Geometric Snakes for MeshLab (2020.09 and 2022.02)                        *
 * Filters after Y. Lee, S. Lee, "Geometric Snakes for Triangular Meshes",   *
 * Computer Graphics Forum (Eurographics 2002) 21(3).                        *
 ****************************************************************************/
@@ -62,9 +62,8 @@ bool compactIfNeeded(CMeshO &m)
 
 FilterGeometricSnakePlugin::FilterGeometricSnakePlugin()
 {
-	typeList << FP_FEATURE_ENERGY << FP_SEED_PATH << FP_SNAKE << FP_EXPORT;
-	for (FilterIDType tt : types())
-		actionList << new QAction(filterName(tt), this);
+	for (ActionIDType id : {FP_FEATURE_ENERGY, FP_SEED_PATH, FP_SNAKE, FP_EXPORT})
+		addFilterAction(id, new QAction(filterName(id), this));
 }
 
 QString FilterGeometricSnakePlugin::pluginName() const
@@ -72,7 +71,7 @@ QString FilterGeometricSnakePlugin::pluginName() const
 	return "FilterGeometricSnake";
 }
 
-QString FilterGeometricSnakePlugin::filterName(FilterIDType filterId) const
+QString FilterGeometricSnakePlugin::filterName(ActionIDType filterId) const
 {
 	switch (filterId) {
 	case FP_FEATURE_ENERGY: return "Compute Geometric Snake Feature Energy";
@@ -83,7 +82,20 @@ QString FilterGeometricSnakePlugin::filterName(FilterIDType filterId) const
 	}
 }
 
-QString FilterGeometricSnakePlugin::filterInfo(FilterIDType filterId) const
+// PyMeshLab (MeshLab 2022.02 and later): ms.<name>(...) or ms.apply_filter("<name>", ...), with
+// the same parameter names as the .mlx scripts, in PyMeshLab's verb-first style.
+QString FilterGeometricSnakePlugin::pythonFilterName(ActionIDType filterId) const
+{
+	switch (filterId) {
+	case FP_FEATURE_ENERGY: return "compute_scalar_by_geometric_snake_feature_energy";
+	case FP_SEED_PATH: return "compute_selection_by_geometric_snake_seed_path";
+	case FP_SNAKE: return "compute_geometric_snake_from_seed_vertices";
+	case FP_EXPORT: return "save_geometric_snake_curves";
+	default: assert(0); return "";
+	}
+}
+
+QString FilterGeometricSnakePlugin::filterInfo(ActionIDType filterId) const
 {
 	switch (filterId) {
 	case FP_FEATURE_ENERGY:
@@ -134,36 +146,36 @@ QString FilterGeometricSnakePlugin::filterInfo(FilterIDType filterId) const
 	}
 }
 
-MeshFilterInterface::FilterClass FilterGeometricSnakePlugin::getClass(QAction *a)
+FilterGeometricSnakePlugin::FilterClass FilterGeometricSnakePlugin::getClass(const QAction *a) const
 {
 	switch (ID(a)) {
-	case FP_FEATURE_ENERGY: return FilterClass(MeshFilterInterface::Quality | MeshFilterInterface::VertexColoring);
-	case FP_SEED_PATH: return MeshFilterInterface::Selection;
-	case FP_SNAKE: return MeshFilterInterface::Quality;
-	case FP_EXPORT: return MeshFilterInterface::Layer; // Generic has no menu: MeshLab refuses it
-	default: return MeshFilterInterface::Generic;
+	case FP_FEATURE_ENERGY: return FilterClass(Quality | VertexColoring);
+	case FP_SEED_PATH: return Selection;
+	case FP_SNAKE: return Quality;
+	case FP_EXPORT: return Layer; // Generic has no menu: MeshLab refuses it
+	default: return Generic;
 	}
 }
 
-MeshFilterInterface::FILTER_ARITY FilterGeometricSnakePlugin::filterArity(QAction *) const
+FilterGeometricSnakePlugin::FilterArity FilterGeometricSnakePlugin::filterArity(const QAction *) const
 {
 	return SINGLE_MESH;
 }
 
-int FilterGeometricSnakePlugin::getPreConditions(QAction *) const
+int FilterGeometricSnakePlugin::getPreConditions(const QAction *) const
 {
 	// Greys out the menu entries for point clouds; applyFilter checks again (meshlabserver
 	// does not look at preconditions).
 	return MeshModel::MM_FACENUMBER;
 }
 
-int FilterGeometricSnakePlugin::getRequirements(QAction *)
+int FilterGeometricSnakePlugin::getRequirements(const QAction *)
 {
 	// Topology is (re)built inside applyFilter, after validation and compaction.
 	return MeshModel::MM_NONE;
 }
 
-int FilterGeometricSnakePlugin::postCondition(QAction *a) const
+int FilterGeometricSnakePlugin::postCondition(const QAction *a) const
 {
 	switch (ID(a)) {
 	case FP_FEATURE_ENERGY: return MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
@@ -174,8 +186,9 @@ int FilterGeometricSnakePlugin::postCondition(QAction *a) const
 	}
 }
 
-void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/, RichParameterList &par)
+RichParameterList FilterGeometricSnakePlugin::initParameterList(const QAction *a, const MeshModel & /*m*/)
 {
+	RichParameterList par;
 	switch (ID(a)) {
 	case FP_FEATURE_ENERGY:
 		par.addParam(RichEnum("EnergyType", 0, energyTypeLabels(), "Energy type",
@@ -254,19 +267,18 @@ void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/,
 		break;
 	default: break;
 	}
+	return par;
 }
 
 bool FilterGeometricSnakePlugin::fail(const QString &msg)
 {
-	errorMessage = msg;
 	Log(GLLogStream::WARNING, "Geometric snake error: %s", qUtf8Printable(msg));
-	return false;
+	return filterError(msg);
 }
 
-bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, const RichParameterList &par,
-                                             vcg::CallBackPos *cb)
+bool FilterGeometricSnakePlugin::apply(const QAction *filter, const RichParameterList &par, MeshDocument &md,
+                                       vcg::CallBackPos *cb)
 {
-	errorMessage.clear();
 	if (md.mm() == nullptr)
 		return fail("No mesh is loaded.");
 	try {

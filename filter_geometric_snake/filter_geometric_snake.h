@@ -1,5 +1,5 @@
 /****************************************************************************
-* Geometric Snakes for MeshLab 2020.09                                      *
+* Geometric Snakes for MeshLab (2020.09 and 2022.02)                        *
 * Filters after Y. Lee, S. Lee, "Geometric Snakes for Triangular Meshes",   *
 * Computer Graphics Forum (Eurographics 2002) 21(3).                        *
 *                                                                           *
@@ -11,13 +11,12 @@
 #ifndef FILTER_GEOMETRIC_SNAKE_H
 #define FILTER_GEOMETRIC_SNAKE_H
 
-#include <common/interfaces.h>
+#include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 
-class FilterGeometricSnakePlugin : public QObject, public MeshFilterInterface
+class FilterGeometricSnakePlugin : public QObject, public gs::FilterPluginBase
 {
 	Q_OBJECT
-	MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
-	Q_INTERFACES(MeshFilterInterface)
+	GS_FILTER_PLUGIN
 
 public:
 	// Keep the numbering append-only: .mlx scripts refer to filters by name, but the
@@ -35,15 +34,16 @@ public:
 	FilterGeometricSnakePlugin();
 
 	QString pluginName() const override;
-	QString filterName(FilterIDType filter) const override;
-	QString filterInfo(FilterIDType filter) const override;
-	FilterClass getClass(QAction *a) override;
-	FILTER_ARITY filterArity(QAction *a) const override;
-	int getPreConditions(QAction *a) const override;
-	int getRequirements(QAction *a) override;
-	int postCondition(QAction *a) const override;
-	void initParameterSet(QAction *a, MeshModel &m, RichParameterList &par) override;
-	bool applyFilter(QAction *filter, MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb) override;
+	QString filterName(ActionIDType filter) const override;
+	QString pythonFilterName(ActionIDType filter) const override;
+	QString filterInfo(ActionIDType filter) const override;
+	FilterClass getClass(const QAction *a) const override;
+	FilterArity filterArity(const QAction *a) const override;
+	int getPreConditions(const QAction *a) const override;
+	int getRequirements(const QAction *a) override;
+	int postCondition(const QAction *a) const override;
+	RichParameterList initParameterList(const QAction *a, const MeshModel &m) override;
+	bool apply(const QAction *filter, const RichParameterList &par, MeshDocument &md, vcg::CallBackPos *cb) override;
 
 private:
 	bool applyFeatureEnergy(MeshDocument &md, const RichParameterList &par);
@@ -54,8 +54,8 @@ private:
 	void addCurveLayer(MeshDocument &md, const MeshModel &src, const QString &name,
 	                   const std::vector<std::vector<vcg::Point3d>> &curves, const std::vector<bool> &closed);
 
-	/// Sets errorMessage and mirrors it in the Log (meshlabserver prints the Log but
-	/// not errorMessage). Always returns false, for `return fail(...)`.
+	/// Sets the filter's error and mirrors it in the Log (meshlabserver prints the Log but
+	/// not the error). Always returns false, for `return fail(...)`.
 	bool fail(const QString &msg);
 };
 
