@@ -591,7 +591,7 @@ void EditGeometricSnakePlugin::addAsLayer()
         ei->V(1) = &c.vert[(i + 1) % pts.size()];
     }
     c.Tr = tr;
-    nm->UpdateBoxAndNormals();
+    gs::host::UpdateBoxAndNormals(*nm);
     if (shared && glArea) {
         shared->meshAttributesUpdated(nm->id(), true, MLRenderingData::RendAtts(true));
         MLRenderingData dt;

@@ -12,7 +12,8 @@
 //   gs::EditToolBase      edit tool: startEdit, endEdit, decorate, layerChanged (lower case),
 //                         the mouse and key events, Log(...).
 //   GS_FILTER_PLUGIN / GS_EDIT_PLUGIN  in the class body, after Q_OBJECT (plugin metadata).
-//   gs::host::HasMesh(md, m)  whether m is still a layer of md; gs::host::kApi  "2020.09".
+//   gs::host::HasMesh(md, m)  whether m is still a layer of md (m may be dangling);
+//   gs::host::UpdateBoxAndNormals(m);  gs::host::kApi  "2020.09".
 
 #ifndef GS_MESHLAB_HOST_H
 #define GS_MESHLAB_HOST_H
@@ -30,6 +31,8 @@ namespace host {
 constexpr const char *kApi = "2020.09";
 
 inline bool HasMesh(const MeshDocument &md, const MeshModel *m) { return md.meshList.contains(const_cast<MeshModel *>(m)); }
+
+inline void UpdateBoxAndNormals(MeshModel &m) { m.UpdateBoxAndNormals(); }
 } // namespace host
 
 /// Filters: the 2022.02 signatures, forwarded from MeshFilterInterface's.

@@ -31,10 +31,12 @@ constexpr const char *kApi = "2022.02";
 
 inline bool HasMesh(const MeshDocument &md, const MeshModel *m)
 {
-	for (const MeshModel &x : md.meshList)
+	for (const MeshModel &x : md.meshIterator()) // meshList (a std::list<MeshModel>) is private
 		if (&x == m) return true;
 	return false;
 }
+
+inline void UpdateBoxAndNormals(MeshModel &m) { m.updateBoxAndNormals(); }
 } // namespace host
 
 class FilterPluginBase : public FilterPlugin
