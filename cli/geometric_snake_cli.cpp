@@ -11,6 +11,7 @@
 // read the way MeshLab reads it, so both give the same curve; the CLI test checks that.
 
 #include <sys/wait.h>
+#include <csignal>
 #include <unistd.h>
 
 #include <algorithm>
@@ -170,7 +171,7 @@ std::string CommandHelp(const Command &c)
 std::string MainHelp()
 {
     std::string s = std::string("usage: ") + kProgram + " COMMAND MESH [options]\n       " + kProgram +
-                    " --batch CASES.jsonl [--jobs N] [--json-log]\n\n" +
+                    " --batch CASES.jsonl [--jobs N] [--timeout S] [--json-log]\n\n" +
                     Wrap("Geometric snakes (Lee & Lee, Eurographics 2002) on triangle meshes, without MeshLab: "
                          "the same engine, parameters and outputs as the MeshLab filters. MESH is a .ply, .off, "
                          ".obj or .stl file; vertex indices are 0-based, in file order.", 0) +
@@ -190,6 +191,8 @@ std::string MainHelp()
                                     "N, \"line\": L, \"ok\": false, \"error\": \"...\"}), then with --json-log a "
                                     "summary line.") +
          OptionHelp("-j, --jobs N", "Cases run at once (default: the number of cores).") +
+         OptionHelp("--timeout S", "Stop a case that runs longer than S seconds and report it as an error "
+                                   "(default: no limit).") +
          "\nexit status: 0 success; 1 the run failed (bad mesh, seeds, parameters or files; in a batch: any "
          "case failed); 2 bad command line.\n"
          "Outputs are written to a temporary file and renamed into place: a failed run leaves no partial\n"
@@ -541,7 +544,7 @@ void CaseToJob(const std::string &line, const std::string &dir, Job &job)
     CheckJob(job);
 }
 
-int RunBatch(const std::string &file, int jobs, bool jsonLog, bool quiet)
+int RunBatch(const std::string &file, int jobs, int timeout, bool jsonLog, bool quiet)
 {
     std::ifstream in(file);
     if (!in) throw SnakeError("Cannot read the batch file \"" + file + "\".");
@@ -595,6 +598,7 @@ int RunBatch(const std::string &file, int jobs, bool jsonLog, bool quiet)
                 continue;
             }
             if (pid == 0) { // the case, isolated in its own process
+                if (timeout > 0) ::alarm(unsigned(timeout)); // SIGALRM ends a case that hangs
                 json r;
                 std::string err;
                 Job job;
@@ -629,8 +633,18 @@ int RunBatch(const std::string &file, int jobs, bool jsonLog, bool quiet)
         }
         std::remove(rf.c_str());
         if (!r.is_object()) {
+            Job killed; // its outputs, to remove the temporary files it was writing
+            try {
+                CaseToJob(cases[i].text, dir, killed);
+                for (const auto &o : {killed.output, killed.meshOut})
+                    if (!o.empty()) RemoveTemporaries(o, long(pid));
+            } catch (const std::exception &) {
+            }
             std::string why = "the case stopped without a result";
-            if (WIFSIGNALED(status)) why = "the case crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
+            if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+                why = "the case ran longer than --timeout " + std::to_string(timeout) + " s and was stopped";
+            else if (WIFSIGNALED(status))
+                why = "the case crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
             r = {{"ok", false}, {"error", why}};
         }
         report(i, r);
@@ -656,7 +670,7 @@ int Main(int argc, char **argv)
     }
     Job job;
     std::string batch;
-    int jobs = 0;
+    int jobs = 0, timeout = 0;
     bool help = false;
     std::vector<std::pair<std::string, std::pair<std::string, bool>>> opts;
     std::vector<std::string> positional;
@@ -706,14 +720,19 @@ int Main(int argc, char **argv)
             char *e = nullptr;
             jobs = int(std::strtol(value.c_str(), &e, 10));
             if (value.empty() || *e || jobs < 1 || jobs > 1024) throw UsageError("--jobs expects a number in [1, 1024].");
+        } else if (key == "timeout") {
+            char *e = nullptr;
+            timeout = int(std::strtol(value.c_str(), &e, 10));
+            if (value.empty() || *e || timeout < 1 || timeout > 1000000)
+                throw UsageError("--timeout expects seconds in [1, 1000000].");
         } else opts.push_back({key, {value, hasValue}});
     }
 
     if (!batch.empty()) {
         if (!positional.empty() || !opts.empty())
             throw UsageError("--batch takes the cases from its file: no command, mesh or other options beside it "
-                             "(only --jobs, --json-log, --quiet).");
-        return RunBatch(batch, jobs, job.jsonLog, job.quiet);
+                             "(only --jobs, --timeout, --json-log, --quiet).");
+        return RunBatch(batch, jobs, timeout, job.jsonLog, job.quiet);
     }
     if (positional.empty() || positional[0] == "help") {
         const Command *c = positional.size() > 1 ? FindCommand(positional[1]) : nullptr;
@@ -729,7 +748,7 @@ int Main(int argc, char **argv)
     }
     if (positional.size() > 2) throw UsageError("unexpected argument \"" + positional[2] + "\".");
     if (positional.size() == 2) job.mesh = positional[1];
-    if (jobs) throw UsageError("--jobs only applies to --batch.");
+    if (jobs || timeout) throw UsageError("--jobs and --timeout only apply to --batch.");
     job.values.reset(new ParamValues(*job.cmd->defs));
     for (const auto &o : opts) SetOption(job, o.first, o.second.first, o.second.second);
     CheckJob(job);
