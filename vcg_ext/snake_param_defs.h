@@ -133,7 +133,7 @@ public:
     explicit ParamValues(const std::vector<ParamDef> &defs) : defs_(&defs)
     {
         for (const auto &d : defs) {
-            num_[d.name] = d.value;
+            num_[d.name] = d.kind == ParamDef::Real ? double(float(d.value)) : d.value; // see SetNumber
             text_[d.name] = d.text;
         }
     }
@@ -230,8 +230,11 @@ public:
                 o << ", not " << v << ".";
             } else {
                 o << who << " must be in " << d.RangeText() << ", not ";
-                o.precision(9);
-                o << v << ".";
+                if (v == std::floor(v) && std::fabs(v) < 1e15) o << (long long)v << ".";
+                else {
+                    o.precision(9);
+                    o << v << ".";
+                }
             }
             throw SnakeError(o.str());
         }
