@@ -6,6 +6,7 @@
 
 #include "filter_geometric_snake.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <string>
@@ -21,10 +22,12 @@
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/seed_path.h>
+#include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_mesh_store.h>
+#include <vcg_ext/triangle_soup.h>
 
 #include <QFileInfo>
 #include <fstream>
@@ -33,12 +36,43 @@ using namespace vcg;
 
 namespace {
 
-const char *const kEnergyNames[] = {"normal variation", "curvature norm", "quadric error"};
 constexpr int kDefaultSmoothingSteps = 2;
 
 QStringList energyTypeLabels()
 {
-	return QStringList() << "Normal variation" << "Curvature norm" << "Quadric error";
+	return QStringList() << "Normal variation" << "Curvature norm" << "Quadric error" << "Crease distance (CAD)";
+}
+
+const char *const kEnergyTypeHelp =
+    "How features are measured. <b>Normal variation</b> (paper, Eq. 6): how much the normals of the faces "
+    "around a vertex differ. <b>Curvature norm</b>: the norm of the principal curvatures. <b>Quadric "
+    "error</b>: the distance error of the vertex's face-plane quadric. These three live at vertices and are "
+    "normalised to [0,1], 0 = feature. <b>Crease distance (CAD)</b>: for CAD tessellations (STL/OBJ/PLY "
+    "exported from a CAD system, flat faces made of long slivers): the sharp edges are found from dihedral "
+    "angles (<i>Crease angle</i>) and the energy at any surface point grows with its distance to the "
+    "nearest crease of its face, 1 - exp(-(d/w)^2), with w = (1 + smoothing steps) % of the bounding box "
+    "diagonal; the vertex quality gets its values at the vertices.";
+
+QString creaseAngleHelp()
+{
+	return QString("For the crease energy: an edge whose two faces' normals differ by more than this angle "
+	               "(degrees, in (0, 180)) is a crease. %1 keeps the edges of blocks, bores and pockets and "
+	               "leaves out the facets of cylinders tessellated with 16 or more segments.")
+	    .arg(vcg::tri::CreaseEnergy<CMeshO>::DefaultAngle());
+}
+
+QString seedPointsHelp()
+{
+	return "Seeds as 3D points, used when <i>Seed vertices</i> is empty: <code>x y z; x y z; ...</code> "
+	       "(the mesh's own coordinates). Each is moved to the closest point of the surface; the curve starts "
+	       "and ends exactly there (not at a vertex). Points farther from the surface than 10% of the "
+	       "bounding box diagonal are refused.";
+}
+QString seedFileHelp()
+{
+	return "Seeds from a MeshLab <i>Pick Points</i> file (.pp, saved by Edit > PickPoints), used in the "
+	       "file's order when <i>Seed vertices</i> and <i>Seed points</i> are empty; points left unplaced "
+	       "(inactive) are skipped. Snapped onto the surface like <i>Seed points</i>.";
 }
 
 QString paperReference()
@@ -56,6 +90,25 @@ bool compactIfNeeded(CMeshO &m)
 		return false;
 	tri::Allocator<CMeshO>::CompactEveryVector(m);
 	return true;
+}
+
+/// Seeds given as points (SeedPoints text, else the SeedFile .pp), for when Seeds is empty.
+/// Empty if neither is given; `source` says where they came from, for the Log.
+std::vector<vcg::Point3d> seedPointsFrom(const RichParameterList &par, QString &source)
+{
+	const std::string text = par.getString("SeedPoints").toStdString();
+	const std::string file = par.getString("SeedFile").trimmed().toStdString();
+	std::vector<vcg::Point3d> pts = tri::SeedPointsParser::Parse(text);
+	if (!pts.empty()) {
+		if (!file.empty())
+			throw tri::SnakeError("Both SeedPoints and SeedFile are given: use one of them.");
+		source = "the SeedPoints coordinates";
+		return pts;
+	}
+	if (file.empty()) return pts;
+	pts = tri::SeedPointsParser::Active(tri::SeedPointsParser::ReadPickPointsFile(file));
+	source = QString("the Pick Points file %1").arg(QString::fromStdString(file));
+	return pts;
 }
 
 } // namespace
@@ -115,9 +168,14 @@ QString FilterGeometricSnakePlugin::filterInfo(FilterIDType filterId) const
 		       "in the plane (convex combination with a virtual boundary) and solves the snake's "
 		       "equation of motion there (Eq. 4), up to 5 times, then maps back onto the surface. "
 		       "The alternative method updates in 3D and projects onto the surface after every step.<br>"
+		       "Seeds can also be 3D points (<i>Seed points</i>) or a MeshLab Pick Points file "
+		       "(<i>Seed file</i>), snapped onto the surface: the curve then starts and ends exactly at "
+		       "them, inside faces, which is what CAD tessellations need (all their vertices lie on "
+		       "creases).<br>"
 		       "The feature energy is the vertex quality if <i>Use vertex quality</i> is on (any "
-		       "quality field works: low = feature), else the normal-variation energy is computed "
-		       "and stored in the vertex quality.<br>"
+		       "quality field works: low = feature), else the energy of <i>Energy type</i> (normal "
+		       "variation by default; <i>crease distance</i> for CAD parts) is computed and stored in "
+		       "the vertex quality.<br>"
 		       "The curve can be written to a file (.json with samples, curve and timings; .obj; "
 		       ".ply) and added as a layer of edges. It is also kept on the mesh, so the Geometric "
 		       "Snake edit tool shows it and <i>Export Geometric Snake Curves</i> can write it." +
@@ -178,15 +236,18 @@ void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/,
 {
 	switch (ID(a)) {
 	case FP_FEATURE_ENERGY:
-		par.addParam(RichEnum("EnergyType", 0, energyTypeLabels(), "Energy type",
-		    "How features are measured at each vertex. <b>Normal variation</b> (paper): how much the "
-		    "normals of the faces around the vertex differ. <b>Curvature norm</b>: the norm of the "
-		    "principal curvatures. <b>Quadric error</b>: the distance error of the vertex's "
-		    "face-plane quadric. In every case the result is normalised to [0,1], 0 = feature."));
+		par.addParam(RichEnum("EnergyType", 0, energyTypeLabels(), "Energy type", kEnergyTypeHelp));
 		par.addParam(RichInt("SmoothingSteps", kDefaultSmoothingSteps, "Smoothing steps",
 		    "Number of Laplacian smoothing passes over the per-vertex energy before normalisation "
 		    "(0 = none, at most 10000). A little smoothing removes noise and widens the basin of "
-		    "attraction of features."));
+		    "attraction of features. For the crease energy it widens the basin by distance: w = (1 + "
+		    "steps) % of the bounding box diagonal."));
+		par.addParam(RichFloat("CreaseAngle", float(vcg::tri::CreaseEnergy<CMeshO>::DefaultAngle()),
+		    "Crease angle", creaseAngleHelp()));
+		par.addParam(RichBool("MergeDuplicateVertices", false, "Merge duplicate vertices",
+		    "If the mesh is a triangle soup (its faces do not share vertices, as in STL files), merge the "
+		    "vertices at identical positions first (like Filters > Cleaning and Repairing > Merge Close "
+		    "Vertices with distance 0; vertex indices change). Off: a soup is refused with a message."));
 		par.addParam(RichBool("Colorize", true, "Colorize by energy",
 		    "Also colour the vertices by the energy with MeshLab's quality colour ramp over [0,1] "
 		    "(red = feature, blue = flat). Adds per-vertex colour to the mesh."));
@@ -196,6 +257,8 @@ void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/,
 		    "Comma-separated 0-based vertex indices, in file order (the order of the vertices in the "
 		    "loaded file), e.g. <code>0, 57, 112</code>. At least two; the path visits them in "
 		    "this order."));
+		par.addParam(RichString("SeedPoints", "", "Seed points", seedPointsHelp()));
+		par.addParam(RichString("SeedFile", "", "Seed file (.pp)", seedFileHelp()));
 		par.addParam(RichBool("Closed", false, "Closed path",
 		    "Also join the last seed back to the first one (a closed snake)."));
 		par.addParam(RichEnum("Cost", 0, QStringList() << "Length" << "Feature", "Path cost",
@@ -203,6 +266,10 @@ void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/,
 		    "vertex quality (the feature energy, expected in [0,1]) so the path prefers features; "
 		    "if the mesh has no vertex quality, the normal-variation energy is computed first and "
 		    "stored in the vertex quality."));
+		par.addParam(RichBool("MergeDuplicateVertices", false, "Merge duplicate vertices",
+		    "If the mesh is a triangle soup (its faces do not share vertices, as in STL files), merge the "
+		    "vertices at identical positions first (like Filters > Cleaning and Repairing > Merge Close "
+		    "Vertices with distance 0; vertex indices change). Off: a soup is refused with a message."));
 		par.addParam(RichBool("NewLayer", true, "Add path as new layer",
 		    "Also add the path as a new layer named \"Seed path\" made of its vertices and edges. "
 		    "The current layer stays the input mesh."));
@@ -212,7 +279,14 @@ void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/,
 		par.addParam(RichString("Seeds", "", "Seed vertices",
 		    "Comma-separated 0-based vertex indices, in file order, near the feature to capture, in "
 		    "the order the curve visits them (at least 2; 3 for a closed snake)."));
+		par.addParam(RichString("SeedPoints", "", "Seed points", seedPointsHelp()));
+		par.addParam(RichString("SeedFile", "", "Seed file (.pp)", seedFileHelp()));
 		par.addParam(RichBool("Closed", false, "Closed snake", "Join the last seed back to the first: a closed curve."));
+		par.addParam(RichEnum("EnergyType", 0, energyTypeLabels(), "Energy type",
+		    QString(kEnergyTypeHelp) + " Computed with 2 smoothing steps and stored in the vertex quality; "
+		    "<i>Use vertex quality</i> overrides it."));
+		par.addParam(RichFloat("CreaseAngle", float(vcg::tri::CreaseEnergy<CMeshO>::DefaultAngle()),
+		    "Crease angle", creaseAngleHelp()));
 		par.addParam(RichFloat("Alpha", float(d.alpha), "Alpha (tension)",
 		    "Weight of the first-derivative (tension) term of the spline energy, Eq. 2. Scale-free "
 		    "(positions are measured in mean edge lengths). Range [0, 10000]."));
@@ -237,6 +311,10 @@ void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/,
 		par.addParam(RichBool("UseQuality", false, "Use vertex quality",
 		    "Take the feature energy from the current vertex quality (low = feature; any range, it "
 		    "is normalized) instead of computing the normal-variation energy."));
+		par.addParam(RichBool("MergeDuplicateVertices", false, "Merge duplicate vertices",
+		    "If the mesh is a triangle soup (its faces do not share vertices, as in STL files), merge the "
+		    "vertices at identical positions first (like Filters > Cleaning and Repairing > Merge Close "
+		    "Vertices with distance 0; vertex indices change). Off: a soup is refused with a message."));
 		par.addParam(RichString("OutputFile", "", "Output file",
 		    "Where to write the final curve; the extension chooses the format: .json (samples, "
 		    "initial and final curve, timings), .obj (l records) or .ply (edges). Empty: no file."));
@@ -288,27 +366,68 @@ bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, 
 	}
 }
 
+std::vector<vcg::Point3d> FilterGeometricSnakePlugin::seedPointsWanted(const RichParameterList &par,
+                                                                       const std::vector<int> &seeds, QString &source)
+{
+	if (!seeds.empty()) {
+		if (!par.getString("SeedPoints").trimmed().isEmpty() || !par.getString("SeedFile").trimmed().isEmpty())
+			Log(GLLogStream::WARNING, "Geometric snake: seed vertices are given, so SeedPoints and SeedFile are ignored.");
+		return {};
+	}
+	std::vector<vcg::Point3d> pts = seedPointsFrom(par, source);
+	if (pts.empty())
+		throw tri::SnakeError("No seeds given: fill Seed vertices (vertex indices), Seed points (\"x y z; x y z\") "
+		                      "or Seed file (a MeshLab Pick Points .pp file).");
+	return pts;
+}
+
+void FilterGeometricSnakePlugin::logSnap(const vcg::tri::SeedPointSnap<CMeshO>::Result &snap, const QString &source)
+{
+	double worst = 0;
+	for (double d : snap.distances) worst = std::max(worst, d);
+	Log("%d seed points from %s, moved onto the surface by at most %g (%.2g%% of the bounding box diagonal).",
+	    int(snap.points.size()), qUtf8Printable(source), worst, 100.0 * worst / std::max(snap.bboxDiagonal, 1e-300));
+}
+
+void FilterGeometricSnakePlugin::handleSoup(MeshModel &m, const RichParameterList &par)
+{
+	typedef tri::TriangleSoup<CMeshO> Soup;
+	const Soup::Report r = Soup::Inspect(m.cm);
+	if (!r.soup) return;
+	if (!par.getBool("MergeDuplicateVertices")) throw tri::SnakeError(Soup::Message(r));
+	const int vn = m.cm.vn;
+	const int merged = Soup::Merge(m.cm);
+	m.clearDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
+	tri::UpdateBounding<CMeshO>::Box(m.cm);
+	Log("The mesh was a triangle soup: merged %d duplicate vertices (%d -> %d vertices, %d faces); vertex indices "
+	    "now refer to the merged mesh.", merged, vn, m.cm.vn, m.cm.fn);
+}
+
 bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
 	const int type = par.getEnum("EnergyType");
 	const int steps = par.getInt("SmoothingSteps");
 	const bool colorize = par.getBool("Colorize");
+	const double creaseAngle = par.getFloat("CreaseAngle");
 
-	if (type < 0 || type > 2)
-		return fail(QString("EnergyType must be 0 (normal variation), 1 (curvature norm) or 2 (quadric "
-		                    "error), not %1.").arg(type));
+	if (type < 0 || type >= tri::FeatureEnergyTypeCount())
+		return fail(QString("EnergyType must be 0 (normal variation), 1 (curvature norm), 2 (quadric "
+		                    "error) or 3 (crease distance), not %1.").arg(type));
+	if (!(creaseAngle > 0 && creaseAngle < 180))
+		return fail(QString("CreaseAngle must be between 0 and 180 degrees, not %1.").arg(creaseAngle));
 	if (steps < 0 || steps > kMaxSmoothingSteps)
 		return fail(QString("SmoothingSteps must be between 0 and %1, not %2.").arg(kMaxSmoothingSteps).arg(steps));
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	handleSoup(m, par);
 	// FeatureEnergy needs no optional component (no adjacency, no curvature fields):
 	// only the (always allocated) vertex quality, which the mask marks as meaningful.
 	m.updateDataMask(MeshModel::MM_VERTQUALITY);
 
 	QElapsedTimer timer;
 	timer.start();
-	const auto stats = tri::FeatureEnergy<CMeshO>::Compute(m.cm, tri::FeatureEnergyType(type), steps);
+	const auto stats = tri::FeatureEnergy<CMeshO>::Compute(m.cm, tri::FeatureEnergyType(type), steps, creaseAngle);
 
 	if (colorize) {
 		m.updateDataMask(MeshModel::MM_VERTCOLOR);
@@ -320,8 +439,10 @@ bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const Rich
 
 	Log("Feature energy (%s, %d smoothing steps) on %d vertices: raw range [%g, %g], stored in vertex "
 	    "quality normalised to [%g, %g] (0 = feature, 1 = flat)%s.",
-	    kEnergyNames[type], steps, m.cm.vn, double(stats.rawMin), double(stats.rawMax), double(q.first),
+	    tri::FeatureEnergyName(tri::FeatureEnergyType(type)), steps, m.cm.vn, double(stats.rawMin), double(stats.rawMax), double(q.first),
 	    double(q.second), colorize ? ", coloured by the quality ramp" : "");
+	if (type == int(tri::FeatureEnergyType::Crease))
+		Log("Crease energy: %d sharp edges (dihedral angle above %g degrees).", stats.creases, creaseAngle);
 	if (stats.nonManifoldVertices > 0 || stats.degenerateFaces > 0)
 		Log(GLLogStream::WARNING, "Feature energy: %d non-manifold vertices, %d degenerate faces (handled, but "
 		    "the energy may be unreliable there).", stats.nonManifoldVertices, stats.degenerateFaces);
@@ -342,7 +463,10 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 		return fail(QString("Cost must be 0 (length) or 1 (feature), not %1.").arg(cost));
 
 	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(seedText);
+	QString pointSource;
+	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(par, seeds, pointSource);
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	handleSoup(m, par);
 	if (compactIfNeeded(m.cm))
 		Log("Compacted the mesh (it had deleted elements); vertex indices refer to the compacted order.");
 	for (int s : seeds)
@@ -369,25 +493,50 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 		}
 	}
 
-	const auto path = tri::SeedPath<CMeshO>::Compute(m.cm, seeds, closed, tri::SeedPathCost(cost));
-	if (path.vertices.empty())
+	// The path: through seed vertices, or from surface point to surface point.
+	std::vector<int> pathVertices;
+	std::vector<tri::SurfacePoint> pathPoints;
+	double pathLength = 0;
+	int seedCount = int(seeds.size());
+	if (seedPts.empty()) {
+		const auto path = tri::SeedPath<CMeshO>::Compute(m.cm, seeds, closed, tri::SeedPathCost(cost));
+		pathVertices = path.vertices;
+		pathLength = path.length;
+		std::vector<tri::SurfacePoint> corner(m.cm.vert.size()); // each vertex in one of its faces
+		for (size_t f = 0; f < m.cm.face.size(); ++f)
+			if (!m.cm.face[f].IsD())
+				for (int k = 0; k < 3; ++k) corner[tri::Index(m.cm, m.cm.face[f].cV(k))] = tri::SurfacePoint::AtCorner(int(f), k);
+		for (int v : path.vertices) pathPoints.push_back(corner[v]);
+	} else {
+		const auto snap = tri::SeedPointSnap<CMeshO>::Snap(m.cm, seedPts, closed ? 3 : 2, closed);
+		logSnap(snap, pointSource);
+		const auto path = tri::SeedPath<CMeshO>::ComputeFromPoints(m.cm, snap.points, closed, tri::SeedPathCost(cost));
+		pathVertices = path.vertices;
+		pathPoints = path.points;
+		pathLength = path.length;
+		seedCount = int(seedPts.size());
+	}
+	if (pathPoints.empty())
 		return fail("No path was found between the seeds.");
 
 	// Selection: exactly the path's vertices.
 	tri::UpdateSelection<CMeshO>::VertexClear(m.cm);
-	for (int vi : path.vertices)
+	for (int vi : pathVertices)
 		m.cm.vert[vi].SetS();
 	m.updateDataMask(MeshModel::MM_VERTFLAGSELECT);
 
 	if (newLayer) {
 		MeshModel *pl = md.addNewMesh("", "Seed path", false);
 		CMeshO &pm = pl->cm;
-		const int n = int(path.vertices.size());
+		const int n = int(pathPoints.size());
 		auto vi = tri::Allocator<CMeshO>::AddVertices(pm, n);
 		for (int i = 0; i < n; ++i, ++vi) {
-			vi->P() = m.cm.vert[path.vertices[i]].cP();
-			vi->N() = m.cm.vert[path.vertices[i]].cN();
-			vi->Q() = m.cm.vert[path.vertices[i]].cQ();
+			const tri::SurfacePoint &sp = pathPoints[i];
+			const CFaceO &f = m.cm.face[sp.face];
+			vi->P() = sp.P(m.cm);
+			const Scalarm b0 = Scalarm(sp.bary[0]), b1 = Scalarm(sp.bary[1]), b2 = Scalarm(sp.bary[2]);
+			vi->N() = f.cV(0)->cN() * b0 + f.cV(1)->cN() * b1 + f.cV(2)->cN() * b2;
+			vi->Q() = f.cV(0)->cQ() * b0 + f.cV(1)->cQ() * b1 + f.cV(2)->cQ() * b2;
 		}
 		const int ne = (closed && n >= 3) ? n : n - 1;
 		if (ne > 0) {
@@ -404,8 +553,7 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 	}
 
 	Log("Seed path (%s, %s cost) through %d seeds: %d vertices selected, length %g.",
-	    path.closed ? "closed" : "open", cost == 0 ? "length" : "feature", int(seeds.size()),
-	    int(path.vertices.size()), path.length);
+	    closed ? "closed" : "open", cost == 0 ? "length" : "feature", seedCount, int(pathVertices.size()), pathLength);
 	return true;
 }
 
@@ -458,8 +606,18 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 		return fail(QString("MaxOperations must be between 0 and 1000000, not %1.").arg(maxOps));
 	const bool useQuality = par.getBool("UseQuality");
 	const std::string out = par.getString("OutputFile").trimmed().toStdString();
+	const int energyType = par.getEnum("EnergyType");
+	if (energyType < 0 || energyType >= tri::FeatureEnergyTypeCount())
+		return fail(QString("EnergyType must be 0 (normal variation), 1 (curvature norm), 2 (quadric error) or 3 "
+		                    "(crease distance), not %1.").arg(energyType));
+	const double creaseAngle = par.getFloat("CreaseAngle");
+	if (!(creaseAngle > 0 && creaseAngle < 180))
+		return fail(QString("CreaseAngle must be between 0 and 180 degrees, not %1.").arg(creaseAngle));
+	QString pointSource;
+	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(par, seeds, pointSource);
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	handleSoup(m, par);
 	if (compactIfNeeded(m.cm))
 		Log("Compacted the mesh (it had deleted elements); vertex indices refer to the compacted order.");
 	for (int s : seeds)
@@ -475,10 +633,23 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	QElapsedTimer timer;
 	timer.start();
 	Controller ctl(m.cm);
-	if (useQuality) ctl.UseQualityAsEnergy();
+	if (useQuality) {
+		ctl.UseQualityAsEnergy();
+	} else {
+		ctl.SetCreaseAngle(creaseAngle);
+		ctl.SetEnergySettings(tri::FeatureEnergyType(energyType), kDefaultSmoothingSteps);
+		Log("Geometric snake: %s energy (%d smoothing steps) stored in the vertex quality.",
+		    tri::FeatureEnergyName(tri::FeatureEnergyType(energyType)), kDefaultSmoothingSteps);
+	}
 	ctl.SetParams(p);
-	ctl.SetSeeds(seeds);
-	ctl.CloseSeeds(closed);
+	if (seedPts.empty()) {
+		ctl.SetSeeds(seeds);
+		ctl.CloseSeeds(closed);
+	} else {
+		const auto snap = tri::SeedPointSnap<CMeshO>::Snap(m.cm, seedPts, closed ? 3 : 2, closed);
+		logSnap(snap, pointSource);
+		ctl.CreateSnakeFromSeedPoints(snap.points, closed);
+	}
 	for (const auto &w : ctl.EnsureSurface().Warnings()) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
 	tri::GeometricSnake<CMeshO> &snake = ctl.Get(0);
 	int shown = -1;
@@ -530,7 +701,16 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	    "update (%d embeddings, %d updates).", timer.nsecsElapsed() * 1e-6,
 	    tri::SnakeStats::Median(st.msOperation), tri::SnakeStats::Median(st.msEmbedding),
 	    tri::SnakeStats::Median(st.msUpdate), st.embeddings, st.updates);
-	for (const auto &w : st.warnings) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
+	// Each distinct warning once per run (a frozen segment repeats it at every operation).
+	std::vector<std::pair<std::string, int>> distinct;
+	for (const auto &w : st.warnings) {
+		auto it = std::find_if(distinct.begin(), distinct.end(), [&](const std::pair<std::string, int> &d) { return d.first == w; });
+		if (it == distinct.end()) distinct.push_back({w, 1});
+		else ++it->second;
+	}
+	for (const auto &d : distinct)
+		Log(GLLogStream::WARNING, "Geometric snake: %s%s", d.first.c_str(),
+		    d.second > 1 ? qUtf8Printable(QString(" (%1 times in this run)").arg(d.second)) : "");
 	return true;
 }
 

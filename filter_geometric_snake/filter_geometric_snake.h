@@ -12,6 +12,7 @@
 #define FILTER_GEOMETRIC_SNAKE_H
 
 #include <common/interfaces.h>
+#include <vcg_ext/seed_points.h>
 
 class FilterGeometricSnakePlugin : public QObject, public MeshFilterInterface
 {
@@ -53,6 +54,14 @@ private:
 	/// Adds a layer made of the curves' polylines as vertices and edges.
 	void addCurveLayer(MeshDocument &md, const MeshModel &src, const QString &name,
 	                   const std::vector<std::vector<vcg::Point3d>> &curves, const std::vector<bool> &closed);
+
+	/// Seeds as points (SeedPoints, else SeedFile) when `seeds` (vertex indices) is empty;
+	/// throws if no seed is given at all. Empty when the seed vertices are used.
+	std::vector<vcg::Point3d> seedPointsWanted(const RichParameterList &par, const std::vector<int> &seeds, QString &source);
+	/// A triangle soup is refused with a message naming Merge Close Vertices, or merged (with
+	/// a Log line) when MergeDuplicateVertices is on.
+	void handleSoup(MeshModel &m, const RichParameterList &par);
+	void logSnap(const vcg::tri::SeedPointSnap<CMeshO>::Result &snap, const QString &source);
 
 	/// Sets errorMessage and mirrors it in the Log (meshlabserver prints the Log but
 	/// not errorMessage). Always returns false, for `return fail(...)`.
