@@ -27,6 +27,7 @@
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_mesh_store.h>
+#include <vcg_ext/snake_param_defs.h>
 #include <vcg_ext/triangle_soup.h>
 
 #include <QFileInfo>
@@ -36,43 +37,48 @@ using namespace vcg;
 
 namespace {
 
-constexpr int kDefaultSmoothingSteps = 2;
+const int kDefaultSmoothingSteps = tri::SnakeParamDefs::DefaultSmoothingSteps();
 
-QStringList energyTypeLabels()
+/// MeshLab parameters from the shared definitions (vcg_ext/snake_param_defs.h), which the
+/// geometric-snake program reads too: same names, defaults, ranges and help.
+void addParams(RichParameterList &par, const std::vector<tri::ParamDef> &defs)
 {
-	return QStringList() << "Normal variation" << "Curvature norm" << "Quadric error" << "Crease distance (CAD)";
+	for (const tri::ParamDef &d : defs) {
+		const QString name = QString::fromStdString(d.name), label = QString::fromStdString(d.label);
+		QString help = QString::fromStdString(d.help);
+		if (d.kind == tri::ParamDef::Int || d.kind == tri::ParamDef::Real)
+			help += QString(" Range %1.").arg(QString::fromStdString(d.RangeText()));
+		switch (d.kind) {
+		case tri::ParamDef::Bool: par.addParam(RichBool(name, d.value != 0, label, help)); break;
+		case tri::ParamDef::Int: par.addParam(RichInt(name, int(d.value), label, help)); break;
+		case tri::ParamDef::Real: par.addParam(RichFloat(name, float(d.value), label, help)); break;
+		case tri::ParamDef::Text: par.addParam(RichString(name, QString::fromStdString(d.text), label, help)); break;
+		case tri::ParamDef::Enum: {
+			QStringList labels;
+			for (const auto &c : d.choices) labels << QString::fromStdString(c.label);
+			par.addParam(RichEnum(name, int(d.value), labels, label, help));
+			break;
+		}
+		}
+	}
 }
 
-const char *const kEnergyTypeHelp =
-    "How features are measured. <b>Normal variation</b> (paper, Eq. 6): how much the normals of the faces "
-    "around a vertex differ. <b>Curvature norm</b>: the norm of the principal curvatures. <b>Quadric "
-    "error</b>: the distance error of the vertex's face-plane quadric. These three live at vertices and are "
-    "normalised to [0,1], 0 = feature. <b>Crease distance (CAD)</b>: for CAD tessellations (STL/OBJ/PLY "
-    "exported from a CAD system, flat faces made of long slivers): the sharp edges are found from dihedral "
-    "angles (<i>Crease angle</i>) and the energy at any surface point grows with its distance to the "
-    "nearest crease of its face, 1 - exp(-(d/w)^2), with w = (1 + smoothing steps) % of the bounding box "
-    "diagonal; the vertex quality gets its values at the vertices.";
-
-QString creaseAngleHelp()
+/// The filter's values, checked against the shared ranges (SnakeError on a bad one).
+tri::ParamValues readParams(const RichParameterList &par, const std::vector<tri::ParamDef> &defs)
 {
-	return QString("For the crease energy: an edge whose two faces' normals differ by more than this angle "
-	               "(degrees, in (0, 180)) is a crease. %1 keeps the edges of blocks, bores and pockets and "
-	               "leaves out the facets of cylinders tessellated with 16 or more segments.")
-	    .arg(vcg::tri::CreaseEnergy<CMeshO>::DefaultAngle());
-}
-
-QString seedPointsHelp()
-{
-	return "Seeds as 3D points, used when <i>Seed vertices</i> is empty: <code>x y z; x y z; ...</code> "
-	       "(the mesh's own coordinates). Each is moved to the closest point of the surface; the curve starts "
-	       "and ends exactly there (not at a vertex). Points farther from the surface than 10% of the "
-	       "bounding box diagonal are refused.";
-}
-QString seedFileHelp()
-{
-	return "Seeds from a MeshLab <i>Pick Points</i> file (.pp, saved by Edit > PickPoints), used in the "
-	       "file's order when <i>Seed vertices</i> and <i>Seed points</i> are empty; points left unplaced "
-	       "(inactive) are skipped. Snapped onto the surface like <i>Seed points</i>.";
+	tri::ParamValues v(defs);
+	for (const tri::ParamDef &d : defs) {
+		const QString name = QString::fromStdString(d.name);
+		switch (d.kind) {
+		case tri::ParamDef::Bool: v.SetNumber(d.name, par.getBool(name) ? 1 : 0); break;
+		case tri::ParamDef::Int: v.SetNumber(d.name, par.getInt(name)); break;
+		case tri::ParamDef::Real: v.SetNumber(d.name, par.getFloat(name)); break;
+		case tri::ParamDef::Enum: v.SetNumber(d.name, par.getEnum(name)); break;
+		case tri::ParamDef::Text: v.SetText(d.name, par.getString(name).toStdString()); break;
+		}
+	}
+	v.Check();
+	return v;
 }
 
 QString paperReference()
@@ -90,25 +96,6 @@ bool compactIfNeeded(CMeshO &m)
 		return false;
 	tri::Allocator<CMeshO>::CompactEveryVector(m);
 	return true;
-}
-
-/// Seeds given as points (SeedPoints text, else the SeedFile .pp), for when Seeds is empty.
-/// Empty if neither is given; `source` says where they came from, for the Log.
-std::vector<vcg::Point3d> seedPointsFrom(const RichParameterList &par, QString &source)
-{
-	const std::string text = par.getString("SeedPoints").toStdString();
-	const std::string file = par.getString("SeedFile").trimmed().toStdString();
-	std::vector<vcg::Point3d> pts = tri::SeedPointsParser::Parse(text);
-	if (!pts.empty()) {
-		if (!file.empty())
-			throw tri::SnakeError("Both SeedPoints and SeedFile are given: use one of them.");
-		source = "the SeedPoints coordinates";
-		return pts;
-	}
-	if (file.empty()) return pts;
-	pts = tri::SeedPointsParser::Active(tri::SeedPointsParser::ReadPickPointsFile(file));
-	source = QString("the Pick Points file %1").arg(QString::fromStdString(file));
-	return pts;
 }
 
 } // namespace
@@ -235,101 +222,10 @@ int FilterGeometricSnakePlugin::postCondition(QAction *a) const
 void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/, RichParameterList &par)
 {
 	switch (ID(a)) {
-	case FP_FEATURE_ENERGY:
-		par.addParam(RichEnum("EnergyType", 0, energyTypeLabels(), "Energy type", kEnergyTypeHelp));
-		par.addParam(RichInt("SmoothingSteps", kDefaultSmoothingSteps, "Smoothing steps",
-		    "Number of Laplacian smoothing passes over the per-vertex energy before normalisation "
-		    "(0 = none, at most 10000). A little smoothing removes noise and widens the basin of "
-		    "attraction of features. For the crease energy it widens the basin by distance: w = (1 + "
-		    "steps) % of the bounding box diagonal."));
-		par.addParam(RichFloat("CreaseAngle", float(vcg::tri::CreaseEnergy<CMeshO>::DefaultAngle()),
-		    "Crease angle", creaseAngleHelp()));
-		par.addParam(RichBool("MergeDuplicateVertices", false, "Merge duplicate vertices",
-		    "If the mesh is a triangle soup (its faces do not share vertices, as in STL files), merge the "
-		    "vertices at identical positions first (like Filters > Cleaning and Repairing > Merge Close "
-		    "Vertices with distance 0; vertex indices change). Off: a soup is refused with a message."));
-		par.addParam(RichBool("Colorize", true, "Colorize by energy",
-		    "Also colour the vertices by the energy with MeshLab's quality colour ramp over [0,1] "
-		    "(red = feature, blue = flat). Adds per-vertex colour to the mesh."));
-		break;
-	case FP_SEED_PATH:
-		par.addParam(RichString("Seeds", "", "Seed vertices",
-		    "Comma-separated 0-based vertex indices, in file order (the order of the vertices in the "
-		    "loaded file), e.g. <code>0, 57, 112</code>. At least two; the path visits them in "
-		    "this order."));
-		par.addParam(RichString("SeedPoints", "", "Seed points", seedPointsHelp()));
-		par.addParam(RichString("SeedFile", "", "Seed file (.pp)", seedFileHelp()));
-		par.addParam(RichBool("Closed", false, "Closed path",
-		    "Also join the last seed back to the first one (a closed snake)."));
-		par.addParam(RichEnum("Cost", 0, QStringList() << "Length" << "Feature", "Path cost",
-		    "<b>Length</b>: shortest path along edges. <b>Feature</b>: edge lengths weighted by the "
-		    "vertex quality (the feature energy, expected in [0,1]) so the path prefers features; "
-		    "if the mesh has no vertex quality, the normal-variation energy is computed first and "
-		    "stored in the vertex quality."));
-		par.addParam(RichBool("MergeDuplicateVertices", false, "Merge duplicate vertices",
-		    "If the mesh is a triangle soup (its faces do not share vertices, as in STL files), merge the "
-		    "vertices at identical positions first (like Filters > Cleaning and Repairing > Merge Close "
-		    "Vertices with distance 0; vertex indices change). Off: a soup is refused with a message."));
-		par.addParam(RichBool("NewLayer", true, "Add path as new layer",
-		    "Also add the path as a new layer named \"Seed path\" made of its vertices and edges. "
-		    "The current layer stays the input mesh."));
-		break;
-	case FP_SNAKE: {
-		const vcg::tri::SnakeParams d;
-		par.addParam(RichString("Seeds", "", "Seed vertices",
-		    "Comma-separated 0-based vertex indices, in file order, near the feature to capture, in "
-		    "the order the curve visits them (at least 2; 3 for a closed snake)."));
-		par.addParam(RichString("SeedPoints", "", "Seed points", seedPointsHelp()));
-		par.addParam(RichString("SeedFile", "", "Seed file (.pp)", seedFileHelp()));
-		par.addParam(RichBool("Closed", false, "Closed snake", "Join the last seed back to the first: a closed curve."));
-		par.addParam(RichEnum("EnergyType", 0, energyTypeLabels(), "Energy type",
-		    QString(kEnergyTypeHelp) + " Computed with 2 smoothing steps and stored in the vertex quality; "
-		    "<i>Use vertex quality</i> overrides it."));
-		par.addParam(RichFloat("CreaseAngle", float(vcg::tri::CreaseEnergy<CMeshO>::DefaultAngle()),
-		    "Crease angle", creaseAngleHelp()));
-		par.addParam(RichFloat("Alpha", float(d.alpha), "Alpha (tension)",
-		    "Weight of the first-derivative (tension) term of the spline energy, Eq. 2. Scale-free "
-		    "(positions are measured in mean edge lengths). Range [0, 10000]."));
-		par.addParam(RichFloat("Beta", float(d.beta), "Beta (rigidity)",
-		    "Weight of the second-derivative (rigidity) term of the spline energy, Eq. 2: larger "
-		    "gives smoother curves. Range [0, 10000]."));
-		par.addParam(RichFloat("Gamma", float(d.gamma), "Gamma (inverse step)",
-		    "Inverse time step of the update, Eq. 4: larger moves the snake in smaller, steadier "
-		    "steps. Range (0, 1e6]."));
-		par.addParam(RichFloat("ExternalWeight", float(d.externalWeight), "External weight",
-		    "Weight of the feature force (the gradient of the energy, which lies in [0,1]) against "
-		    "the spline energy. Range [0, 10000]."));
-		par.addParam(RichFloat("Spacing", float(d.spacing), "Sample spacing",
-		    "Distance between snake samples, in mean edge lengths of the mesh. Range [0.05, 1000]."));
-		par.addParam(RichInt("MaxOperations", 500, "Max operations",
-		    "Upper limit on snake operations (one embedding + up to 5 updates each); the snake "
-		    "usually converges much earlier. Range [0, 1000000]."));
-		par.addParam(RichEnum("Method", 0, QStringList() << "Local embedding (paper)" << "3D update + projection",
-		    "Method", "<b>Local embedding</b>: the paper's method, updates in the plane of a local "
-		    "parameterization. <b>3D update + projection</b>: the naive alternative of Sec. 4.2, for "
-		    "comparison."));
-		par.addParam(RichBool("UseQuality", false, "Use vertex quality",
-		    "Take the feature energy from the current vertex quality (low = feature; any range, it "
-		    "is normalized) instead of computing the normal-variation energy."));
-		par.addParam(RichBool("MergeDuplicateVertices", false, "Merge duplicate vertices",
-		    "If the mesh is a triangle soup (its faces do not share vertices, as in STL files), merge the "
-		    "vertices at identical positions first (like Filters > Cleaning and Repairing > Merge Close "
-		    "Vertices with distance 0; vertex indices change). Off: a soup is refused with a message."));
-		par.addParam(RichString("OutputFile", "", "Output file",
-		    "Where to write the final curve; the extension chooses the format: .json (samples, "
-		    "initial and final curve, timings), .obj (l records) or .ply (edges). Empty: no file."));
-		par.addParam(RichBool("NewLayer", true, "Add curve as new layer",
-		    "Also add the final curve as a new layer made of vertices and edges."));
-		break;
-	}
-	case FP_EXPORT:
-		par.addParam(RichString("OutputFile", "", "Output file",
-		    "File to write: .json, .obj or .ply (by extension)."));
-		par.addParam(RichEnum("Which", 0, QStringList() << "All snakes" << "Selected snake", "Which snakes",
-		    "All the snakes kept on the mesh, or only the one selected in the edit tool."));
-		par.addParam(RichBool("NewLayer", false, "Add curves as new layer",
-		    "Also add the curves as a new layer made of vertices and edges."));
-		break;
+	case FP_FEATURE_ENERGY: addParams(par, tri::SnakeParamDefs::FeatureEnergy()); break;
+	case FP_SEED_PATH: addParams(par, tri::SnakeParamDefs::SeedPath()); break;
+	case FP_SNAKE: addParams(par, tri::SnakeParamDefs::Snake()); break;
+	case FP_EXPORT: addParams(par, tri::SnakeParamDefs::Export()); break;
 	default: break;
 	}
 }
@@ -366,18 +262,21 @@ bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, 
 	}
 }
 
-std::vector<vcg::Point3d> FilterGeometricSnakePlugin::seedPointsWanted(const RichParameterList &par,
+std::vector<vcg::Point3d> FilterGeometricSnakePlugin::seedPointsWanted(const tri::ParamValues &v,
                                                                        const std::vector<int> &seeds, QString &source)
 {
 	if (!seeds.empty()) {
-		if (!par.getString("SeedPoints").trimmed().isEmpty() || !par.getString("SeedFile").trimmed().isEmpty())
+		if (!QString::fromStdString(v.Text("SeedPoints")).trimmed().isEmpty() ||
+		    !QString::fromStdString(v.Text("SeedFile")).trimmed().isEmpty())
 			Log(GLLogStream::WARNING, "Geometric snake: seed vertices are given, so SeedPoints and SeedFile are ignored.");
 		return {};
 	}
-	std::vector<vcg::Point3d> pts = seedPointsFrom(par, source);
+	std::string src;
+	std::vector<vcg::Point3d> pts = tri::SeedPointsParser::FromTextOrFile(v.Text("SeedPoints"), v.Text("SeedFile"), src);
 	if (pts.empty())
 		throw tri::SnakeError("No seeds given: fill Seed vertices (vertex indices), Seed points (\"x y z; x y z\") "
 		                      "or Seed file (a MeshLab Pick Points .pp file).");
+	source = QString::fromStdString(src);
 	return pts;
 }
 
@@ -389,14 +288,11 @@ void FilterGeometricSnakePlugin::logSnap(const vcg::tri::SeedPointSnap<CMeshO>::
 	    int(snap.points.size()), qUtf8Printable(source), worst, 100.0 * worst / std::max(snap.bboxDiagonal, 1e-300));
 }
 
-void FilterGeometricSnakePlugin::handleSoup(MeshModel &m, const RichParameterList &par)
+void FilterGeometricSnakePlugin::handleSoup(MeshModel &m, bool merge)
 {
-	typedef tri::TriangleSoup<CMeshO> Soup;
-	const Soup::Report r = Soup::Inspect(m.cm);
-	if (!r.soup) return;
-	if (!par.getBool("MergeDuplicateVertices")) throw tri::SnakeError(Soup::Message(r));
 	const int vn = m.cm.vn;
-	const int merged = Soup::Merge(m.cm);
+	const int merged = tri::TriangleSoup<CMeshO>::Handle(m.cm, merge);
+	if (merged < 0) return;
 	m.clearDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
 	tri::UpdateBounding<CMeshO>::Box(m.cm);
 	Log("The mesh was a triangle soup: merged %d duplicate vertices (%d -> %d vertices, %d faces); vertex indices "
@@ -406,21 +302,14 @@ void FilterGeometricSnakePlugin::handleSoup(MeshModel &m, const RichParameterLis
 bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
-	const int type = par.getEnum("EnergyType");
-	const int steps = par.getInt("SmoothingSteps");
-	const bool colorize = par.getBool("Colorize");
-	const double creaseAngle = par.getFloat("CreaseAngle");
-
-	if (type < 0 || type >= tri::FeatureEnergyTypeCount())
-		return fail(QString("EnergyType must be 0 (normal variation), 1 (curvature norm), 2 (quadric "
-		                    "error) or 3 (crease distance), not %1.").arg(type));
-	if (!(creaseAngle > 0 && creaseAngle < 180))
-		return fail(QString("CreaseAngle must be between 0 and 180 degrees, not %1.").arg(creaseAngle));
-	if (steps < 0 || steps > kMaxSmoothingSteps)
-		return fail(QString("SmoothingSteps must be between 0 and %1, not %2.").arg(kMaxSmoothingSteps).arg(steps));
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::FeatureEnergy());
+	const int type = v.Enum("EnergyType");
+	const int steps = v.Int("SmoothingSteps");
+	const bool colorize = v.Bool("Colorize");
+	const double creaseAngle = v.Real("CreaseAngle");
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
-	handleSoup(m, par);
+	handleSoup(m, v.Bool("MergeDuplicateVertices"));
 	// FeatureEnergy needs no optional component (no adjacency, no curvature fields):
 	// only the (always allocated) vertex quality, which the mask marks as meaningful.
 	m.updateDataMask(MeshModel::MM_VERTQUALITY);
@@ -454,19 +343,17 @@ bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const Rich
 bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
-	const std::string seedText = par.getString("Seeds").toStdString();
-	const bool closed = par.getBool("Closed");
-	const int cost = par.getEnum("Cost");
-	const bool newLayer = par.getBool("NewLayer");
-
-	if (cost < 0 || cost > 1)
-		return fail(QString("Cost must be 0 (length) or 1 (feature), not %1.").arg(cost));
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::SeedPath());
+	const std::string seedText = v.Text("Seeds");
+	const bool closed = v.Bool("Closed");
+	const int cost = v.Enum("Cost");
+	const bool newLayer = v.Bool("NewLayer");
 
 	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(seedText);
 	QString pointSource;
-	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(par, seeds, pointSource);
+	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(v, seeds, pointSource);
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
-	handleSoup(m, par);
+	handleSoup(m, v.Bool("MergeDuplicateVertices"));
 	if (compactIfNeeded(m.cm))
 		Log("Compacted the mesh (it had deleted elements); vertex indices refer to the compacted order.");
 	for (int s : seeds)
@@ -506,7 +393,7 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 		for (size_t f = 0; f < m.cm.face.size(); ++f)
 			if (!m.cm.face[f].IsD())
 				for (int k = 0; k < 3; ++k) corner[tri::Index(m.cm, m.cm.face[f].cV(k))] = tri::SurfacePoint::AtCorner(int(f), k);
-		for (int v : path.vertices) pathPoints.push_back(corner[v]);
+		for (int vtx : path.vertices) pathPoints.push_back(corner[vtx]);
 	} else {
 		const auto snap = tri::SeedPointSnap<CMeshO>::Snap(m.cm, seedPts, closed ? 3 : 2, closed);
 		logSnap(snap, pointSource);
@@ -533,8 +420,8 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 		for (int i = 0; i < n; ++i, ++vi) {
 			const tri::SurfacePoint &sp = pathPoints[i];
 			const CFaceO &f = m.cm.face[sp.face];
-			vi->P() = sp.P(m.cm);
 			const Scalarm b0 = Scalarm(sp.bary[0]), b1 = Scalarm(sp.bary[1]), b2 = Scalarm(sp.bary[2]);
+			vi->P() = sp.P(m.cm);
 			vi->N() = f.cV(0)->cN() * b0 + f.cV(1)->cN() * b1 + f.cV(2)->cN() * b2;
 			vi->Q() = f.cV(0)->cQ() * b0 + f.cV(1)->cQ() * b1 + f.cV(2)->cQ() * b2;
 		}
@@ -589,35 +476,19 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	typedef tri::SnakeController<CMeshO> Controller;
 	MeshModel &m = *md.mm();
 	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(par.getString("Seeds").toStdString());
-	const bool closed = par.getBool("Closed");
-	tri::SnakeParams p;
-	p.alpha = par.getFloat("Alpha");
-	p.beta = par.getFloat("Beta");
-	p.gamma = par.getFloat("Gamma");
-	p.externalWeight = par.getFloat("ExternalWeight");
-	p.spacing = par.getFloat("Spacing");
-	const int method = par.getEnum("Method");
-	if (method < 0 || method > 1)
-		return fail(QString("Method must be 0 (local embedding) or 1 (3D update + projection), not %1.").arg(method));
-	p.method = tri::SnakeMethod(method);
-	p.Validate();
-	const int maxOps = par.getInt("MaxOperations");
-	if (maxOps < 0 || maxOps > 1000000)
-		return fail(QString("MaxOperations must be between 0 and 1000000, not %1.").arg(maxOps));
-	const bool useQuality = par.getBool("UseQuality");
-	const std::string out = par.getString("OutputFile").trimmed().toStdString();
-	const int energyType = par.getEnum("EnergyType");
-	if (energyType < 0 || energyType >= tri::FeatureEnergyTypeCount())
-		return fail(QString("EnergyType must be 0 (normal variation), 1 (curvature norm), 2 (quadric error) or 3 "
-		                    "(crease distance), not %1.").arg(energyType));
-	const double creaseAngle = par.getFloat("CreaseAngle");
-	if (!(creaseAngle > 0 && creaseAngle < 180))
-		return fail(QString("CreaseAngle must be between 0 and 180 degrees, not %1.").arg(creaseAngle));
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::Snake());
+	const bool closed = v.Bool("Closed");
+	const tri::SnakeParams p = tri::SnakeParamDefs::ToSnakeParams(v);
+	const int method = int(p.method);
+	const int maxOps = v.Int("MaxOperations");
+	const bool useQuality = v.Bool("UseQuality");
+	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
+	const int energyType = v.Enum("EnergyType");
 	QString pointSource;
-	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(par, seeds, pointSource);
+	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(v, seeds, pointSource);
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
-	handleSoup(m, par);
+	handleSoup(m, v.Bool("MergeDuplicateVertices"));
 	if (compactIfNeeded(m.cm))
 		Log("Compacted the mesh (it had deleted elements); vertex indices refer to the compacted order.");
 	for (int s : seeds)
@@ -636,7 +507,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	if (useQuality) {
 		ctl.UseQualityAsEnergy();
 	} else {
-		ctl.SetCreaseAngle(creaseAngle);
+		ctl.SetCreaseAngle(v.Real("CreaseAngle"));
 		ctl.SetEnergySettings(tri::FeatureEnergyType(energyType), kDefaultSmoothingSteps);
 		Log("Geometric snake: %s energy (%d smoothing steps) stored in the vertex quality.",
 		    tri::FeatureEnergyName(tri::FeatureEnergyType(energyType)), kDefaultSmoothingSteps);
@@ -672,7 +543,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 		tri::SnakeIO<CMeshO>::WriteCurves(out, list);
 		Log("Wrote the curve to %s.", out.c_str());
 	}
-	if (par.getBool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {curve}, {closed});
+	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {curve}, {closed});
 
 	// Keep the snake on the mesh with any the user already has there: curves are never lost.
 	nlohmann::json session = ctl.ToJson();
@@ -717,9 +588,10 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
-	const std::string out = par.getString("OutputFile").trimmed().toStdString();
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::Export());
+	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
 	if (out.empty()) return fail("OutputFile is empty: give a .json, .obj or .ply file name.");
-	const bool all = par.getEnum("Which") == 0;
+	const bool all = v.Enum("Which") == 0;
 
 	std::string session = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
 	QString source = "the mesh";
@@ -772,7 +644,7 @@ bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParamet
 		closed.push_back(s->Closed());
 	}
 	tri::SnakeIO<CMeshO>::WriteCurves(out, list);
-	if (par.getBool("NewLayer")) addCurveLayer(md, m, "Geometric snake curves", curves, closed);
+	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake curves", curves, closed);
 	Log("Exported %d geometric snake(s) from %s to %s.", int(list.size()), qUtf8Printable(source), out.c_str());
 	return true;
 }

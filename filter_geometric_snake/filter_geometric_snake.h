@@ -13,6 +13,7 @@
 
 #include <common/interfaces.h>
 #include <vcg_ext/seed_points.h>
+#include <vcg_ext/snake_param_defs.h>
 
 class FilterGeometricSnakePlugin : public QObject, public MeshFilterInterface
 {
@@ -29,9 +30,6 @@ public:
 		FP_SNAKE = 2,
 		FP_EXPORT = 3
 	};
-
-	// Parameter limits shared by the GUI dialog and the scripted path.
-	static constexpr int kMaxSmoothingSteps = 10000;
 
 	FilterGeometricSnakePlugin();
 
@@ -57,11 +55,12 @@ private:
 
 	/// Seeds as points (SeedPoints, else SeedFile) when `seeds` (vertex indices) is empty;
 	/// throws if no seed is given at all. Empty when the seed vertices are used.
-	std::vector<vcg::Point3d> seedPointsWanted(const RichParameterList &par, const std::vector<int> &seeds, QString &source);
-	/// A triangle soup is refused with a message naming Merge Close Vertices, or merged (with
-	/// a Log line) when MergeDuplicateVertices is on.
-	void handleSoup(MeshModel &m, const RichParameterList &par);
+	std::vector<vcg::Point3d> seedPointsWanted(const vcg::tri::ParamValues &v, const std::vector<int> &seeds,
+	                                           QString &source);
 	void logSnap(const vcg::tri::SeedPointSnap<CMeshO>::Result &snap, const QString &source);
+	/// A triangle soup is refused with a message naming Merge Close Vertices, or merged (with
+	/// a Log line) when `merge` (the MergeDuplicateVertices parameter).
+	void handleSoup(MeshModel &m, bool merge);
 
 	/// Sets errorMessage and mirrors it in the Log (meshlabserver prints the Log but
 	/// not errorMessage). Always returns false, for `return fail(...)`.

@@ -41,6 +41,11 @@
 namespace vcg {
 namespace tri {
 
+/// Dihedral angle (between the two face normals) above which an edge is a crease. 30
+/// degrees keeps the edges of a block, a bore or a pocket (90) and fandisk's soft creases
+/// (~25-60), and leaves out the facets of cylinders tessellated with 16 or more segments.
+inline double DefaultCreaseAngle() { return 30.0; }
+
 template <class MeshType>
 class CreaseEnergy
 {
@@ -49,10 +54,7 @@ public:
     typedef typename MeshType::VertexType VertexType;
     typedef MeshValidation<MeshType> MV;
 
-    /// Dihedral angle (between the two face normals) above which an edge is a crease. 30
-    /// degrees keeps the edges of a block, a bore or a pocket (90) and fandisk's soft creases
-    /// (~25-60), and leaves out the facets of cylinders tessellated with 16 or more segments.
-    static double DefaultAngle() { return 30.0; }
+    static double DefaultAngle() { return DefaultCreaseAngle(); }
     /// Basin width per smoothing step, as a fraction of the bounding box diagonal: with
     /// `steps` smoothing steps, w = (1 + steps) * BaseWidth() * diagonal.
     static double BaseWidthFraction() { return 0.01; }

@@ -10,6 +10,7 @@
 // command line program and the fuzz targets all call these same functions.
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -163,6 +164,25 @@ public:
         } catch (const SnakeError &e) {
             throw SnakeError(std::string(e.what()) + " (file \"" + path + "\")");
         }
+    }
+
+    /// Seeds as the filters and the program take them: the SeedPoints text, else the active
+    /// points of the SeedFile (.pp); `source` says which, for the Log. Empty if neither is
+    /// given; both given is an error.
+    static std::vector<vcg::Point3d> FromTextOrFile(const std::string &text, std::string file, std::string &source)
+    {
+        while (!file.empty() && std::isspace(static_cast<unsigned char>(file.back()))) file.pop_back();
+        while (!file.empty() && std::isspace(static_cast<unsigned char>(file.front()))) file.erase(file.begin());
+        std::vector<vcg::Point3d> pts = Parse(text);
+        if (!pts.empty()) {
+            if (!file.empty()) throw SnakeError("Both SeedPoints and SeedFile are given: use one of them.");
+            source = "the SeedPoints coordinates";
+            return pts;
+        }
+        if (file.empty()) return pts;
+        pts = Active(ReadPickPointsFile(file));
+        source = "the Pick Points file " + file;
+        return pts;
     }
 
     /// The placed (active) points, in order: what Pick Points' own "get points" returns.

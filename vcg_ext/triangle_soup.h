@@ -16,6 +16,7 @@
 #include <vcg/complex/algorithms/clean.h>
 
 #include "mesh_validation.h"
+#include "snake_error.h"
 
 namespace vcg {
 namespace tri {
@@ -64,6 +65,16 @@ public:
                " vertices repeat the position of another one (as in STL files), so its faces are not connected "
                "and a snake cannot cross from one face to the next. Merge them first with MeshLab's Filters > "
                "Cleaning and Repairing > Merge Close Vertices, or turn on \"Merge duplicate vertices\" here.";
+    }
+
+    /// What the filters do: nothing for a mesh that is not a soup (returns -1); a soup is
+    /// refused with Message() unless `merge`, then merged (returns the vertices merged).
+    static int Handle(MeshType &m, bool merge)
+    {
+        const Report r = Inspect(m);
+        if (!r.soup) return -1;
+        if (!merge) throw SnakeError(Message(r));
+        return Merge(m);
     }
 
     /// Merges vertices at identical positions (vcglib's Clean::RemoveDuplicateVertex), drops
