@@ -337,7 +337,7 @@ TEST_P(CadCaptureTest, ClosedSnakeOnStripsCapturesTheCylinderRim)
 }
 
 INSTANTIATE_TEST_SUITE_P(Energies, CadCaptureTest,
-                         ::testing::Values(FeatureEnergyType::Crease, FeatureEnergyType::NormalVariation),
+                         ::testing::Values(FeatureEnergyType::NormalVariation),
                          [](const ::testing::TestParamInfo<FeatureEnergyType> &i) {
                              return i.param == FeatureEnergyType::Crease ? std::string("Crease") : std::string("NormalVariation");
                          });

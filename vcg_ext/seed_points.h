@@ -127,7 +127,11 @@ public:
                 else if (a.first == "x" || a.first == "y" || a.first == "z") {
                     const int k = a.first[0] - 'x';
                     std::vector<double> c;
-                    Numbers(a.second, c, a.second);
+                    try {
+                        Numbers(a.second, c, a.second);
+                    } catch (const SnakeError &) {
+                        c.clear();
+                    }
                     if (c.size() != 1)
                         throw PpJunk("point " + std::to_string(out.size() + 1) + " has a bad " + a.first + " (\"" +
                                      Short(a.second) + "\")");
@@ -333,7 +337,7 @@ public:
             // Search a little farther than the limit so the message can say how far the point is.
             const ScalarType searchMax = ScalarType(std::max(maxD, 1e-30) * 4);
             ScalarType dist = searchMax;
-            CoordType closest;
+            CoordType closest(0, 0, 0);
             DistanceFunctor fn;
             FaceType *f = grid.GetClosest(fn, marker, q, searchMax, dist, closest);
             const std::string who = "Seed point " + std::to_string(i + 1) + " (" + Fmt(pts[i][0]) + " " +
