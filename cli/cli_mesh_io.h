@@ -5,10 +5,12 @@
 // exporters, read as MeshLab 2020.09 reads them (so the program and the filters see the same
 // mesh), and written safely: to a temporary file next to the target, then renamed over it.
 
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <functional>
@@ -42,6 +44,26 @@ inline std::string Extension(const std::string &path)
     return e;
 }
 
+/// False for a file vcglib's ASCII STL reader would never finish: no line break at all (it skips
+/// the first line with getc until '\n') and not the size of a binary STL.
+inline bool HasNewlineOrBinaryStlSize(const std::string &path, long long size)
+{
+    FILE *f = std::fopen(path.c_str(), "rb");
+    if (!f) return false;
+    unsigned char head[84];
+    bool ok = false;
+    if (std::fread(head, 1, 84, f) == 84) {
+        uint32_t n;
+        std::memcpy(&n, head + 80, 4);
+        ok = size == 84 + 50LL * n;
+    }
+    std::rewind(f);
+    char buf[65536];
+    for (size_t got; !ok && (got = std::fread(buf, 1, sizeof buf, f)) > 0;) ok = std::memchr(buf, '\n', got) != nullptr;
+    std::fclose(f);
+    return ok;
+}
+
 /// A mesh as MeshLab opens it: the vcglib importer of its format, the optional components the
 /// file needs, STL vertices unified, normals and bounding box updated (meshlabserver's
 /// loadMesh). `mask` receives what the file held (vcg::tri::io::Mask bits).
@@ -54,8 +76,11 @@ inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
     if (S_ISDIR(st.st_mode)) throw SnakeError("\"" + path + "\" is a folder, not a mesh file.");
     if (::access(path.c_str(), R_OK) != 0)
         throw SnakeError("Cannot read the mesh \"" + path + "\": " + std::strerror(errno) + ".");
+    if (st.st_size == 0) throw SnakeError("Cannot read the mesh \"" + path + "\": the file is empty.");
     const std::string ext = Extension(path);
     const char *fn = path.c_str();
+    if (ext == "stl" && !HasNewlineOrBinaryStlSize(path, st.st_size)) // vcglib's ASCII reader loops forever on it
+        throw SnakeError("Cannot read the mesh \"" + path + "\": not a readable STL file.");
     auto enable = [&m](int mk) { // MeshModel::Enable: the optional components the file fills
         if (mk & io::Mask::IOM_VERTTEXCOORD) m.vert.EnableTexCoord();
         if (mk & io::Mask::IOM_WEDGTEXCOORD) m.face.EnableWedgeTexCoord();
@@ -142,17 +167,35 @@ inline void CheckWritable(const std::string &path, const std::vector<std::string
         throw SnakeError("Cannot write " + what + " \"" + path + "\": the folder \"" + dir + "\" is not writable.");
 }
 
+/// The temporary file AtomicWrite uses for `path` in process `pid` (any counter): "<dir>/.<name>.tmp<pid>-".
+inline std::string TempPrefix(const std::string &path, long pid)
+{
+    const size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    return dir + "." + path.substr(dir.size()) + ".tmp" + std::to_string(pid) + "-";
+}
+
+/// Removes what AtomicWrite of process `pid` may have left for `path` when the process was killed.
+inline void RemoveTemporaries(const std::string &path, long pid)
+{
+    const std::string prefix = TempPrefix(path, pid);
+    const size_t slash = prefix.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : prefix.substr(0, slash);
+    const std::string stem = prefix.substr(slash == std::string::npos ? 0 : slash + 1);
+    if (DIR *d = ::opendir(dir.c_str())) {
+        while (dirent *e = ::readdir(d))
+            if (std::strncmp(e->d_name, stem.c_str(), stem.size()) == 0) std::remove((dir + "/" + e->d_name).c_str());
+        ::closedir(d);
+    }
+}
+
 /// Writes through `writer(tmp)` into a temporary file in the target's folder (same extension,
 /// so format-by-extension writers work), then renames it over `path`: a failure leaves no
 /// partial file and never truncates an existing one.
 inline void AtomicWrite(const std::string &path, const std::function<void(const std::string &)> &writer)
 {
-    const size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-    const std::string base = path.substr(dir.size());
     static int counter = 0;
-    const std::string tmp = dir + "." + base + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(++counter) +
-                            "." + Extension(path);
+    const std::string tmp = TempPrefix(path, long(::getpid())) + std::to_string(++counter) + "." + Extension(path);
     try {
         writer(tmp);
         if (std::rename(tmp.c_str(), path.c_str()) != 0)

@@ -11,6 +11,7 @@
 // read the way MeshLab reads it, so both give the same curve; the CLI test checks that.
 
 #include <sys/wait.h>
+#include <csignal>
 #include <unistd.h>
 
 #include <algorithm>
@@ -64,25 +65,20 @@ struct Command
     const std::vector<ParamDef> *defs;
     std::vector<std::string> outputs; ///< formats of -o
     bool outputRequired;
-    std::string synopsis, summary;
+    std::string summary;
 };
 
 const std::vector<Command> &Commands()
 {
     static const std::vector<Command> c = {
         {"energy", &SnakeParamDefs::FeatureEnergy(), {"ply"}, true,
-         "energy MESH [--type normal|curvature|quadric] [--smoothing K] [--no-colorize] -o OUT.ply",
          "Computes the feature energy (0 on features, 1 on flat regions) into the vertex quality and writes the "
          "mesh with it (filter \"Compute Geometric Snake Feature Energy\")."},
         {"snake", &SnakeParamDefs::Snake(), {"json", "obj", "ply"}, false,
-         "snake MESH --seeds \"i,j,k\" [--closed] [--alpha A] [--beta B] [--gamma G] [--external-weight W] "
-         "[--spacing S] [--max-operations N] [--method embedding|projection] [--use-quality] "
-         "-o OUT.json|.obj|.ply [--mesh-out MESH.ply]",
          "Runs a geometric snake from seed vertices onto the nearby feature and writes the curve: .json (the "
          "JSON contract: samples, initial and final curve, stats), .obj (l records) or .ply (edges) (filter "
          "\"Geometric Snake from Seed Vertices\")."},
         {"path", &SnakeParamDefs::SeedPath(), {"ply", "obj", "json"}, true,
-         "path MESH --seeds \"i,j,k\" [--closed] [--cost length|feature] -o OUT.ply|.obj|.json",
          "Joins the seed vertices by shortest paths along mesh edges (the snake's initial curve) and writes "
          "the path as vertices and edges (filter \"Geometric Snake Seed Path\")."},
     };
@@ -126,6 +122,7 @@ std::string Wrap(const std::string &text, size_t indent)
         line += (line.empty() ? "" : " ") + word;
     }
     if (!line.empty()) out += pad + line + "\n";
+    std::replace(out.begin(), out.end(), '\1', ' ');
     return out;
 }
 
@@ -135,9 +132,26 @@ std::string OptionHelp(const std::string &head, const std::string &text)
     return s + Wrap(text, 6);
 }
 
+/// "snake MESH [--seeds TEXT] [--closed] [--alpha X] ... -o OUT.json|.obj|.ply", from the definitions.
+std::string Synopsis(const Command &c)
+{
+    std::string s = c.name + " MESH";
+    for (const ParamDef &d : *c.defs) {
+        if (d.option.empty()) continue;
+        static const char *const arg[] = {"", "\1N", "\1X", "", "\1TEXT"}; // \1: a space Wrap keeps
+        s += " [--" + d.option + (d.kind == ParamDef::Enum ? "\1" + d.RangeText() : arg[d.kind]) + "]";
+    }
+    std::string outs;
+    for (const auto &o : c.outputs) outs += (outs.empty() ? "OUT." : "|.") + o;
+    s += c.outputRequired ? " -o\1" + outs : " [-o\1" + outs + "]";
+    if (c.name == "snake") s += " [--mesh-out\1MESH.ply]";
+    return s + " [--json-log] [-q]";
+}
+
 std::string CommandHelp(const Command &c)
 {
-    std::string s = std::string("usage: ") + kProgram + " " + c.synopsis + "\n\n" + Wrap(c.summary, 0) + "\noptions:\n";
+    std::string s = "usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(c), 2) + "\n" + Wrap(c.summary, 0) +
+                    "\noptions:\n";
     for (const ParamDef &d : *c.defs) {
         if (d.option.empty()) continue;
         std::string head = "--" + d.option;
@@ -170,7 +184,7 @@ std::string CommandHelp(const Command &c)
 std::string MainHelp()
 {
     std::string s = std::string("usage: ") + kProgram + " COMMAND MESH [options]\n       " + kProgram +
-                    " --batch CASES.jsonl [--jobs N] [--json-log]\n\n" +
+                    " --batch CASES.jsonl [--jobs N] [--timeout S] [--json-log]\n\n" +
                     Wrap("Geometric snakes (Lee & Lee, Eurographics 2002) on triangle meshes, without MeshLab: "
                          "the same engine, parameters and outputs as the MeshLab filters. MESH is a .ply, .off, "
                          ".obj or .stl file; vertex indices are 0-based, in file order.", 0) +
@@ -190,6 +204,8 @@ std::string MainHelp()
                                     "N, \"line\": L, \"ok\": false, \"error\": \"...\"}), then with --json-log a "
                                     "summary line.") +
          OptionHelp("-j, --jobs N", "Cases run at once (default: the number of cores).") +
+         OptionHelp("--timeout S", "Stop a case that runs longer than S seconds and report it as an error "
+                                   "(default: no limit).") +
          "\nexit status: 0 success; 1 the run failed (bad mesh, seeds, parameters or files; in a batch: any "
          "case failed); 2 bad command line.\n"
          "Outputs are written to a temporary file and renamed into place: a failed run leaves no partial\n"
@@ -227,7 +243,7 @@ void SetOption(Job &job, const std::string &key, const std::string &value, bool 
 /// Validates a job before any work: parameters, outputs (format, folder, not the input).
 void CheckJob(Job &job)
 {
-    if (job.mesh.empty()) throw UsageError("No mesh given: " + std::string(kProgram) + " " + job.cmd->synopsis);
+    if (job.mesh.empty()) throw UsageError("No mesh given. Usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(*job.cmd), 2));
     job.values->Check(true);
     if (job.output.empty() && job.cmd->outputRequired)
         throw UsageError("No output file: give -o FILE (" + job.cmd->name + " writes " + job.cmd->outputs[0] + ").");
@@ -455,6 +471,19 @@ json Run(Job &job)
     json r = {{"command", job.cmd->name}, {"mesh", job.mesh}};
     if (!job.output.empty()) r["output"] = job.output;
     if (!job.meshOut.empty()) r["mesh_out"] = job.meshOut;
+    json par = json::object(); // the values used, by option name: a batch's results say what they ran
+    for (const ParamDef &d : *job.cmd->defs) {
+        if (d.option.empty()) continue;
+        const ParamValues &v = *job.values;
+        switch (d.kind) {
+        case ParamDef::Bool: par[d.option] = v.Bool(d.name); break;
+        case ParamDef::Int: par[d.option] = v.Int(d.name); break;
+        case ParamDef::Real: par[d.option] = v.Real(d.name); break;
+        case ParamDef::Enum: par[d.option] = d.choices[size_t(v.Enum(d.name))].key; break;
+        case ParamDef::Text: par[d.option] = v.Text(d.name); break;
+        }
+    }
+    r["parameters"] = par;
     CMeshO m;
     int mask = 0;
     try {
@@ -541,7 +570,7 @@ void CaseToJob(const std::string &line, const std::string &dir, Job &job)
     CheckJob(job);
 }
 
-int RunBatch(const std::string &file, int jobs, bool jsonLog, bool quiet)
+int RunBatch(const std::string &file, int jobs, int timeout, bool jsonLog, bool quiet)
 {
     std::ifstream in(file);
     if (!in) throw SnakeError("Cannot read the batch file \"" + file + "\".");
@@ -595,6 +624,7 @@ int RunBatch(const std::string &file, int jobs, bool jsonLog, bool quiet)
                 continue;
             }
             if (pid == 0) { // the case, isolated in its own process
+                if (timeout > 0) ::alarm(unsigned(timeout)); // SIGALRM ends a case that hangs
                 json r;
                 std::string err;
                 Job job;
@@ -629,8 +659,18 @@ int RunBatch(const std::string &file, int jobs, bool jsonLog, bool quiet)
         }
         std::remove(rf.c_str());
         if (!r.is_object()) {
+            Job killed; // its outputs, to remove the temporary files it was writing
+            try {
+                CaseToJob(cases[i].text, dir, killed);
+                for (const auto &o : {killed.output, killed.meshOut})
+                    if (!o.empty()) RemoveTemporaries(o, long(pid));
+            } catch (const std::exception &) {
+            }
             std::string why = "the case stopped without a result";
-            if (WIFSIGNALED(status)) why = "the case crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
+            if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+                why = "the case ran longer than --timeout " + std::to_string(timeout) + " s and was stopped";
+            else if (WIFSIGNALED(status))
+                why = "the case crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
             r = {{"ok", false}, {"error", why}};
         }
         report(i, r);
@@ -656,7 +696,7 @@ int Main(int argc, char **argv)
     }
     Job job;
     std::string batch;
-    int jobs = 0;
+    int jobs = 0, timeout = 0;
     bool help = false;
     std::vector<std::pair<std::string, std::pair<std::string, bool>>> opts;
     std::vector<std::string> positional;
@@ -706,14 +746,19 @@ int Main(int argc, char **argv)
             char *e = nullptr;
             jobs = int(std::strtol(value.c_str(), &e, 10));
             if (value.empty() || *e || jobs < 1 || jobs > 1024) throw UsageError("--jobs expects a number in [1, 1024].");
+        } else if (key == "timeout") {
+            char *e = nullptr;
+            timeout = int(std::strtol(value.c_str(), &e, 10));
+            if (value.empty() || *e || timeout < 1 || timeout > 1000000)
+                throw UsageError("--timeout expects seconds in [1, 1000000].");
         } else opts.push_back({key, {value, hasValue}});
     }
 
     if (!batch.empty()) {
         if (!positional.empty() || !opts.empty())
             throw UsageError("--batch takes the cases from its file: no command, mesh or other options beside it "
-                             "(only --jobs, --json-log, --quiet).");
-        return RunBatch(batch, jobs, job.jsonLog, job.quiet);
+                             "(only --jobs, --timeout, --json-log, --quiet).");
+        return RunBatch(batch, jobs, timeout, job.jsonLog, job.quiet);
     }
     if (positional.empty() || positional[0] == "help") {
         const Command *c = positional.size() > 1 ? FindCommand(positional[1]) : nullptr;
@@ -729,7 +774,7 @@ int Main(int argc, char **argv)
     }
     if (positional.size() > 2) throw UsageError("unexpected argument \"" + positional[2] + "\".");
     if (positional.size() == 2) job.mesh = positional[1];
-    if (jobs) throw UsageError("--jobs only applies to --batch.");
+    if (jobs || timeout) throw UsageError("--jobs and --timeout only apply to --batch.");
     job.values.reset(new ParamValues(*job.cmd->defs));
     for (const auto &o : opts) SetOption(job, o.first, o.second.first, o.second.second);
     CheckJob(job);

@@ -80,7 +80,7 @@ class CliTests(unittest.TestCase):
     def test_help_lists_every_option(self):
         out, _ = self.ok(["--help"])
         for cmd in ("energy", "snake", "path"):
-            self.assertIn("usage: geometric-snake %s MESH" % cmd, out)
+            self.assertIn("geometric-snake %s MESH [--" % cmd, out)
         for opt in ("--type", "--smoothing", "--colorize", "--seeds", "--closed", "--cost", "--alpha", "--beta",
                     "--gamma", "--external-weight", "--spacing", "--max-operations", "--method", "--use-quality",
                     "--mesh-out", "--json-log", "--batch", "--jobs", "-o, --output"):
@@ -225,6 +225,9 @@ class CliTests(unittest.TestCase):
                     "ms_per_operation", "seconds_total", "length", "warnings"):
             self.assertIn(key, log)
         self.assertTrue(log["ok"])
+        self.assertEqual(log["parameters"]["method"], "embedding")
+        self.assertEqual(log["parameters"]["max-operations"], 500)
+        self.assertEqual(log["parameters"]["seeds"], seeds)
         rc, out, err = run(["snake", ICO, "--seeds", "1, 999999", "--json-log"])
         self.assertEqual(rc, 1)
         log = json.loads(out)
@@ -324,6 +327,10 @@ class CliTests(unittest.TestCase):
         self.assert_error(["energy", self.path("cube.3ds"), "-o", out], "Cannot open the mesh")
         self.assert_error(["energy", self.cube, "-o", self.path("nofolder/e.ply")], "does not exist")
         self.assert_error(["energy", self.cube, "-o", self.path("e.off")], "unknown format")
+        for name, text in (("empty.stl", ""), ("noline.stl", "solid x"), ("empty.off", ""), ("empty.ply", "")):
+            with open(self.path(name), "w") as f:  # vcglib's ASCII STL reader never returns on these
+                f.write(text)
+            self.assert_error(["energy", self.path(name), "-o", out], "Cannot read the mesh")
 
     def test_safe_writes(self):
         """Never the input mesh; a failed run leaves an existing output as it was."""
@@ -403,6 +410,24 @@ class CliTests(unittest.TestCase):
         self.assertTrue(os.path.exists(self.path("ok.ply")))
         self.assert_error(["--batch", self.path("none.jsonl")], "Cannot read the batch file")
         self.assert_error(["--batch", self.path("cases.jsonl"), "energy"], "--batch takes", status=2)
+
+
+    def test_batch_timeout_stops_a_case(self):
+        """--timeout: a case that runs too long is stopped and reported; the others finish."""
+        verts, faces = mlhost.grid_cube(80)  # 76800 faces: 10000 smoothing steps take many seconds
+        mlhost.write_ply(self.path("big.ply"), verts, faces, binary=True)
+        with open(self.path("cases.jsonl"), "w") as f:
+            f.write('{"command": "energy", "mesh": "big.ply", "smoothing": 10000, "output": "slow.ply"}\n')
+            f.write('{"command": "energy", "mesh": "cube.ply", "output": "fast.ply"}\n')
+        t0 = time.time()
+        rc, out, err = run(["--batch", self.path("cases.jsonl"), "--timeout", "1", "-j", "2"])
+        self.assertLess(time.time() - t0, 30)
+        self.assertEqual(rc, 1, out + err)
+        res = {r["line"]: r for r in map(json.loads, out.splitlines())}
+        self.assertIn("longer than --timeout 1 s", res[1]["error"])
+        self.assertTrue(res[2]["ok"])
+        self.assertFalse(os.path.exists(self.path("slow.ply")))
+        self.assertEqual([n for n in os.listdir(self.work) if n.startswith(".")], [], "temporary files left")
 
 
 if __name__ == "__main__":
