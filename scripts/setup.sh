@@ -2,6 +2,9 @@
 # Installs what the build and the tests need, and fetches MeshLab's source for the
 # installed MeshLab version through a private apt configuration (the system's apt
 # settings stay untouched). Idempotent: the source unpacks once and is reused.
+# Debian 12 (MeshLab 2020.09) and Debian 13 (2022.02): the source comes from the running
+# release's deb-src. GS_SETUP_SOURCE_ONLY=1: only the source (scripts/debian13.sh uses it
+# inside its Debian 13 root, which has its own packages).
 #   usage: scripts/setup.sh [BUILD_DIR]      (default: ./build)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,8 +19,9 @@ pkgs=(meshlab cmake g++ make pkg-config dpkg-dev
       qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libqt5svg5-dev
       libglew-dev libglu1-mesa-dev libeigen3-dev nlohmann-json3-dev
       googletest libgtest-dev libbenchmark-dev
-      xvfb xauth xdotool imagemagick x11-utils python3)
+      xvfb xauth xdotool imagemagick x11-utils python3 debootstrap)
 missing=()
+[ "${GS_SETUP_SOURCE_ONLY:-0}" = 1 ] && pkgs=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
 done
@@ -42,18 +46,32 @@ mkdir -p "$apt/lists/partial" "$apt/archives/partial" "$apt/download" "$apt/sour
 uris=$(grep -h -E '^(URIs:|deb )' /etc/apt/sources.list.d/*.sources /etc/apt/sources.list 2>/dev/null \
         | grep -v security | head -n1 | sed -E 's/^URIs: *//; s/^deb +(\[[^]]*\] +)?([^ ]+).*/\2/' || true)
 [ -n "$uris" ] || uris="http://deb.debian.org/debian"
+suite=$(. /etc/os-release && echo "${VERSION_CODENAME:-bookworm}")
 cat > "$apt/sources.list" <<LIST
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] $uris bookworm main
+deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] $uris $suite main
 LIST
 aptopts=(-o Dir::Etc::SourceList="$apt/sources.list"
          -o Dir::Etc::SourceParts="$apt/sources.list.d"
          -o Dir::State::Lists="$apt/lists"
          -o Dir::Cache::Archives="$apt/archives"
          -o Dir::Cache="$apt/cache"
-         -o Debug::NoLocking=1)
+         -o Debug::NoLocking=1 -o APT::Sandbox::User=root)
 mkdir -p "$apt/cache"
 apt-get "${aptopts[@]}" update -qq
-( cd "$apt/download" && apt-get "${aptopts[@]}" source -qq "meshlab=$ver" >/dev/null )
+if ! ( cd "$apt/download" && apt-get "${aptopts[@]}" source -qq "meshlab=$ver" > "$apt/source.log" 2>&1 ); then
+  # Debian 13's .dsc has been missing from the mirror at times: then the orig tarball alone
+  # (upstream's tag, vcglib included; the plugins need its headers only), checked against
+  # the SHA256 of the signed Sources index.
+  echo "[setup] apt-get source failed ($(grep -m1 -o '40[0-9] *Not Found' "$apt/source.log" || echo see $apt/source.log)); taking the orig tarball"
+  line=$(apt-get "${aptopts[@]}" --print-uris source "meshlab=$ver" 2>/dev/null | grep "\.orig\.tar\." | head -n1)
+  uri=$(echo "$line" | awk '{print $1}' | tr -d "'")
+  file=$(echo "$line" | awk '{print $2}')
+  sha=$(echo "$line" | awk '{print $4}')
+  [ -n "$uri" ] && [ "${sha#SHA256:}" != "$sha" ] || { echo "[setup] no orig tarball for meshlab $ver" >&2; exit 1; }
+  /usr/lib/apt/apt-helper download-file "$uri" "$apt/download/$file" "$sha" >> "$apt/source.log" 2>&1 ||
+    { tail -n 20 "$apt/source.log" >&2; exit 1; }
+  tar -xf "$apt/download/$file" -C "$apt/download"
+fi
 dir=$(find "$apt/download" -maxdepth 1 -mindepth 1 -type d -name 'meshlab-*' | head -n1)
 [ -n "$dir" ] || { echo "[setup] apt-get source meshlab produced no source tree" >&2; exit 1; }
 mv "$dir" "$src"

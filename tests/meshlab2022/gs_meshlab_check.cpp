@@ -161,6 +161,7 @@ int main(int argc, char **argv)
 		if (md.mm()->hasDataMask(MeshModel::MM_VERTQUALITY)) {
 			const QString qpath = QDir(outDir).absoluteFilePath(QString("quality_%1.txt").arg(n));
 			std::ofstream q(qpath.toStdString());
+			q.precision(9); // float round trip
 			float lo = 1e30f, hi = -1e30f;
 			for (const auto &v : m.vert) {
 				if (v.IsD()) continue;
