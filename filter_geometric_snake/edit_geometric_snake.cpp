@@ -465,7 +465,7 @@ void EditGeometricSnakePlugin::buildSnake(bool closed)
 {
     setRunning(false);
     if (guarded("build snake", [&] {
-            ctl->SetParams(paramsFromDock());
+            ctl->SetNewSnakeParams(paramsFromDock()); // the other snakes stay as they are (converged)
             auto t0 = std::chrono::steady_clock::now();
             ctl->CloseSeeds(closed);
             double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -507,3 +507,24 @@ TEST(SnakeController, BoundaryAndSeveralComponents)
             for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(p[k]));
     }
 }
+
+// Building a second snake leaves the first one as it was, converged included.
+TEST(SnakeController, BuildingASecondSnakeKeepsTheFirstConverged)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 2.0));
+    c.CloseSeeds(false);
+    c.Run(2000);
+    ASSERT_TRUE(c.Get(0).Converged());
+    SnakeParams p = c.Params();
+    p.alpha = 0.2;
+    c.SetNewSnakeParams(p);
+    std::vector<vcg::Point3d> ring{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    c.SetSeeds(gs_test::NearestVertices(m, ring));
+    c.CloseSeeds(true);
+    EXPECT_TRUE(c.Get(0).Converged());
+    EXPECT_DOUBLE_EQ(c.Get(1).Params().alpha, 0.2);
+    EXPECT_DOUBLE_EQ(c.Get(0).Params().alpha, SnakeParams().alpha);
+}

@@ -330,14 +330,12 @@ public:
     {
         Snake &s = sel();
         checkMesh();
-        const typename Snake::Memento before = s.Save();
         const bool pushed = record("step");
         auto t0 = std::chrono::steady_clock::now();
         double mv;
         try {
             mv = s.Step();
         } catch (...) {
-            s.Restore(before);
             if (pushed) history.DropLast();
             throw;
         }
@@ -346,7 +344,7 @@ public:
         for (const auto &x : s.Samples()) {
             vcg::Point3d p = x.p.Pd(mesh);
             if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !std::isfinite(mv)) {
-                s.Restore(before);
+                s.Undo(); // the engine's own one-operation step back
                 if (pushed) history.DropLast();
                 throw SnakeError("Geometric snake: the operation produced invalid coordinates and was undone.");
             }
@@ -502,6 +500,13 @@ public:
         touch("parameters");
     }
     const SnakeParams &Params() const { return params; }
+    /// Parameters of the snakes built from now on only (the selected snake keeps its own,
+    /// and its convergence).
+    void SetNewSnakeParams(const SnakeParams &p)
+    {
+        p.Validate();
+        params = p;
+    }
     void SetSeedCost(SeedPathCost c)
     {
         if (int(c) < 0 || int(c) > 1) throw SnakeError("Geometric snake: unknown seed path cost.");
