@@ -531,13 +531,14 @@ public:
         decltype(moveHistory) moves, travels;
         decltype(posHistory) positions;
         std::vector<int> seeds;
+        std::vector<SurfacePoint> seedPoints;
         std::vector<SnakeSample> initialSamples;
         std::vector<SurfacePoint> initialPolyline;
     };
     Memento Save() const
     {
-        return Memento{st, stats, coarseStage, moveHistory, travelHistory, posHistory, seedVertices, initialSamples,
-                       initialPolyline};
+        return Memento{st, stats, coarseStage, moveHistory, travelHistory, posHistory, seedVertices, seedPoints,
+                       initialSamples, initialPolyline};
     }
     void Restore(const Memento &m)
     {
@@ -548,6 +549,7 @@ public:
         travelHistory = m.travels;
         posHistory = m.positions;
         seedVertices = m.seeds;
+        seedPoints = m.seedPoints;
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
         splines.clear();

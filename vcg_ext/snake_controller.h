@@ -310,7 +310,9 @@ public:
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(surface, params));
         sn->InitFromSeedPoints(pts, closed, seedCost);
+        record("build");
         snakes.push_back(std::move(sn));
+        saved.push_back(nullptr);
         selected = int(snakes.size()) - 1;
         touch("create snake");
         return selected;
