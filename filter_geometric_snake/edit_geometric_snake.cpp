@@ -518,7 +518,8 @@ void EditGeometricSnakePlugin::setRunning(bool on)
                 "Geometric snake: Run %s after %d operations: compute %.3f s, wall %.3f s (median %.2f ms per operation)",
                 s->Converged() ? "converged" : "stopped", s->Stats().operations - runOps0, compute, wall,
                 vcg::tri::SnakeStats::Median(s->Stats().msOperation));
-            runProgress(s->Converged() ? "Converged" : "Stopped (Ctrl+Z undoes the Run)");
+            if (dock && dock->status->styleSheet().isEmpty()) // keep an error on show
+                runProgress(s->Converged() ? "Converged" : "Stopped (Ctrl+Z undoes the Run)");
             afterChange(true);
         }
     }
