@@ -1,0 +1,51 @@
+// Replays the committed fuzz corpus (fuzz/corpus/<target>/) through the fuzz harnesses
+// (fuzz/gs_fuzz.h): the seeds, and every input a fuzzer once found crashing (saved there as
+// a regression test). A harness aborts on a bug, which fails this test with the file named
+// on stderr.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <dirent.h>
+#include <fstream>
+#include <iterator>
+
+#include <gs_fuzz.h>
+
+namespace {
+
+std::vector<std::string> CorpusFiles(const std::string &target)
+{
+    std::vector<std::string> out;
+    const std::string dir = std::string(GS_FUZZ_CORPUS_DIR) + "/" + target;
+    if (DIR *d = opendir(dir.c_str())) {
+        while (dirent *e = readdir(d))
+            if (e->d_name[0] != '.') out.push_back(dir + "/" + e->d_name);
+        closedir(d);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string Read(const std::string &path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+template <class Harness>
+void Replay(const std::string &target, Harness h, size_t minFiles)
+{
+    const auto files = CorpusFiles(target);
+    ASSERT_GE(files.size(), minFiles) << "fuzz/corpus/" << target << " lost its seeds";
+    for (const auto &f : files) {
+        std::fprintf(stderr, "replaying %s\n", f.c_str());
+        const std::string d = Read(f);
+        EXPECT_EQ(h(reinterpret_cast<const uint8_t *>(d.data()), d.size()), 0) << f;
+    }
+}
+
+} // namespace
+
+TEST(FuzzCorpus, SnakeJson) { Replay("snake_json", gs_fuzz::SnakeJson, 4); }
+
+TEST(FuzzCorpus, SeedString) { Replay("seed_string", gs_fuzz::SeedString, 4); }
