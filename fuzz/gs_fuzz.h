@@ -23,6 +23,7 @@
 #include <common/ml_mesh_type.h>
 #include <snake_test_util.h>
 #include <vcg_ext/seed_path.h>
+#include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
@@ -139,6 +140,51 @@ inline int SeedString(const uint8_t *data, size_t size)
     if (!std::isfinite(r.length) || r.length <= 0) Fail("SeedPath::Compute", "path length not finite and positive");
     for (int v : r.vertices)
         if (v < 0 || v >= int(m.vert.size())) Fail("SeedPath::Compute", "path vertex out of range");
+    return 0;
+}
+
+/// Snaps parsed seed points onto the fuzz mesh (as the snake filter does): what comes back
+/// must be on the mesh, finite, one surface point per seed.
+inline void SnapPoints(const std::vector<vcg::Point3d> &pts, bool closed)
+{
+    using namespace vcg::tri;
+    if (pts.size() > 64) return; // the parsers are what is fuzzed; many points only cost time
+    CMeshO m;
+    MakeMesh(m);
+    SeedPointSnap<CMeshO>::Result r;
+    if (!Guard("SeedPointSnap::Snap", [&] { r = SeedPointSnap<CMeshO>::Snap(m, pts, closed ? 3 : 2, closed); }))
+        return;
+    if (r.points.size() != pts.size()) Fail("SeedPointSnap::Snap", "not one surface point per seed");
+    for (const auto &sp : r.points) {
+        if (!sp.IsValid() || sp.face >= int(m.face.size())) Fail("SeedPointSnap::Snap", "invalid surface point");
+        RequireFinite({sp.Pd(m)}, "SeedPointSnap::Snap");
+    }
+}
+
+/// The "SeedPoints" parameter ("x y z; x y z; ..."): SeedPointsParser::Parse, then snapping.
+/// First byte: closed or open.
+inline int SeedPoints(const uint8_t *data, size_t size)
+{
+    using namespace vcg::tri;
+    if (size == 0) return 0;
+    const std::string text(reinterpret_cast<const char *>(data + 1), size - 1);
+    std::vector<vcg::Point3d> pts;
+    if (!Guard("SeedPointsParser::Parse", [&] { pts = SeedPointsParser::Parse(text); })) return 0;
+    RequireFinite(pts, "SeedPointsParser::Parse"); // NaN and infinity must be refused
+    SnapPoints(pts, data[0] & 1);
+    return 0;
+}
+
+/// A MeshLab Pick Points file (.pp, the "SeedFile" parameter): ParsePickPoints, the placed
+/// points, then snapping.
+inline int PickPoints(const uint8_t *data, size_t size)
+{
+    using namespace vcg::tri;
+    const std::string xml(reinterpret_cast<const char *>(data), size);
+    std::vector<PickedPoint> pp;
+    if (!Guard("SeedPointsParser::ParsePickPoints", [&] { pp = SeedPointsParser::ParsePickPoints(xml); })) return 0;
+    std::vector<vcg::Point3d> pts = SeedPointsParser::Active(pp);
+    SnapPoints(pts, size > 0 && (data[size - 1] & 1));
     return 0;
 }
 

@@ -48,4 +48,19 @@ void Replay(const std::string &target, Harness h, size_t minFiles)
 
 TEST(FuzzCorpus, SnakeJson) { Replay("snake_json", gs_fuzz::SnakeJson, 4); }
 
+// The fuzzer starts deep only if its seed session still loads: keep session.json current
+// with the session format (regenerate it if the format changes).
+TEST(FuzzCorpus, SeedSessionLoads)
+{
+    CMeshO m;
+    gs_fuzz::MakeMesh(m);
+    vcg::tri::SnakeController<CMeshO> c(m);
+    c.FromJson(nlohmann::json::parse(Read(std::string(GS_FUZZ_CORPUS_DIR) + "/snake_json/session.json")));
+    EXPECT_EQ(c.SnakeCount(), 2);
+}
+
 TEST(FuzzCorpus, SeedString) { Replay("seed_string", gs_fuzz::SeedString, 4); }
+
+TEST(FuzzCorpus, SeedPoints) { Replay("seed_points", gs_fuzz::SeedPoints, 4); }
+
+TEST(FuzzCorpus, PickPoints) { Replay("pick_points", gs_fuzz::PickPoints, 3); }

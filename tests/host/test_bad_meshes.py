@@ -29,7 +29,7 @@ from mlhost import FILTER_ENERGY, FILTER_EXPORT, FILTER_SEED_PATH, FILTER_SNAKE 
 
 RUN_TIMEOUT = 120  # seconds; the slowest sane run here takes a few
 WORKERS = 2
-SNAKE_DEFAULTS = {"Alpha": 0.5, "Beta": 0.5, "Gamma": 1.0, "ExternalWeight": 1.0, "Spacing": 1.0,
+SNAKE_DEFAULTS = {"Alpha": 0.05, "Beta": 0.5, "Gamma": 1.0, "ExternalWeight": 1.0, "Spacing": 1.0,
                   "MaxOperations": 30, "Method": 0, "UseQuality": False, "NewLayer": True}
 
 
@@ -118,23 +118,14 @@ def check_output_file(path, input_nonfinite):
 
 # ------------------------------------------------------------------------- one run
 def meshlabserver(args, cwd):
-    env = dict(os.environ)
-    env.setdefault("LIBGL_ALWAYS_SOFTWARE", "1")
-    env.setdefault("XDG_RUNTIME_DIR", "/tmp/runtime-%d" % os.getuid())
-    os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
-    cmd = [shutil.which("meshlabserver")] + args
-    if not env.get("DISPLAY"):
-        cmd = mlhost.meshlabserver_cmd()[:-1] + cmd  # not under xvfb-run: make a display per run
+    """(exit status or None on a hang, output, seconds). Under xvfb-run (as CTest runs it)
+    meshlabserver uses that display; otherwise mlhost makes one per run."""
     t0 = time.time()
     try:
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
-                           timeout=RUN_TIMEOUT, cwd=cwd, env=env)
+        rc, out = mlhost.run_meshlabserver(args, timeout=RUN_TIMEOUT, cwd=cwd, reuse_display=True)
     except subprocess.TimeoutExpired as e:
         return None, (e.stdout or b"").decode("utf-8", "replace"), time.time() - t0
-    rc = p.returncode
-    if rc > 128 and rc != 255:  # through xvfb-run: 128 + signal
-        rc = -(rc - 128)
-    return rc, p.stdout.decode("utf-8", "replace"), time.time() - t0
+    return rc, out, time.time() - t0
 
 
 HOST_LOAD_ERROR = re.compile(r"(?i)(unable to open|failed loading|error.*load|cannot open|Unknown format)")
@@ -172,7 +163,9 @@ def one_run(work, name, path, what, rid, filters, outputs, mesh_out):
             verdict = "ok"
             if "Geometric snake error" in out:
                 problems.append("exit status 0 but a Geometric snake error in the log")
-            files = [o for o in outputs if os.path.exists(o)] + ([saved] if mesh_out and os.path.exists(saved) else [])
+            missing = [o for o in outputs + ([saved] if mesh_out else []) if not os.path.exists(o)]
+            problems += ["success but no %s written" % os.path.basename(o) for o in missing]
+            files = [o for o in outputs + ([saved] if mesh_out else []) if os.path.exists(o)]
             input_nonfinite = name in ("nan_coords", "inf_coords")
             for o in files:
                 problems += check_output_file(o, input_nonfinite)
