@@ -70,7 +70,8 @@ bool Guard(const char *what, F f)
 ///  - the edit tool's restore (SnakeController::FromJson, the sidecar <mesh>.snakes.json);
 ///  - the export filter (SnakeIO::FromJson on each element of "snakes");
 ///  - a single snake (the snake filter's .json output).
-/// What loads must be finite, must save, and must load again from what it saved.
+/// What loads must be finite, must save, and must load again from what it saved; a restored
+/// session must also survive one snake operation.
 inline int SnakeJson(const uint8_t *data, size_t size)
 {
     using namespace vcg::tri;
@@ -87,6 +88,12 @@ inline int SnakeJson(const uint8_t *data, size_t size)
             nlohmann::json saved;
             for (int i = 0; i < c.SnakeCount(); ++i) RequireFinite(c.Get(i).PolylinePositions(), "session");
             Guard("SnakeController::ToJson", [&] { saved = c.ToJson(); });
+            // One operation of the restored snake: partitioning and motion on fuzzed samples,
+            // pins and parameters (where the partition overflow once was).
+            if (c.SnakeCount() > 0 && c.Get(c.Selected()).SampleCount() <= 200) {
+                Guard("SnakeController::Step", [&] { c.Step(); });
+                RequireFinite(c.Get(c.Selected()).PolylinePositions(), "step");
+            }
             CMeshO m2;
             MakeMesh(m2);
             Controller c2(m2);
