@@ -64,3 +64,19 @@ TEST(FuzzCorpus, SeedString) { Replay("seed_string", gs_fuzz::SeedString, 4); }
 TEST(FuzzCorpus, SeedPoints) { Replay("seed_points", gs_fuzz::SeedPoints, 4); }
 
 TEST(FuzzCorpus, PickPoints) { Replay("pick_points", gs_fuzz::PickPoints, 3); }
+
+// Found by fuzz_seed_points: a seed point 8.9e12 away went into vcglib's grid, whose
+// float-to-int cell index is undefined there (UBSan: grid_util.h PToIP). It must be refused
+// with the distance message before the grid sees it.
+TEST(FuzzRegressions, FarSeedPointIsRefusedBeforeTheGrid)
+{
+    CMeshO m;
+    gs_fuzz::MakeMesh(m);
+    try {
+        vcg::tri::SeedPointSnap<CMeshO>::Snap(m, {vcg::Point3d(1, 8888888888880.9, -0.6), vcg::Point3d(1, 0.9, 0)}, 2);
+        FAIL() << "a point 8.9e12 away was snapped";
+    } catch (const vcg::tri::SnakeError &e) {
+        EXPECT_NE(std::string(e.what()).find("Seed point 1"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("away from the surface"), std::string::npos) << e.what();
+    }
+}
