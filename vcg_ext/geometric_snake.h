@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <functional>
 #include <map>
@@ -158,7 +159,20 @@ public:
         if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
         n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError("Geometric snake: the spacing is too small for this path (too many samples).");
+        if (n > 200000) { // say which is to blame: the spacing, or a path too long for any spacing near 1
+            const double edges = L / surf->MeanEdge();
+            char buf[320];
+            if (st.params.spacing < 1.0 && edges <= 200000)
+                std::snprintf(buf, sizeof buf, "Geometric snake: the sample spacing (%g edge lengths) is too small for "
+                              "this path: it would need %ld samples (at most 200000). Raise the spacing.",
+                              st.params.spacing, n);
+            else
+                std::snprintf(buf, sizeof buf, "Geometric snake: the seed path is too long for one snake: %zu vertices, "
+                              "%.0f mean edge lengths, %ld samples at spacing %g (at most 200000). Use fewer or "
+                              "closer seeds, or a larger spacing.", pv.size() - (closed ? 1 : 0), edges, n,
+                              st.params.spacing);
+            throw SnakeError(buf);
+        }
         double step = closed ? L / double(n) : L / double(n - 1);
 
         pushUndo();
@@ -201,6 +215,8 @@ public:
     void InitFromSamples(const std::vector<SnakeSample> &samples, bool closed)
     {
         if (int(samples.size()) < (closed ? 3 : 2)) throw SnakeError("Geometric snake: too few samples.");
+        if (samples.size() > 200000)
+            throw SnakeError("Geometric snake: " + std::to_string(samples.size()) + " samples are too many (at most 200000).");
         for (const auto &s : samples) checkPoint(s.p);
         pushUndo();
         st.samples = samples;
