@@ -144,14 +144,28 @@ public:
         return best;
     }
 
-    /// Adds the seed for a click; returns the vertex, or -1 if it repeats the last seed.
-    int AddSeedFromPick(int face, const vcg::Point3d &bary) { return AddSeedVertex(SeedVertexFromPick(face, bary)); }
+    /// Adds the seed for a click: the surface point hit (face + barycentric), where the curve
+    /// will start or pass exactly; on a CAD tessellation every vertex lies on some crease, so
+    /// the seed must not jump to one. Returns the nearest vertex of the hit triangle, or -1 if
+    /// the click repeats the last seed.
+    int AddSeedFromPick(int face, const vcg::Point3d &bary)
+    {
+        const int v = SeedVertexFromPick(face, bary);
+        SurfacePoint sp(face, bary);
+        sp.Normalize();
+        if (!seeds.empty() && (SeedPosition(int(seeds.size()) - 1) - sp.Pd(mesh)).Norm() == 0) return -1;
+        seeds.push_back(v);
+        seedAt.push_back(sp);
+        touch("seed");
+        return v;
+    }
 
     int AddSeedVertex(int v)
     {
         checkVertex(v);
-        if (!seeds.empty() && seeds.back() == v) return -1;
+        if (!seeds.empty() && seeds.back() == v && seedAt.back().face < 0) return -1;
         seeds.push_back(v);
+        seedAt.push_back(SurfacePoint());
         touch("seed");
         return v;
     }
@@ -182,6 +196,7 @@ public:
             last = v;
         }
         for (int v : kept) seeds.push_back(v);
+        seedAt.resize(seeds.size());
         if (!kept.empty()) touch("stroke");
         return int(kept.size());
     }
@@ -218,6 +233,7 @@ public:
             order.push_back(sel[bi]);
         }
         seeds = order;
+        seedAt.assign(seeds.size(), SurfacePoint());
         touch("selection seeds");
         return int(seeds.size());
     }
@@ -227,6 +243,7 @@ public:
     {
         for (int v : s) checkVertex(v);
         seeds = s;
+        seedAt.assign(seeds.size(), SurfacePoint());
         touch("seeds");
     }
 
@@ -234,18 +251,21 @@ public:
     {
         if (i < 0 || i >= int(seeds.size())) throw SnakeError("Geometric snake: no seed " + std::to_string(i) + ".");
         seeds.erase(seeds.begin() + i);
+        seedAt.erase(seedAt.begin() + i);
         touch("remove seed");
     }
     bool RemoveLastSeed()
     {
         if (seeds.empty()) return false;
         seeds.pop_back();
+        seedAt.pop_back();
         touch("remove seed");
         return true;
     }
     void ClearSeeds()
     {
         seeds.clear();
+        seedAt.clear();
         touch("clear seeds");
     }
     /// The seed nearest to p, within maxDist (-1 if none).
@@ -254,13 +274,20 @@ public:
         int best = -1;
         double bd = maxDist;
         for (size_t i = 0; i < seeds.size(); ++i) {
-            double d = (P(seeds[i]) - p).Norm();
+            double d = (SeedPosition(int(i)) - p).Norm();
             if (d <= bd) { bd = d; best = int(i); }
         }
         return best;
     }
     const std::vector<int> &Seeds() const { return seeds; }
-    vcg::Point3d SeedPosition(int i) const { return P(seeds.at(i)); }
+    /// Where seed i is: the clicked surface point, or its vertex.
+    vcg::Point3d SeedPosition(int i) const
+    {
+        const SurfacePoint &sp = seedAt.at(i);
+        return sp.face >= 0 ? sp.Pd(mesh) : P(seeds.at(i));
+    }
+    /// Seed i as a surface point, or an invalid point (face -1) for a seed placed as a vertex.
+    const SurfacePoint &SeedPoint(int i) const { return seedAt.at(i); }
 
     /// Closes the seed list: builds the initial snake at once (Sec. 5.5), selects it and
     /// clears the seeds. On error nothing changes (the seeds stay, to be fixed).
@@ -271,14 +298,30 @@ public:
             throw SnakeError(std::string("Geometric snake: a ") + (closed ? "closed" : "open") + " snake needs at least " +
                              std::to_string(need) + " seeds (" + std::to_string(seeds.size()) + " placed).");
         std::vector<int> s = seeds;
-        if (closed && s.size() > need && s.front() == s.back()) s.pop_back();
+        std::vector<SurfacePoint> at = seedAt;
+        if (closed && s.size() > need && SeedPosition(0) == SeedPosition(int(s.size()) - 1)) {
+            s.pop_back();
+            at.pop_back();
+        }
         EnsureSurface();
         checkMesh();
+        // Seeds inside faces (clicks) make a curve through those points; vertex seeds (and
+        // clicks exactly at vertices) the paper's vertex path.
+        bool atVertices = true;
+        for (size_t i = 0; i < at.size(); ++i)
+            if (at[i].face >= 0 && at[i].Pd(mesh) != P(s[i])) atVertices = false;
         std::unique_ptr<Snake> sn(new Snake(surface, params));
-        sn->InitFromSeeds(s, closed, seedCost);
+        if (atVertices) {
+            sn->InitFromSeeds(s, closed, seedCost);
+        } else {
+            for (size_t i = 0; i < at.size(); ++i)
+                if (at[i].face < 0) at[i] = vertexPoint(s[i]);
+            sn->InitFromSeedPoints(at, closed, seedCost);
+        }
         snakes.push_back(std::move(sn));
         selected = int(snakes.size()) - 1;
         seeds.clear();
+        seedAt.clear();
         touch("create snake");
         return selected;
     }
@@ -473,6 +516,8 @@ public:
         j["seed_cost"] = int(seedCost);
         j["selected"] = selected;
         j["seeds"] = seeds;
+        j["seed_points"] = json::array();
+        for (const auto &sp : seedAt) j["seed_points"].push_back(sp.face >= 0 ? IO::PointJson(mesh, sp) : json());
         j["snakes"] = json::array();
         for (auto &s : snakes) j["snakes"].push_back(IO::ToJson(*s));
         return j;
@@ -503,6 +548,19 @@ public:
             if (sc < 0 || sc > 1) throw SnakeError("Geometric snake: bad seed cost in the session file.");
             std::vector<int> ns = j.value("seeds", std::vector<int>());
             for (int v : ns) checkVertex(v);
+            std::vector<SurfacePoint> nat(ns.size());
+            if (j.contains("seed_points") && j["seed_points"].is_array() && j["seed_points"].size() == ns.size())
+                for (size_t i = 0; i < ns.size(); ++i) {
+                    const json &jp = j["seed_points"][i];
+                    if (jp.is_null()) continue;
+                    SurfacePoint sp(jp.at("face").get<int>(), vcg::Point3d(jp.at("bary").at(0).get<double>(),
+                                                                           jp.at("bary").at(1).get<double>(),
+                                                                           jp.at("bary").at(2).get<double>()));
+                    if (!sp.IsValid() || sp.face >= int(mesh.face.size()) || mesh.face[sp.face].IsD())
+                        throw SnakeError("Geometric snake: a seed point of the session file is not on this mesh.");
+                    sp.Normalize();
+                    nat[i] = sp;
+                }
 
             const double ca = j.at("energy").value("crease_angle", CreaseEnergy<MeshType>::DefaultAngle());
             if (!std::isfinite(ca) || ca <= 0 || ca >= 180)
@@ -533,6 +591,7 @@ public:
             selected = nsel;
             params = np;
             seeds = ns;
+            seedAt = nat;
             seedCost = SeedPathCost(sc);
             touch("load");
         } catch (const json::exception &e) {
@@ -616,11 +675,22 @@ private:
     std::vector<std::unique_ptr<Snake>> snakes;
     int selected = -1;
     std::vector<int> seeds;
+    std::vector<SurfacePoint> seedAt; // per seed: the clicked surface point, or face -1 (the vertex itself)
     SnakeParams params;
     SeedPathCost seedCost = SeedPathCost::Length;
     FeatureEnergyType energyType = FeatureEnergyType::NormalVariation;
     int energySmoothing = 2;
     double creaseAngle = CreaseEnergy<MeshType>::DefaultAngle();
+
+    /// Vertex v as a surface point (a corner of one of its faces).
+    SurfacePoint vertexPoint(int v) const
+    {
+        for (size_t f = 0; f < mesh.face.size(); ++f)
+            if (!mesh.face[f].IsD())
+                for (int k = 0; k < 3; ++k)
+                    if (mesh.face[f].cV(k) == &mesh.vert[v]) return SurfacePoint::AtCorner(int(f), k);
+        throw SnakeError("Geometric snake: seed vertex " + std::to_string(v) + " belongs to no face.");
+    }
     bool energyComputed = false;
     bool energyFromQuality = false;
     long revision = 0, savedRevision = 0;
