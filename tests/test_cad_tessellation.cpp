@@ -259,10 +259,21 @@ CadCapture Capture(CMeshO &m, FeatureEnergyType type, const std::vector<Point3d>
     auto snap = vcg::tri::SeedPointSnap<CMeshO>::Snap(m, seeds, closed ? 3 : 2, closed);
     ctl.CreateSnakeFromSeedPoints(snap.points, closed);
     auto &s = ctl.Get(0);
+    if (std::getenv("GS_CAD_VERBOSE"))
+        for (auto &p : s.InitialPolyline()) {
+            Point3d x = p.Pd(m);
+            std::printf("  init %.3f %.3f %.3f\n", x[0], x[1], x[2]);
+        }
     s.Run(600);
     CadCapture c;
     c.tol = tol;
     c.operations = s.Stats().operations;
+    if (std::getenv("GS_CAD_VERBOSE")) {
+        std::printf("  samples %d, region failures %d, embeddings %d\n", s.SampleCount(), s.Stats().regionFailures,
+                    s.Stats().embeddings);
+        for (auto &w : s.Stats().warnings) std::printf("  warning: %s\n", w.c_str());
+        for (auto &p : s.PolylinePositions()) std::printf("  %.3f %.3f %.3f\n", p[0], p[1], p[2]);
+    }
     c.converged = s.Converged();
     std::vector<Point3d> pl = s.PolylinePositions();
     std::vector<double> d;
