@@ -7,9 +7,15 @@
 // parameters, energy settings) saved to / restored from JSON, e.g. the sidecar file
 // <mesh>.snakes.json next to the mesh, with a throttled autosave.
 //
+// Undo works in the units a user thinks in: every user action is one step of a history of
+// whole-session snapshots (vcg_ext/snake_undo.h, bounded by memory). A Run, a drag (moves
+// grouped with BeginAction/EndAction), a Build, a seed click are each one step; the
+// snapshots share the snakes an action did not touch.
+//
 // Every user input is validated: bad input throws vcg::tri::SnakeError with a message
 // for the user, and leaves the controller unchanged.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +34,7 @@
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_surface.h>
+#include <vcg_ext/snake_undo.h>
 #include <vcg_ext/surface_point.h>
 
 namespace vcg {
@@ -67,6 +74,7 @@ public:
             surface->SetEnergyFromQuality();
             for (auto &s : snakes) s->EnergyChanged();
         }
+        saved.assign(snakes.size(), nullptr);
         touch("energy");
     }
     /// Any quality field can drive a snake: take the current vertex quality as the energy
@@ -79,6 +87,7 @@ public:
             surface->SetEnergyFromQuality();
             for (auto &s : snakes) s->EnergyChanged();
         }
+        saved.assign(snakes.size(), nullptr);
         touch("energy");
     }
     bool EnergyFromQuality() const { return energyFromQuality; }
@@ -144,28 +153,15 @@ public:
         return best;
     }
 
-    /// Adds the seed for a click: the surface point hit (face + barycentric), where the curve
-    /// will start or pass exactly; on a CAD tessellation every vertex lies on some crease, so
-    /// the seed must not jump to one. Returns the nearest vertex of the hit triangle, or -1 if
-    /// the click repeats the last seed.
-    int AddSeedFromPick(int face, const vcg::Point3d &bary)
-    {
-        const int v = SeedVertexFromPick(face, bary);
-        SurfacePoint sp(face, bary);
-        sp.Normalize();
-        if (!seeds.empty() && (SeedPosition(int(seeds.size()) - 1) - sp.Pd(mesh)).Norm() == 0) return -1;
-        seeds.push_back(v);
-        seedAt.push_back(sp);
-        touch("seed");
-        return v;
-    }
+    /// Adds the seed for a click; returns the vertex, or -1 if it repeats the last seed.
+    int AddSeedFromPick(int face, const vcg::Point3d &bary) { return AddSeedVertex(SeedVertexFromPick(face, bary)); }
 
     int AddSeedVertex(int v)
     {
         checkVertex(v);
-        if (!seeds.empty() && seeds.back() == v && seedAt.back().face < 0) return -1;
+        if (!seeds.empty() && seeds.back() == v) return -1;
+        record("seed");
         seeds.push_back(v);
-        seedAt.push_back(SurfacePoint());
         touch("seed");
         return v;
     }
@@ -195,8 +191,8 @@ public:
             kept.push_back(v);
             last = v;
         }
+        if (!kept.empty()) record("stroke");
         for (int v : kept) seeds.push_back(v);
-        seedAt.resize(seeds.size());
         if (!kept.empty()) touch("stroke");
         return int(kept.size());
     }
@@ -232,8 +228,8 @@ public:
             used[bi] = 1;
             order.push_back(sel[bi]);
         }
+        record("selection seeds");
         seeds = order;
-        seedAt.assign(seeds.size(), SurfacePoint());
         touch("selection seeds");
         return int(seeds.size());
     }
@@ -242,30 +238,31 @@ public:
     void SetSeeds(const std::vector<int> &s)
     {
         for (int v : s) checkVertex(v);
+        record("seeds");
         seeds = s;
-        seedAt.assign(seeds.size(), SurfacePoint());
         touch("seeds");
     }
 
     void RemoveSeed(int i)
     {
         if (i < 0 || i >= int(seeds.size())) throw SnakeError("Geometric snake: no seed " + std::to_string(i) + ".");
+        record("remove seed");
         seeds.erase(seeds.begin() + i);
-        seedAt.erase(seedAt.begin() + i);
         touch("remove seed");
     }
     bool RemoveLastSeed()
     {
         if (seeds.empty()) return false;
+        record("remove seed");
         seeds.pop_back();
-        seedAt.pop_back();
         touch("remove seed");
         return true;
     }
     void ClearSeeds()
     {
+        if (seeds.empty()) return;
+        record("clear seeds");
         seeds.clear();
-        seedAt.clear();
         touch("clear seeds");
     }
     /// The seed nearest to p, within maxDist (-1 if none).
@@ -274,20 +271,13 @@ public:
         int best = -1;
         double bd = maxDist;
         for (size_t i = 0; i < seeds.size(); ++i) {
-            double d = (SeedPosition(int(i)) - p).Norm();
+            double d = (P(seeds[i]) - p).Norm();
             if (d <= bd) { bd = d; best = int(i); }
         }
         return best;
     }
     const std::vector<int> &Seeds() const { return seeds; }
-    /// Where seed i is: the clicked surface point, or its vertex.
-    vcg::Point3d SeedPosition(int i) const
-    {
-        const SurfacePoint &sp = seedAt.at(i);
-        return sp.face >= 0 ? sp.Pd(mesh) : P(seeds.at(i));
-    }
-    /// Seed i as a surface point, or an invalid point (face -1) for a seed placed as a vertex.
-    const SurfacePoint &SeedPoint(int i) const { return seedAt.at(i); }
+    vcg::Point3d SeedPosition(int i) const { return P(seeds.at(i)); }
 
     /// Closes the seed list: builds the initial snake at once (Sec. 5.5), selects it and
     /// clears the seeds. On error nothing changes (the seeds stay, to be fixed).
@@ -298,30 +288,16 @@ public:
             throw SnakeError(std::string("Geometric snake: a ") + (closed ? "closed" : "open") + " snake needs at least " +
                              std::to_string(need) + " seeds (" + std::to_string(seeds.size()) + " placed).");
         std::vector<int> s = seeds;
-        std::vector<SurfacePoint> at = seedAt;
-        if (closed && s.size() > need && SeedPosition(0) == SeedPosition(int(s.size()) - 1)) {
-            s.pop_back();
-            at.pop_back();
-        }
+        if (closed && s.size() > need && s.front() == s.back()) s.pop_back();
         EnsureSurface();
         checkMesh();
-        // Seeds inside faces (clicks) make a curve through those points; vertex seeds (and
-        // clicks exactly at vertices) the paper's vertex path.
-        bool atVertices = true;
-        for (size_t i = 0; i < at.size(); ++i)
-            if (at[i].face >= 0 && at[i].Pd(mesh) != P(s[i])) atVertices = false;
         std::unique_ptr<Snake> sn(new Snake(surface, params));
-        if (atVertices) {
-            sn->InitFromSeeds(s, closed, seedCost);
-        } else {
-            for (size_t i = 0; i < at.size(); ++i)
-                if (at[i].face < 0) at[i] = vertexPoint(s[i]);
-            sn->InitFromSeedPoints(at, closed, seedCost);
-        }
+        sn->InitFromSeeds(s, closed, seedCost);
+        record("build");
         snakes.push_back(std::move(sn));
+        saved.push_back(nullptr);
         selected = int(snakes.size()) - 1;
         seeds.clear();
-        seedAt.clear();
         touch("create snake");
         return selected;
     }
@@ -334,7 +310,9 @@ public:
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(surface, params));
         sn->InitFromSeedPoints(pts, closed, seedCost);
+        record("build");
         snakes.push_back(std::move(sn));
+        saved.push_back(nullptr);
         selected = int(snakes.size()) - 1;
         touch("create snake");
         return selected;
@@ -358,13 +336,18 @@ public:
     void DeleteSnake(int i)
     {
         checkSnake(i);
+        record("delete snake");
         snakes.erase(snakes.begin() + i);
+        saved.erase(saved.begin() + i);
         if (selected >= int(snakes.size())) selected = int(snakes.size()) - 1;
         touch("delete snake");
     }
     void DeleteAllSnakes()
     {
+        if (snakes.empty()) return;
+        record("delete all snakes");
         snakes.clear();
+        saved.clear();
         selected = -1;
         touch("delete all snakes");
     }
@@ -374,13 +357,22 @@ public:
     {
         Snake &s = sel();
         checkMesh();
+        const bool pushed = record("step");
         auto t0 = std::chrono::steady_clock::now();
-        double mv = s.Step();
+        double mv;
+        try {
+            mv = s.Step();
+        } catch (...) {
+            if (pushed) history.DropLast();
+            throw;
+        }
         lastOpMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        computeMs += lastOpMs;
         for (const auto &x : s.Samples()) {
             vcg::Point3d p = x.p.Pd(mesh);
             if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !std::isfinite(mv)) {
-                s.Undo();
+                s.Undo(); // the engine's own one-operation step back
+                if (pushed) history.DropLast();
                 throw SnakeError("Geometric snake: the operation produced invalid coordinates and was undone.");
             }
         }
@@ -391,6 +383,7 @@ public:
     int Run(int maxOps)
     {
         if (maxOps < 0 || maxOps > 1000000) throw SnakeError("Geometric snake: the operation limit must be in [0, 1000000].");
+        Action run(*this, "run");
         int ops = 0;
         while (ops < maxOps && !sel().Converged()) {
             Step();
@@ -421,12 +414,18 @@ public:
     void MoveSample(int i, const SurfacePoint &p, bool pin)
     {
         checkSurfacePoint(p);
-        sel().MoveSample(i, p, pin);
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        record("move sample");
+        s.MoveSample(i, p, pin);
         touch("move sample");
     }
     void SetFixed(int i, bool fixed)
     {
-        sel().SetFixed(i, fixed);
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        record(fixed ? "pin" : "unpin");
+        s.SetFixed(i, fixed);
         touch(fixed ? "pin" : "unpin");
     }
     bool TogglePin(int i)
@@ -443,47 +442,98 @@ public:
         Snake &s = sel();
         if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
         int gap = (!s.Closed() && i == s.SampleCount() - 1) ? i - 1 : i;
-        int r = s.InsertSample(gap);
+        const bool pushed = record("insert sample");
+        int r;
+        try { r = s.InsertSample(gap); }
+        catch (...) { if (pushed) history.DropLast(); throw; }
         touch("insert sample");
         return r;
     }
     void DeleteSample(int i)
     {
-        sel().DeleteSample(i);
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        if (s.SampleCount() <= (s.Closed() ? 3 : 2))
+            throw SnakeError("Geometric snake: cannot delete, the snake would have too few samples.");
+        record("delete sample");
+        s.DeleteSample(i);
         touch("delete sample");
     }
 
-    bool CanUndo() { return SelectedSnake() && SelectedSnake()->CanUndo(); }
-    bool CanRedo() { return SelectedSnake() && SelectedSnake()->CanRedo(); }
+    // --- undo / redo of whole user actions
+    /// Groups every change until the matching EndAction into one undo step (a Run, a drag);
+    /// groups nest. An action that changes nothing leaves no step.
+    void BeginAction(const std::string &label)
+    {
+        if (actionDepth++ == 0) {
+            actionLabel = label;
+            actionRecorded = false;
+        }
+    }
+    void EndAction()
+    {
+        if (actionDepth > 0) --actionDepth;
+    }
+    bool InAction() const { return actionDepth > 0; }
+    /// BeginAction / EndAction for a scope.
+    struct Action
+    {
+        SnakeController &c;
+        Action(SnakeController &ctl, const std::string &label) : c(ctl) { c.BeginAction(label); }
+        ~Action() { c.EndAction(); }
+    };
+
+    bool CanUndo() const { return history.CanUndo(); }
+    bool CanRedo() const { return history.CanRedo(); }
+    /// The action Undo / Redo would take back / do again, e.g. "run" ("" if none).
+    std::string UndoLabel() const { return history.UndoLabel(); }
+    std::string RedoLabel() const { return history.RedoLabel(); }
+    /// Returns to the session as it was before the last action (all snakes, seeds, selection).
     bool Undo()
     {
-        Snake *s = SelectedSnake();
-        if (!s || !s->CanUndo()) return false;
-        s->Undo();
-        if (s->SampleCount() == 0) { // the state before the snake existed: not an undo step
-            s->Redo();
-            return false;
-        }
+        Session cur = snapshot();
+        size_t b = sessionBytes(cur);
+        if (!history.Undo(cur, b)) return false;
+        restore(cur);
         touch("undo");
         return true;
     }
     bool Redo()
     {
-        Snake *s = SelectedSnake();
-        if (!s || !s->Redo()) return false;
+        Session cur = snapshot();
+        size_t b = sessionBytes(cur);
+        if (!history.Redo(cur, b)) return false;
+        restore(cur);
         touch("redo");
         return true;
     }
+    /// Memory bound of the history (default 100 MB) and its current estimate.
+    void SetUndoLimit(size_t bytes) { history.SetLimit(bytes); }
+    size_t UndoBytes() const { return history.Bytes(); }
+    size_t UndoSteps() const { return history.UndoCount(); }
+    /// Compute time of all operations so far (ms): a Run's wall time is compared to it.
+    double ComputeMs() const { return computeMs; }
 
     /// Parameters of new snakes; also applied to the selected snake.
     void SetParams(const SnakeParams &p)
     {
         p.Validate();
-        if (Snake *s = SelectedSnake()) s->SetParams(p);
+        Snake *s = SelectedSnake();
+        const bool same = IO::ParamsJson(p) == IO::ParamsJson(params) && (!s || IO::ParamsJson(s->Params()) == IO::ParamsJson(p));
+        if (same) return;
+        record("parameters");
+        if (s) s->SetParams(p);
         params = p;
         touch("parameters");
     }
     const SnakeParams &Params() const { return params; }
+    /// Parameters of the snakes built from now on only (the selected snake keeps its own,
+    /// and its convergence).
+    void SetNewSnakeParams(const SnakeParams &p)
+    {
+        p.Validate();
+        params = p;
+    }
     void SetSeedCost(SeedPathCost c)
     {
         if (int(c) < 0 || int(c) > 1) throw SnakeError("Geometric snake: unknown seed path cost.");
@@ -516,8 +566,6 @@ public:
         j["seed_cost"] = int(seedCost);
         j["selected"] = selected;
         j["seeds"] = seeds;
-        j["seed_points"] = json::array();
-        for (const auto &sp : seedAt) j["seed_points"].push_back(sp.face >= 0 ? IO::PointJson(mesh, sp) : json());
         j["snakes"] = json::array();
         for (auto &s : snakes) j["snakes"].push_back(IO::ToJson(*s));
         return j;
@@ -548,19 +596,6 @@ public:
             if (sc < 0 || sc > 1) throw SnakeError("Geometric snake: bad seed cost in the session file.");
             std::vector<int> ns = j.value("seeds", std::vector<int>());
             for (int v : ns) checkVertex(v);
-            std::vector<SurfacePoint> nat(ns.size());
-            if (j.contains("seed_points") && j["seed_points"].is_array() && j["seed_points"].size() == ns.size())
-                for (size_t i = 0; i < ns.size(); ++i) {
-                    const json &jp = j["seed_points"][i];
-                    if (jp.is_null()) continue;
-                    SurfacePoint sp(jp.at("face").get<int>(), vcg::Point3d(jp.at("bary").at(0).get<double>(),
-                                                                           jp.at("bary").at(1).get<double>(),
-                                                                           jp.at("bary").at(2).get<double>()));
-                    if (!sp.IsValid() || sp.face >= int(mesh.face.size()) || mesh.face[sp.face].IsD())
-                        throw SnakeError("Geometric snake: a seed point of the session file is not on this mesh.");
-                    sp.Normalize();
-                    nat[i] = sp;
-                }
 
             const double ca = j.at("energy").value("crease_angle", CreaseEnergy<MeshType>::DefaultAngle());
             if (!std::isfinite(ca) || ca <= 0 || ca >= 180)
@@ -588,10 +623,11 @@ public:
             if (nsel < 0 && !nsn.empty()) nsel = 0;
 
             snakes = std::move(nsn);
+            saved.assign(snakes.size(), nullptr);
+            history.Clear();
             selected = nsel;
             params = np;
             seeds = ns;
-            seedAt = nat;
             seedCost = SeedPathCost(sc);
             touch("load");
         } catch (const json::exception &e) {
@@ -675,22 +711,11 @@ private:
     std::vector<std::unique_ptr<Snake>> snakes;
     int selected = -1;
     std::vector<int> seeds;
-    std::vector<SurfacePoint> seedAt; // per seed: the clicked surface point, or face -1 (the vertex itself)
     SnakeParams params;
     SeedPathCost seedCost = SeedPathCost::Length;
     FeatureEnergyType energyType = FeatureEnergyType::NormalVariation;
     int energySmoothing = 2;
     double creaseAngle = CreaseEnergy<MeshType>::DefaultAngle();
-
-    /// Vertex v as a surface point (a corner of one of its faces).
-    SurfacePoint vertexPoint(int v) const
-    {
-        for (size_t f = 0; f < mesh.face.size(); ++f)
-            if (!mesh.face[f].IsD())
-                for (int k = 0; k < 3; ++k)
-                    if (mesh.face[f].cV(k) == &mesh.vert[v]) return SurfacePoint::AtCorner(int(f), k);
-        throw SnakeError("Geometric snake: seed vertex " + std::to_string(v) + " belongs to no face.");
-    }
     bool energyComputed = false;
     bool energyFromQuality = false;
     long revision = 0, savedRevision = 0;
@@ -699,6 +724,98 @@ private:
     std::string autosavePath;
     double autosaveInterval = 1.0;
     std::chrono::steady_clock::time_point lastAutosave;
+    double computeMs = 0;
+
+    // undo history: whole-session snapshots; a snake's memento is shared by all snapshots
+    // until the snake changes (saved[k] == nullptr: snake k changed since its last memento)
+    typedef std::shared_ptr<const typename Snake::Memento> MementoPtr;
+    struct Session
+    {
+        std::vector<MementoPtr> snakes;
+        int selected = -1;
+        std::vector<int> seeds;
+        SnakeParams params;
+    };
+    SnakeUndo<Session> history;
+    std::vector<MementoPtr> saved, lastPushed;
+    int actionDepth = 0;
+    bool actionRecorded = false;
+    std::string actionLabel;
+
+    Session snapshot()
+    {
+        saved.resize(snakes.size());
+        Session s;
+        for (size_t k = 0; k < snakes.size(); ++k) {
+            if (!saved[k]) saved[k] = std::make_shared<const typename Snake::Memento>(snakes[k]->Save());
+            s.snakes.push_back(saved[k]);
+        }
+        s.selected = selected;
+        s.seeds = seeds;
+        s.params = params;
+        return s;
+    }
+    /// Snakes are restored in place (references to them stay valid while they exist).
+    void restore(const Session &s)
+    {
+        if (!s.snakes.empty()) EnsureSurface();
+        snakes.resize(std::min(snakes.size(), s.snakes.size()));
+        saved.resize(snakes.size());
+        for (size_t k = 0; k < s.snakes.size(); ++k) {
+            if (k >= snakes.size()) {
+                snakes.emplace_back(new Snake(surface, s.params));
+                saved.push_back(nullptr);
+            }
+            if (saved[k] != s.snakes[k]) snakes[k]->Restore(*s.snakes[k]);
+            saved[k] = s.snakes[k];
+        }
+        selected = s.selected;
+        seeds = s.seeds;
+        params = s.params;
+    }
+    static size_t mementoBytes(const typename Snake::Memento &m)
+    {
+        size_t b = sizeof(m) + m.curve.samples.capacity() * sizeof(SnakeSample) +
+                   (m.initialSamples.capacity()) * sizeof(SnakeSample) +
+                   m.initialPolyline.capacity() * sizeof(SurfacePoint) + m.seeds.capacity() * sizeof(int);
+        for (const auto &g : m.curve.gaps)
+            b += sizeof(g) + g.faces.capacity() * sizeof(int) + g.crossings.capacity() * sizeof(SurfacePoint);
+        b += (m.stats.msEmbedding.capacity() + m.stats.msUpdate.capacity() + m.stats.msOperation.capacity()) * sizeof(double);
+        for (const auto &p : m.positions) b += p.capacity() * sizeof(vcg::Point3d);
+        return b;
+    }
+    /// The memory a snapshot adds: its snakes' mementos, except those it shares with
+    /// `previous` (the snakes the last action did not touch).
+    size_t sessionBytes(const Session &s, const std::vector<MementoPtr> *previous = nullptr) const
+    {
+        size_t b = sizeof(Session) + s.seeds.capacity() * sizeof(int);
+        for (const auto &m : s.snakes)
+            if (!previous || std::find(previous->begin(), previous->end(), m) == previous->end()) b += mementoBytes(*m);
+        return b;
+    }
+    /// Called before a change: the first change of an action records the session as it
+    /// was. Returns true if this call pushed an undo step.
+    bool record(const char *label)
+    {
+        if (actionDepth > 0) {
+            if (actionRecorded) {
+                markSelectedChanged();
+                return false;
+            }
+            actionRecorded = true;
+        }
+        Session s = snapshot();
+        history.Push(s, sessionBytes(s, &lastPushed), actionDepth > 0 ? actionLabel : std::string(label));
+        lastPushed = s.snakes;
+        markSelectedChanged();
+        return true;
+    }
+    /// Every change goes through the selected snake (or adds / removes snakes, which
+    /// resizes `saved`): its memento is outdated.
+    void markSelectedChanged()
+    {
+        if (selected >= 0 && selected < int(saved.size())) saved[selected] = nullptr;
+    }
 
     void touch(const char *op)
     {
