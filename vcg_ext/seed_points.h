@@ -339,11 +339,15 @@ public:
             ScalarType dist = searchMax;
             CoordType closest(0, 0, 0);
             DistanceFunctor fn;
-            FaceType *f = grid.GetClosest(fn, marker, q, searchMax, dist, closest);
+            // A point beyond the limit from the bounding box never reaches the grid: vcglib's
+            // grid turns coordinates into int cell indices, undefined far outside (fuzz_seed_points).
+            const double boxDist = BoxDistance(box, pts[i]);
+            FaceType *f = boxDist <= maxD ? grid.GetClosest(fn, marker, q, searchMax, dist, closest) : nullptr;
             const std::string who = "Seed point " + std::to_string(i + 1) + " (" + Fmt(pts[i][0]) + " " +
                                     Fmt(pts[i][1]) + " " + Fmt(pts[i][2]) + ")";
             if (f == nullptr || !(double(dist) <= maxD))
-                throw SnakeError(who + " is " + (f == nullptr ? "more than " + Fmt(4 * maxD) : Fmt(double(dist))) +
+                throw SnakeError(who + " is " +
+                                 (f == nullptr ? "more than " + Fmt(std::max(boxDist, 4 * maxD)) : Fmt(double(dist))) +
                                  " away from the surface, farther than 10% of the bounding box diagonal (" +
                                  Fmt(maxD) + "). Give points on or near the mesh, in the mesh's own coordinates.");
             const int fi = int(f - &*m.face.begin());
@@ -360,6 +364,17 @@ public:
         if (closed && r.points.size() > 1 && (r.points.front().Pd(m) - r.points.back().Pd(m)).Norm() <= same)
             throw SnakeError("The last seed point repeats the first; a closed snake is closed automatically.");
         return r;
+    }
+
+    /// Distance from p to the box (0 inside).
+    static double BoxDistance(const vcg::Box3d &b, const vcg::Point3d &p)
+    {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double e = std::max(0.0, std::max(b.min[k] - p[k], p[k] - b.max[k]));
+            d2 += e * e;
+        }
+        return std::sqrt(d2);
     }
 
     /// Barycentric coordinates of a point of face f (clamped into the triangle).
