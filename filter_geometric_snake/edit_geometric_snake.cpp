@@ -133,8 +133,11 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         if (mw)
             for (QDockWidget *d : mw->findChildren<QDockWidget *>())
                 if (d != dock && d->inherits("LayerDialog")) layers = d;
+        // a layer switch ends and restarts the tool: the panel stays where it is then (it
+        // does not jump over the layer dialog the user is clicking in)
+        hidePending = false;
         const bool first = !dock->isVisible();
-        dock->dockInto(mw, layers);
+        if (first) dock->dockInto(mw, layers);
         if (first && mw) {
             // where the panel is, for the user and for the GUI test that checks it is docked
             QPointer<SnakeDock> d(dock);
@@ -249,14 +252,25 @@ void EditGeometricSnakePlugin::EndEdit(MeshModel &, GLArea *, MLSceneGLSharedDat
 {
     stop(true);
     ownKeys(false);
-    if (dock) dock->hide();
+    hideDockLater();
 }
 
 void EditGeometricSnakePlugin::EndEdit(MeshDocument &, GLArea *, MLSceneGLSharedDataContext *)
 {
     stop(true);
     ownKeys(false);
-    if (dock) dock->hide();
+    hideDockLater();
+}
+
+/// Hides the panel once control returns to the event loop, unless the tool started again
+/// meanwhile (MeshLab's layer switch is EndEdit + StartEdit).
+void EditGeometricSnakePlugin::hideDockLater()
+{
+    hidePending = true;
+    QTimer::singleShot(0, this, [this] {
+        if (hidePending && dock) dock->hide();
+        hidePending = false;
+    });
 }
 
 // ====================================================================== helpers

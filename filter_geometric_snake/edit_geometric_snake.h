@@ -74,6 +74,7 @@ private:
     qint64 sliceEnd = -1;
     int runOps0 = 0;
     bool keysOwned = false;
+    bool hidePending = false;
     long exportedRevision = -1;
     long storedRevision = -1;
     int currentSample = -1;
@@ -102,6 +103,7 @@ private:
     void connectDock();
     void refreshDock();
     void ownKeys(bool on);
+    void hideDockLater();
     bool ownsKey(const QKeyEvent *e) const;
     bool handleKey(const QKeyEvent *e);
     void afterChange(bool forceSave = false);

@@ -15,6 +15,8 @@ Run under an X server (xvfb-run -a -s "-screen 0 1280x1024x24" python3 test_edit
    and a convergence window of 300 operations) takes at most 2x its compute time + 0.5 s, both read from the
    tool's own Log line of that Run (the better of two Runs, Ctrl+Z between them: the machine
    is shared). Esc stops a Run, and Ctrl+Z undoes the stopped Run.
+5. Add as layer adds the curve as a layer; switching to it during a Run stops the Run and the
+   panel says the layer has no faces; back on the cube the snake is there again.
 """
 import json
 import math
@@ -281,6 +283,30 @@ def main():
         else:
             log("note: the Run converged before Esc (%s)" % (lines,))
         g.screenshot("16_wall_time.png")
+
+        # ------------------------------------------------------------ 5. layers
+        # (fixed positions in this 1280x1000 window: the panel is the raised tab on the right)
+        xdo("mousemove", 976, 646, "click", 1)  # Output > Add as layer
+        check(wait_for(lambda: "Geometric snake: added layer icocube snake 1" in ml.log_text(), 5),
+              "Add as layer adds the curve as a new layer")
+        xdo("mousemove", 400, 950, "click", 1)
+        time.sleep(0.3)
+        nlines = len(run_lines(ml.log_text()))
+        xdo("key", "r")
+        time.sleep(0.3)
+        xdo("mousemove", 909, 951, "click", 1)  # the Project_1 tab (layer dialog), during the Run
+        time.sleep(0.5)
+        xdo("mousemove", 993, 145, "click", 1)  # the new edge layer: MeshLab restarts the tool on it
+        time.sleep(1.5)
+        text = ml.log_text()
+        check(ml.p.poll() is None and any(l[0] == "stopped" for l in run_lines(text)[nlines:]),
+              "switching layers during a Run stops it, MeshLab keeps running")
+        check("the current layer has no faces" in text, "the panel follows: it says the edge layer has no faces")
+        xdo("mousemove", 963, 114, "click", 1)  # back to the cube
+        time.sleep(1.5)
+        img = g.Image(g.screenshot("17_back_on_cube.png"))
+        n = img.count(g.MAGENTA, g.gl_box(img))
+        check(ml.p.poll() is None and n > 300, "back on the cube, the snake is there again (%d px)" % n)
     finally:
         ml.kill()
 
