@@ -383,7 +383,11 @@ public:
         vcg::Triangle3<double> t(vcg::Point3d::Construct(f.cV(0)->cP()), vcg::Point3d::Construct(f.cV(1)->cP()),
                                  vcg::Point3d::Construct(f.cV(2)->cP()));
         vcg::Point3d b;
-        if (!vcg::InterpolationParameters(t, p, b)) { // degenerate face: the nearest corner
+        // (vcglib's "false" also means "a hair outside", which a closest point on an edge can be)
+        vcg::InterpolationParameters(t, p, b);
+        if (!std::isfinite(b[0]) || !std::isfinite(b[1]) || !std::isfinite(b[2]) ||
+            !((t.cP(0) * b[0] + t.cP(1) * b[1] + t.cP(2) * b[2] - p).Norm() <= 1e-6 * std::max(1.0, p.Norm())) ||
+            MeshValidation<MeshType>::IsDegenerate(f)) { // degenerate face: the nearest corner
             int best = 0;
             for (int k = 1; k < 3; ++k)
                 if ((t.cP(k) - p).SquaredNorm() < (t.cP(best) - p).SquaredNorm()) best = k;
