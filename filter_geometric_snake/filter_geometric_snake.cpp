@@ -87,7 +87,7 @@ tri::ParamValues readParams(const RichParameterList &par, const std::vector<tri:
 std::vector<tri::ProtectedFile> protectedFiles(MeshDocument &md)
 {
 	std::vector<tri::ProtectedFile> keep;
-	for (MeshModel *mm : md.meshList) {
+	for (MeshModel *mm : gs::host::Meshes(md)) {
 		if (mm == nullptr || mm->fullName().isEmpty()) continue;
 		const std::string path = QFileInfo(mm->fullName()).absoluteFilePath().toStdString();
 		for (auto &k : tri::SnakeController<CMeshO>::ProtectedFilesOf(path, mm->label().toStdString())) keep.push_back(k);

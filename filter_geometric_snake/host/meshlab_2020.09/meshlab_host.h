@@ -12,13 +12,15 @@
 //   gs::EditToolBase      edit tool: startEdit, endEdit, decorate, layerChanged (lower case),
 //                         the mouse and key events, Log(...).
 //   GS_FILTER_PLUGIN / GS_EDIT_PLUGIN  in the class body, after Q_OBJECT (plugin metadata).
-//   gs::host::HasMesh(md, m)  whether m is still a layer of md (m may be dangling);
+//   gs::host::Meshes(md)  the layers; gs::host::HasMesh(md, m)  whether m is still one of them
+//                         (m may be dangling);
 //   gs::host::UpdateBoxAndNormals(m);  gs::host::kApi  "2020.09".
 
 #ifndef GS_MESHLAB_HOST_H
 #define GS_MESHLAB_HOST_H
 
 #include <list>
+#include <vector>
 
 #include <QAction>
 #include <QList>
@@ -31,6 +33,9 @@ namespace host {
 constexpr const char *kApi = "2020.09";
 
 inline bool HasMesh(const MeshDocument &md, const MeshModel *m) { return md.meshList.contains(const_cast<MeshModel *>(m)); }
+
+/// The layers of the document, in order.
+inline std::vector<MeshModel *> Meshes(MeshDocument &md) { return std::vector<MeshModel *>(md.meshList.begin(), md.meshList.end()); }
 
 inline void UpdateBoxAndNormals(MeshModel &m) { m.UpdateBoxAndNormals(); }
 } // namespace host

@@ -13,6 +13,7 @@
 #define GS_MESHLAB_HOST_H
 
 #include <list>
+#include <vector>
 #include <map>
 #include <string>
 #include <utility>
@@ -34,6 +35,14 @@ inline bool HasMesh(const MeshDocument &md, const MeshModel *m)
 	for (const MeshModel &x : md.meshIterator()) // meshList (a std::list<MeshModel>) is private
 		if (&x == m) return true;
 	return false;
+}
+
+/// The layers of the document, in order.
+inline std::vector<MeshModel *> Meshes(MeshDocument &md)
+{
+	std::vector<MeshModel *> v;
+	for (MeshModel &x : md.meshIterator()) v.push_back(&x);
+	return v;
 }
 
 inline void UpdateBoxAndNormals(MeshModel &m) { m.updateBoxAndNormals(); }
