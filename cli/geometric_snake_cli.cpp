@@ -489,7 +489,10 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
         ctl.CreateSnakeFromSeedPoints(Snap(job, m, seedPts, closed, source).points, closed);
     }
     json warnings = json::array();
-    for (const auto &w : ctl.EnsureSurface().Warnings()) warnings.push_back(w);
+    // (As the filter: those warnings are about the vertex energy; the crease energy is read at the samples.)
+    const bool creaseField = !useQuality && energyType == int(FeatureEnergyType::Crease);
+    for (const auto &w : ctl.EnsureSurface().Warnings())
+        if (!creaseField) warnings.push_back(w);
     GeometricSnake<CMeshO> &snake = ctl.Get(0);
     {
         Progress bar(job.progress);
