@@ -145,34 +145,29 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
     ctl.reset(new Controller(m.cm));
     currentSample = -1;
     exportedRevision = storedRevision = -1;
-    std::string sidecar;
-    if (!m.fullName().isEmpty()) sidecar = Controller::SidecarPath(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
+    const std::string meshPath = m.fullName().isEmpty() ? std::string() : QFileInfo(m.fullName()).absoluteFilePath().toStdString();
 
-    QString restored;
+    QString restored, sidecarProblem;
     try {
         ctl->SetEnergySettings(vcg::tri::FeatureEnergyType(dock->energyType->currentIndex()), dock->smoothing->value());
     } catch (const SnakeError &) {
     }
     const std::string stored = vcg::tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+    bool fromStore = false;
     if (!stored.empty()) {
         try {
             ctl->FromJson(nlohmann::json::parse(stored));
             restored = "Restored the snakes kept on this mesh.";
+            fromStore = true;
         } catch (const std::exception &e) {
             report(QString("Geometric snake: could not restore the session: %1").arg(e.what()), true);
         }
-    } else if (!sidecar.empty() && QFileInfo::exists(QString::fromStdString(sidecar))) {
-        try {
-            if (ctl->Load(sidecar)) restored = QString("Restored %1.").arg(QString::fromStdString(sidecar));
-        } catch (const std::exception &e) {
-            // keep the unusable file: it is not overwritten by the autosave
-            QString bak = QString::fromStdString(sidecar) + ".bak";
-            QFile::remove(bak);
-            QFile::copy(QString::fromStdString(sidecar), bak);
-            report(QString("Geometric snake: %1 (kept as %2)").arg(e.what(), bak), true);
-        }
     }
-    ctl->SetAutosave(sidecar, 1.0);
+    // The sidecar: restored if the mesh kept no snakes; never overwritten when unreadable (the
+    // session then autosaves to a new recovery file, see SnakeController::OpenSidecar).
+    const Controller::SidecarStatus side = ctl->OpenSidecar(meshPath, !fromStore);
+    if (side.restored) restored = QString::fromStdString(side.message);
+    if (side.unreadable) sidecarProblem = QString("Geometric snake: %1").arg(QString::fromStdString(side.message));
     if (ctl->SnakeCount() > 0) {
         paramsToDock(ctl->Params());
         dock->editMode->setChecked(true);
@@ -184,7 +179,8 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
     }
     dock->show();
     refreshDock();
-    if (!restored.isEmpty()) report(restored, false);
+    if (!sidecarProblem.isEmpty()) report(sidecarProblem, true); // stays in the status line, and goes to the Log
+    else if (!restored.isEmpty()) report(restored, false);
     else report(QString("Click on %1 to place seeds, then press Enter (open) or Shift+Enter (closed).").arg(m.label()), false);
     if (restored.size()) Log(GLLogStream::FILTER, "Geometric snake: %s", restored.toStdString().c_str());
     if (glArea) glArea->update();
@@ -229,6 +225,13 @@ void EditGeometricSnakePlugin::EndEdit(MeshDocument &, GLArea *, MLSceneGLShared
 }
 
 // ====================================================================== helpers
+std::vector<vcg::tri::ProtectedFile> EditGeometricSnakePlugin::protectedFiles() const
+{
+    if (!modelAlive() || model->fullName().isEmpty()) return {};
+    return Controller::ProtectedFilesOf(QFileInfo(model->fullName()).absoluteFilePath().toStdString(),
+                                        model->label().toStdString());
+}
+
 void EditGeometricSnakePlugin::report(const QString &msg, bool error)
 {
     if (dock) dock->setStatus(msg, error);
@@ -266,7 +269,7 @@ void EditGeometricSnakePlugin::afterChange(bool forceSave)
     static const char *autoExport = getenv("GS_SNAKE_AUTOEXPORT");
     if (autoExport && *autoExport && ctl->Revision() != exportedRevision && ctl->SnakeCount() > 0) {
         try {
-            ctl->Export(autoExport, true);
+            ctl->Export(autoExport, true, protectedFiles());
             exportedRevision = ctl->Revision();
         } catch (const std::exception &e) {
             report(QString("Geometric snake: auto-export failed: %1").arg(e.what()), true);
@@ -555,7 +558,7 @@ void EditGeometricSnakePlugin::exportCurves(bool all)
                                                 "Snake JSON (*.json);;OBJ polylines (*.obj);;PLY edges (*.ply)");
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += ".json";
-    if (guarded("export", [&] { ctl->Export(path.toStdString(), all); })) {
+    if (guarded("export", [&] { ctl->Export(path.toStdString(), all, protectedFiles()); })) {
         report(QString("Exported to %1").arg(path), false);
         Log(GLLogStream::FILTER, "Geometric snake: exported to %s", path.toStdString().c_str());
     }

@@ -81,6 +81,7 @@ private:
     bool startOn(MeshModel &m);
     void stop(bool save);
     bool modelAlive() const;
+    std::vector<vcg::tri::ProtectedFile> protectedFiles() const; // never overwritten by exports
     void connectDock();
     void refreshDock();
     void afterChange(bool forceSave = false);

@@ -25,6 +25,7 @@
 #include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_error.h>
+#include <vcg_ext/safe_file_write.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_mesh_store.h>
 #include <vcg_ext/snake_param_defs.h>
@@ -79,6 +80,26 @@ tri::ParamValues readParams(const RichParameterList &par, const std::vector<tri:
 	}
 	v.Check();
 	return v;
+}
+
+/// Files no output of these filters may replace: every mesh loaded in the document, with its
+/// snake sidecar and the sidecar's backup.
+std::vector<tri::ProtectedFile> protectedFiles(MeshDocument &md)
+{
+	std::vector<tri::ProtectedFile> keep;
+	for (MeshModel *mm : md.meshList) {
+		if (mm == nullptr || mm->fullName().isEmpty()) continue;
+		const std::string path = QFileInfo(mm->fullName()).absoluteFilePath().toStdString();
+		for (auto &k : tri::SnakeController<CMeshO>::ProtectedFilesOf(path, mm->label().toStdString())) keep.push_back(k);
+	}
+	return keep;
+}
+
+/// Refuses a bad output file before any work is done (format by extension, folder, protected files).
+void checkOutput(const std::string &out, const std::vector<tri::ProtectedFile> &keep)
+{
+	tri::SnakeIO<CMeshO>::FormatOf(out);
+	tri::SafeFileWrite::CheckTarget(out, keep);
 }
 
 QString paperReference()
@@ -253,6 +274,8 @@ bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, 
 		}
 	} catch (const vcg::tri::SnakeError &e) {
 		return fail(QString::fromStdString(e.what()));
+	} catch (const nlohmann::json::exception &e) {
+		return fail(QString("Snake data: %1.").arg(QString::fromStdString(tri::SnakeIO<CMeshO>::JsonErrorText(e))));
 	} catch (const std::bad_alloc &) {
 		return fail("Out of memory.");
 	} catch (const std::exception &e) {
@@ -483,6 +506,8 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	const int maxOps = v.Int("MaxOperations");
 	const bool useQuality = v.Bool("UseQuality");
 	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
+	const std::vector<tri::ProtectedFile> keep = protectedFiles(md);
+	if (!out.empty()) checkOutput(out, keep); // before the work, not after it
 	const int energyType = v.Enum("EnergyType");
 	QString pointSource;
 	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(v, seeds, pointSource);
@@ -540,7 +565,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 
 	if (!out.empty()) {
 		std::vector<tri::GeometricSnake<CMeshO> *> list{&snake};
-		tri::SnakeIO<CMeshO>::WriteCurves(out, list);
+		tri::SnakeIO<CMeshO>::WriteCurves(out, list, keep);
 		Log("Wrote the curve to %s.", out.c_str());
 	}
 	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {curve}, {closed});
@@ -592,42 +617,49 @@ bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParamet
 	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
 	if (out.empty()) return fail("OutputFile is empty: give a .json, .obj or .ply file name.");
 	const bool all = v.Enum("Which") == 0;
+	const std::vector<tri::ProtectedFile> keep = protectedFiles(md);
+	checkOutput(out, keep);
 
-	std::string session = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+	nlohmann::json j;
 	QString source = "the mesh";
-	if (session.empty() && !m.fullName().isEmpty()) {
+	const std::string stored = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+	if (!stored.empty()) {
+		try {
+			j = nlohmann::json::parse(stored);
+		} catch (const nlohmann::json::exception &e) {
+			return fail(QString("The snakes kept on the mesh are unreadable: %1.")
+			                .arg(QString::fromStdString(tri::SnakeIO<CMeshO>::JsonErrorText(e))));
+		}
+	} else if (!m.fullName().isEmpty()) {
 		const std::string side =
 		    tri::SnakeController<CMeshO>::SidecarPath(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
-		std::ifstream in(side);
-		if (in) {
-			session.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+		if (QFileInfo::exists(QString::fromStdString(side))) {
+			j = tri::SnakeIO<CMeshO>::ParseFileLean(side); // only what a restore reads: memory ~ file size
 			source = QString::fromStdString(side);
 		}
 	}
-	if (session.empty())
+	if (j.is_null())
 		return fail("This mesh holds no geometric snakes (make some with the Geometric Snake edit tool or the "
 		            "\"Geometric Snake from Seed Vertices\" filter).");
-	nlohmann::json j;
-	try {
-		j = nlohmann::json::parse(session);
-	} catch (const std::exception &e) {
-		return fail(QString("The stored snakes are unreadable (%1).").arg(e.what()));
-	}
-	if (!j.contains("snakes") || !j["snakes"].is_array() || j["snakes"].empty())
-		return fail("This mesh holds no geometric snakes.");
+	if (!j.is_object() || !j.contains("snakes") || !j["snakes"].is_array())
+		return fail(QString("%1 holds no list of \"snakes\": it is not a geometric snake session.").arg(source));
+	if (j["snakes"].empty()) return fail("This mesh holds no geometric snakes.");
+	if (!j.contains("mesh") || !j["mesh"].is_object())
+		return fail(QString("%1 does not say which mesh its snakes belong to.").arg(source));
 
 	// Rebuild the snakes on the mesh (the curve is traced again from the samples); the
 	// energy is not needed for that, so the mesh is left untouched.
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
 	const auto &jm = j["mesh"];
-	if (jm.value("vertices", -1) != int(m.cm.vert.size()) || jm.value("faces", -1) != int(m.cm.face.size()))
+	if (tri::SnakeIO<CMeshO>::IntFrom(jm, "vertices", -1) != int(m.cm.vert.size()) ||
+	    tri::SnakeIO<CMeshO>::IntFrom(jm, "faces", -1) != int(m.cm.face.size()))
 		return fail("The stored snakes were made on another version of this mesh (its vertex or face count "
 		            "changed); they cannot be placed on it.");
 	tri::MeshValidation<CMeshO>::RequireAdjacencySafe(m.cm);
 	m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
 	auto surf = std::make_shared<tri::SnakeSurface<CMeshO>>(m.cm, 0);
 	std::vector<std::unique_ptr<tri::GeometricSnake<CMeshO>>> snakes;
-	const int selected = j.value("selected", 0);
+	const int selected = tri::SnakeIO<CMeshO>::IntFrom(j, "selected", 0);
 	for (int i = 0; i < int(j["snakes"].size()); ++i) {
 		if (!all && i != selected) continue;
 		std::unique_ptr<tri::GeometricSnake<CMeshO>> s(new tri::GeometricSnake<CMeshO>(surf));
@@ -643,7 +675,7 @@ bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParamet
 		curves.push_back(s->PolylinePositions());
 		closed.push_back(s->Closed());
 	}
-	tri::SnakeIO<CMeshO>::WriteCurves(out, list);
+	tri::SnakeIO<CMeshO>::WriteCurves(out, list, keep);
 	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake curves", curves, closed);
 	Log("Exported %d geometric snake(s) from %s to %s.", int(list.size()), qUtf8Printable(source), out.c_str());
 	return true;

@@ -237,7 +237,9 @@ TEST(SeedPath, BadInputThrows)
     EXPECT_THROW(SP::Compute(m, {3, -1}, false), SnakeError);
     EXPECT_THROW(SP::Compute(m, {3, n}, false), SnakeError);
     EXPECT_THROW(SP::Compute(m, {3, 9, 9, 20}, false), SnakeError); // repeated consecutive
-    EXPECT_THROW(SP::Compute(m, {3, 9, 20, 3}, true), SnakeError);  // last == first when closed
+    // a closed list ending on its first seed is the same loop (as in the snake filter, issue 8)
+    EXPECT_EQ(SP::Compute(m, {3, 9, 20, 3}, true).vertices, SP::Compute(m, {3, 9, 20}, true).vertices);
+    EXPECT_THROW(SP::Compute(m, {3, 9, 3}, true), SnakeError); // only 2 distinct seeds
     EXPECT_NO_THROW(SP::Compute(m, {3, 9, 20, 3}, false));           // fine for an open curve
     EXPECT_THROW(SP::Compute(m, {3, 9}, false, SeedPathCost::Feature, 0.0), SnakeError);
     EXPECT_THROW(SP::Compute(m, {3, 9}, false, SeedPathCost::Feature, std::nan("")), SnakeError);

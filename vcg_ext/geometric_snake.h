@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <functional>
 #include <map>
@@ -160,7 +161,7 @@ public:
         if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
         n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError("Geometric snake: the spacing is too small for this path (too many samples).");
+        if (n > 200000) throw SnakeError(tooManySamples(n, L, pv.size() - (closed ? 1 : 0)));
         double step = closed ? L / double(n) : L / double(n - 1);
 
         pushUndo();
@@ -237,10 +238,10 @@ public:
         for (size_t i = 1; i < pv.size(); ++i) cum[i] = cum[i - 1] + (pv[i].Pd(m) - pv[i - 1].Pd(m)).Norm();
         const double L = cum.back();
         const double d = st.params.spacing * surf->MeanEdge();
-        if (!(L > 0)) throw SnakeError("Geometric snake: the seed path has zero length.");
+        if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
         n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError("Geometric snake: the spacing is too small for this path (too many samples).");
+        if (n > 200000) throw SnakeError(tooManySamples(n, L, pv.size() - (closed ? 1 : 0)));
         const double step = closed ? L / double(n) : L / double(n - 1);
 
         pushUndo();
@@ -262,13 +263,14 @@ public:
         }
         const int gapsN = numGaps();
         st.gaps.assign(gapsN, Gap());
+        const double eps = 1e-12 * L; // relative: any scale
         for (int g = 0; g < gapsN; ++g) {
             const double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
             Gap &gap = st.gaps[g];
             for (size_t i = 0; i < np; ++i) {
-                if (cum[i + 1] < s0 - 1e-12 || cum[i] > s1 + 1e-12) continue;
+                if (cum[i + 1] < s0 - eps || cum[i] > s1 + eps) continue;
                 gap.faces.push_back(pieceFace[i]);
-                if (cum[i] > s0 + 1e-12 && cum[i] < s1 - 1e-12) gap.crossings.push_back(pv[i]);
+                if (cum[i] > s0 + eps && cum[i] < s1 - eps) gap.crossings.push_back(pv[i]);
             }
             gap.traced = true;
         }
@@ -281,6 +283,8 @@ public:
     void InitFromSamples(const std::vector<SnakeSample> &samples, bool closed)
     {
         if (int(samples.size()) < (closed ? 3 : 2)) throw SnakeError("Geometric snake: too few samples.");
+        if (samples.size() > 200000)
+            throw SnakeError("Geometric snake: " + std::to_string(samples.size()) + " samples are too many (at most 200000).");
         for (const auto &s : samples) checkPoint(s.p);
         pushUndo();
         st.samples = samples;
@@ -523,6 +527,21 @@ private:
     static double msSince(clock::time_point t0)
     {
         return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+    }
+    /// The "too many samples" message, blaming the spacing or the length of the path.
+    std::string tooManySamples(long n, double L, size_t pathPoints) const
+    {
+        const double edges = L / surf->MeanEdge();
+        char buf[320];
+        if (st.params.spacing < 1.0 && edges <= 200000)
+            std::snprintf(buf, sizeof buf, "Geometric snake: the sample spacing (%g edge lengths) is too small for "
+                          "this path: it would need %ld samples (at most 200000). Raise the spacing.",
+                          st.params.spacing, n);
+        else
+            std::snprintf(buf, sizeof buf, "Geometric snake: the seed path is too long for one snake: %zu points, "
+                          "%.0f mean edge lengths, %ld samples at spacing %g (at most 200000). Use fewer or "
+                          "closer seeds, or a larger spacing.", pathPoints, edges, n, st.params.spacing);
+        return buf;
     }
     int numGaps() const
     {

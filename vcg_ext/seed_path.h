@@ -50,15 +50,18 @@ public:
     /// length * (featureEpsilon + mean quality of the two endpoints). A* with the straight-line
     /// distance (times featureEpsilon for the feature cost, a lower bound since quality >= 0) as
     /// heuristic, so a short path on a huge mesh only visits a small neighbourhood.
-    static Result Compute(MeshType &m, const std::vector<int> &seeds, bool closed,
+    static Result Compute(MeshType &m, const std::vector<int> &seedList, bool closed,
                           SeedPathCost cost = SeedPathCost::Length, double featureEpsilon = 0.05)
     {
         MV::RequireSurface(m);
+        // A closed list may end on its first seed ("0, 80, 98, 0"): the loop closes there anyway.
+        std::vector<int> seeds(seedList);
+        if (closed && seeds.size() > 1 && seeds.front() == seeds.back()) seeds.pop_back();
         const int nv = int(m.vert.size());
         const size_t minSeeds = closed ? 3 : 2;
         if (seeds.size() < minSeeds)
-            throw SnakeError(std::string("A ") + (closed ? "closed" : "open") + " snake needs at least " +
-                             std::to_string(minSeeds) + " seed vertices (got " + std::to_string(seeds.size()) + ").");
+            throw SnakeError(std::string(closed ? "A closed" : "An open") + " snake needs at least " +
+                             std::to_string(minSeeds) + " distinct seed vertices (got " + std::to_string(seeds.size()) + ").");
         if (cost == SeedPathCost::Feature) {
             if (!tri::HasPerVertexQuality(m))
                 throw SnakeError("The feature-weighted seed path needs the feature energy in the vertex quality.");
@@ -85,9 +88,6 @@ public:
             if (seeds[i] == seeds[i + 1])
                 throw SnakeError("Seeds " + std::to_string(i + 1) + " and " + std::to_string(i + 2) +
                                  " are the same vertex (" + std::to_string(seeds[i]) + "); remove the repetition.");
-        if (closed && seeds.front() == seeds.back())
-            throw SnakeError("The last seed repeats the first (vertex " + std::to_string(seeds.front()) +
-                             "); a closed snake is closed automatically, do not repeat the first seed.");
 
         Search search(m, cost, featureEpsilon);
 

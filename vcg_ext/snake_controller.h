@@ -13,6 +13,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
@@ -24,6 +26,7 @@
 
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/geometric_snake.h>
+#include <vcg_ext/safe_file_write.h>
 #include <vcg_ext/seed_path.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
@@ -271,7 +274,6 @@ public:
             throw SnakeError(std::string("Geometric snake: a ") + (closed ? "closed" : "open") + " snake needs at least " +
                              std::to_string(need) + " seeds (" + std::to_string(seeds.size()) + " placed).");
         std::vector<int> s = seeds;
-        if (closed && s.size() > need && s.front() == s.back()) s.pop_back();
         EnsureSurface();
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(surface, params));
@@ -450,14 +452,14 @@ public:
 
     // ================================================================ output
     /// Curves by extension (.json/.obj/.ply): the selected snake or all.
-    void Export(const std::string &path, bool all)
+    void Export(const std::string &path, bool all, const std::vector<ProtectedFile> &keep = {})
     {
         std::vector<Snake *> out;
         if (all) for (auto &s : snakes) out.push_back(s.get());
         else if (SelectedSnake()) out.push_back(SelectedSnake());
         if (out.empty()) throw SnakeError("Geometric snake: there is no snake to export.");
         if (path.empty()) throw SnakeError("Geometric snake: no file name given.");
-        IO::WriteCurves(path, out);
+        IO::WriteCurves(path, out, keep);
     }
 
     /// The whole session: energy settings, parameters, seeds, snakes with pins.
@@ -485,26 +487,33 @@ public:
         try {
             if (!j.is_object() || j.value("format", std::string()) != FormatName())
                 throw SnakeError("Geometric snake: not a snake session file.");
-            if (j.value("version", 0) > FormatVersion())
+            if (IO::IntFrom(j, "version", 0) > FormatVersion())
                 throw SnakeError("Geometric snake: the session file is from a newer version.");
-            const json &jm = j.at("mesh");
-            if (jm.at("vertices").get<int>() != int(mesh.vert.size()) || jm.at("faces").get<int>() != int(mesh.face.size()))
+            if (!j.contains("mesh")) throw SnakeError("Geometric snake: the session file does not say which mesh it belongs to.");
+            const json &jm = j["mesh"];
+            const int nv = IO::IntFrom(jm, "vertices", -1), nf = IO::IntFrom(jm, "faces", -1);
+            if (nv != int(mesh.vert.size()) || nf != int(mesh.face.size()))
                 throw SnakeError("Geometric snake: the session was saved on another mesh (" +
-                                 std::to_string(jm.at("vertices").get<int>()) + " vertices, " +
-                                 std::to_string(jm.at("faces").get<int>()) + " faces; this mesh has " +
+                                 std::to_string(nv) + " vertices, " +
+                                 std::to_string(nf) + " faces; this mesh has " +
                                  std::to_string(mesh.vert.size()) + " and " + std::to_string(mesh.face.size()) + ").");
             SnakeParams np = j.contains("params") ? IO::ParamsFromJson(j["params"]) : SnakeParams();
-            const int etype = j.at("energy").value("type", 0); // -1: the vertex quality as it is
+            const json &je = j.contains("energy") ? j["energy"] : json::object();
+            const int etype = IO::IntFrom(je, "type", 0); // -1: the vertex quality as it is
             FeatureEnergyType et = FeatureEnergyType(std::max(0, etype));
-            int es = j.at("energy").value("smoothing", 2);
+            int es = IO::IntFrom(je, "smoothing", 2);
             if (etype < -1 || etype >= FeatureEnergyTypeCount() || es < 0 || es > 1000)
                 throw SnakeError("Geometric snake: bad energy settings in the session file.");
-            int sc = j.value("seed_cost", 0);
+            int sc = IO::IntFrom(j, "seed_cost", 0);
             if (sc < 0 || sc > 1) throw SnakeError("Geometric snake: bad seed cost in the session file.");
-            std::vector<int> ns = j.value("seeds", std::vector<int>());
+            std::vector<int> ns;
+            if (j.contains("seeds")) {
+                if (!j["seeds"].is_array()) throw SnakeError("Geometric snake: \"seeds\" must be a list of vertex indices.");
+                for (const json &v : j["seeds"]) ns.push_back(IO::IndexFromJson(v, "seeds"));
+            }
             for (int v : ns) checkVertex(v);
 
-            const double ca = j.at("energy").value("crease_angle", CreaseEnergy<MeshType>::DefaultAngle());
+            const double ca = IO::RealFrom(je, "crease_angle", CreaseEnergy<MeshType>::DefaultAngle());
             if (!std::isfinite(ca) || ca <= 0 || ca >= 180)
                 throw SnakeError("Geometric snake: bad crease angle in the session file.");
 
@@ -519,13 +528,19 @@ public:
             EnsureSurface();
             checkMesh();
             std::vector<std::unique_ptr<Snake>> nsn;
-            for (const json &js : j.at("snakes")) {
-                SnakeParams sp = js.contains("params") ? IO::ParamsFromJson(js["params"], np) : np;
+            if (!j.contains("snakes") || !j["snakes"].is_array())
+                throw SnakeError("Geometric snake: the session file has no list of \"snakes\".");
+            for (const json &js : j["snakes"]) {
+                SnakeParams sp = js.is_object() && js.contains("params") ? IO::ParamsFromJson(js["params"], np) : np;
                 std::unique_ptr<Snake> s(new Snake(surface, sp));
-                s->InitFromSamples(IO::SamplesFromJson(mesh, js.at("samples")), js.value("closed", false));
+                if (!js.is_object() || !js.contains("samples"))
+                    throw SnakeError("Geometric snake: a snake in the session file has no \"samples\".");
+                if (js.contains("closed") && !js["closed"].is_boolean())
+                    throw SnakeError("Geometric snake: \"closed\" must be true or false.");
+                s->InitFromSamples(IO::SamplesFromJson(mesh, js["samples"]), js.value("closed", false));
                 nsn.push_back(std::move(s));
             }
-            int nsel = j.value("selected", nsn.empty() ? -1 : 0);
+            int nsel = IO::IntFrom(j, "selected", nsn.empty() ? -1 : 0);
             if (nsel < -1 || nsel >= int(nsn.size())) nsel = nsn.empty() ? -1 : 0;
             if (nsel < 0 && !nsn.empty()) nsel = 0;
 
@@ -536,7 +551,7 @@ public:
             seedCost = SeedPathCost(sc);
             touch("load");
         } catch (const json::exception &e) {
-            throw SnakeError(std::string("Geometric snake: broken session file (") + e.what() + ").");
+            throw SnakeError("Geometric snake: broken session file: " + IO::JsonErrorText(e) + ".");
         }
     }
 
@@ -547,39 +562,90 @@ public:
         return meshPath + ".snakes.json";
     }
 
-    /// Writes the session atomically (temporary file, then rename): a crash never leaves
-    /// a half-written session behind.
+    /// Writes the session safely (SafeFileWrite: temporary file, then rename): a crash or a
+    /// full disk never leaves a half-written session behind.
     void Save(const std::string &path)
     {
         if (path.empty()) throw SnakeError("Geometric snake: no file name to save the session to.");
-        std::string tmp = path + ".tmp";
-        {
-            std::ofstream out(tmp);
-            if (!out) throw SnakeError("Geometric snake: cannot write \"" + tmp + "\".");
-            out << ToJson().dump(1) << "\n";
-            out.flush();
-            if (!out) throw SnakeError("Geometric snake: writing \"" + tmp + "\" failed.");
-        }
-        if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-            std::remove(tmp.c_str());
-            throw SnakeError("Geometric snake: cannot replace \"" + path + "\".");
-        }
+        SafeFileWrite::Write(path, ToJson().dump(1) + "\n");
         savedRevision = revision;
     }
 
-    /// Loads a session file; false if there is none, throws if it is unusable.
+    /// Loads a session file; false if there is none, throws if it is unusable. Only what the
+    /// session needs is kept while reading (SnakeIO::ParseLean): memory about the file's size.
     bool Load(const std::string &path)
     {
-        std::ifstream in(path);
-        if (!in) return false;
-        json j;
-        try { j = json::parse(in); }
-        catch (const json::exception &e) {
-            throw SnakeError("Geometric snake: \"" + path + "\" is not valid JSON (" + e.what() + ").");
-        }
-        FromJson(j);
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) return false;
+        FromJson(IO::ParseFileLean(path));
         savedRevision = revision;
         return true;
+    }
+
+    /// Where a session goes when the mesh's sidecar could not be read (the sidecar is kept as
+    /// it is): "<mesh>.snakes.recovered-<YYYYMMDD-HHMMSS>[-k].json", a name not yet taken.
+    static std::string RecoveryPath(const std::string &meshPath, std::time_t when)
+    {
+        char stamp[32];
+        std::tm tmv;
+        localtime_r(&when, &tmv);
+        std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tmv);
+        std::error_code ec;
+        for (int k = 1;; ++k) {
+            std::string p = meshPath + ".snakes.recovered-" + stamp + (k > 1 ? "-" + std::to_string(k) : "") + ".json";
+            if (!std::filesystem::exists(p, ec)) return p;
+        }
+    }
+
+    /// Files of a mesh that curve exports and autosaves never overwrite: the mesh itself, its
+    /// sidecar and the sidecar's backup.
+    static std::vector<ProtectedFile> ProtectedFilesOf(const std::string &meshPath, const std::string &label = "")
+    {
+        if (meshPath.empty()) return {};
+        const std::string name = label.empty() ? meshPath : label;
+        return {{meshPath, "the mesh \"" + name + "\""},
+                {SidecarPath(meshPath), "the snake session file (sidecar) of \"" + name + "\""},
+                {SidecarPath(meshPath) + ".bak", "a backup of the snake session file of \"" + name + "\""}};
+    }
+
+    /// What OpenSidecar did, for the status line and the Log.
+    struct SidecarStatus
+    {
+        bool restored = false;  ///< the session was restored from the sidecar
+        bool unreadable = false;///< a sidecar exists but could not be used: it is kept untouched
+        std::string message;    ///< for the user ("" when there is nothing to say)
+    };
+
+    /// Starts the session of the mesh file `meshPath`: restores its sidecar (if `restore` and it
+    /// exists) and autosaves to it from now on. A sidecar that cannot be read (broken, truncated,
+    /// made on another mesh, too large) is never touched: the session autosaves to a new
+    /// RecoveryPath() file instead, and the message says so.
+    SidecarStatus OpenSidecar(const std::string &meshPath, bool restore, std::time_t now = std::time(nullptr))
+    {
+        SidecarStatus st;
+        SetAutosave(std::string());
+        if (meshPath.empty()) return st;
+        const std::string side = SidecarPath(meshPath);
+        std::error_code ec;
+        if (std::filesystem::exists(side, ec)) {
+            try {
+                if (restore) {
+                    Load(side);
+                    st.restored = true;
+                    st.message = "Restored " + side + ".";
+                } else {
+                    IO::ParseFileLean(side); // readable? (the session itself came from the mesh)
+                }
+            } catch (const std::exception &e) {
+                st.unreadable = true;
+                const std::string rec = RecoveryPath(meshPath, now);
+                st.message = std::string(e.what()) + " The file is kept unchanged; this session is saved to " + rec + ".";
+                SetAutosave(rec, 1.0);
+                return st;
+            }
+        }
+        SetAutosave(side, 1.0);
+        return st;
     }
 
     /// Autosave target (empty: none) and minimum interval between two autosaves.
