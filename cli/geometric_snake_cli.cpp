@@ -255,7 +255,8 @@ std::vector<ProtectedFile> Keep(const Job &job)
 /// Validates a job before any work: parameters, outputs (format, folder, not the input).
 void CheckJob(Job &job)
 {
-    if (job.mesh.empty()) throw UsageError("No mesh given. Usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(*job.cmd), 2));
+    if (job.mesh.empty())
+        throw UsageError("No mesh given. Usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(*job.cmd), 2));
     job.values->Check(true);
     if (job.output.empty() && job.cmd->outputRequired)
         throw UsageError("No output file: give -o FILE (" + job.cmd->name + " writes " + job.cmd->outputs[0] + ").");
@@ -264,7 +265,7 @@ void CheckJob(Job &job)
     if (!job.output.empty()) CheckWritable(job.output, job.cmd->outputs, "the output", Keep(job));
     if (!job.meshOut.empty()) {
         CheckWritable(job.meshOut, {"ply"}, "the mesh", Keep(job));
-        if (job.meshOut == job.output) throw UsageError("-o and --mesh-out name the same file.");
+        if (SafeFileWrite::SameFile(job.meshOut, job.output)) throw UsageError("-o and --mesh-out name the same file.");
     }
 }
 
