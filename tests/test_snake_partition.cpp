@@ -154,7 +154,7 @@ TEST(SnakePartition, LongSnakeWithCornersEverywhereIsFast)
     auto t0 = std::chrono::steady_clock::now();
     for (bool closed : {false, true}) ExpectValid(SnakePartition::Compute(n, closed, 6, all), n, closed, 6, "200k");
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    EXPECT_LT(s, 5.0); // measured ~0.1 s; a generous bound against a quadratic blow-up
+    EXPECT_LT(s, 30.0); // measured ~0.15 s; the old quadratic search would take hours
 }
 
 namespace {
@@ -263,5 +263,5 @@ TEST(SnakePartition, SidecarOfTenThousandZigZagSamplesRestores)
     EXPECT_GE(pl.size(), 10000u);
     for (const auto &p : pl) ASSERT_TRUE(p.IsValid());
     ExpectSnakeSane(s, 10000);
-    EXPECT_LT(secs, 20.0); // measured ~0.5 s
+    EXPECT_LT(secs, 60.0); // measured ~0.2 s: a bound against a hang only (the machine is shared)
 }
