@@ -6,6 +6,7 @@
 // mesh), and written safely: to a temporary file next to the target, then renamed over it.
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -28,21 +29,17 @@
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
+#include <vcg_ext/safe_file_write.h>
 #include <vcg_ext/snake_error.h>
 
 namespace gs_cli {
 
 using vcg::tri::SnakeError;
 
-inline std::string Extension(const std::string &path)
-{
-    const size_t slash = path.find_last_of('/');
-    const size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string e = path.substr(dot + 1);
-    for (auto &c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return e;
-}
+using vcg::tri::ProtectedFile;
+using vcg::tri::SafeFileWrite;
+
+inline std::string Extension(const std::string &path) { return SafeFileWrite::Extension(path); }
 
 /// False for a file vcglib's ASCII STL reader would never finish: no line break at all (it skips
 /// the first line with getc until '\n') and not the size of a binary STL.
@@ -129,18 +126,11 @@ inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
     }
 }
 
-/// True if both paths name the same existing file (also through links).
-inline bool SameFile(const std::string &a, const std::string &b)
-{
-    struct stat sa, sb;
-    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
-           sa.st_ino == sb.st_ino;
-}
-
-/// Checks, before any work, that `path` can be written (folder exists and is writable, not a
-/// folder, not one of `inputs`, extension among `exts`). `what` names it in messages.
+/// Checks, before any work, that `path` can be written: extension among `exts`, then
+/// SafeFileWrite's checks (folder exists and is writable, not a folder, not one of `keep`).
+/// `what` names it in messages.
 inline void CheckWritable(const std::string &path, const std::vector<std::string> &exts, const std::string &what,
-                          const std::vector<std::string> &inputs)
+                          const std::vector<ProtectedFile> &keep)
 {
     const std::string ext = Extension(path);
     bool known = false;
@@ -152,19 +142,7 @@ inline void CheckWritable(const std::string &path, const std::vector<std::string
     if (!known)
         throw SnakeError("Cannot write " + what + " \"" + path + "\": unknown format \"" + ext + "\" (use " + list +
                          ").");
-    for (const auto &in : inputs)
-        if (SameFile(path, in))
-            throw SnakeError("Refusing to write " + what + " over the input file \"" + path +
-                             "\": choose another output name.");
-    struct stat st;
-    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-        throw SnakeError("Cannot write " + what + " \"" + path + "\": it is a folder.");
-    const size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-    if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-        throw SnakeError("Cannot write " + what + " \"" + path + "\": the folder \"" + dir + "\" does not exist.");
-    if (::access(dir.c_str(), W_OK) != 0)
-        throw SnakeError("Cannot write " + what + " \"" + path + "\": the folder \"" + dir + "\" is not writable.");
+    SafeFileWrite::CheckTarget(path, keep);
 }
 
 /// The temporary file AtomicWrite uses for `path` in process `pid` (any counter): "<dir>/.<name>.tmp<pid>-".
@@ -175,10 +153,11 @@ inline std::string TempPrefix(const std::string &path, long pid)
     return dir + "." + path.substr(dir.size()) + ".tmp" + std::to_string(pid) + "-";
 }
 
-/// Removes what AtomicWrite of process `pid` may have left for `path` when the process was killed.
-inline void RemoveTemporaries(const std::string &path, long pid)
+/// Removes the temporary files a killed process may have left for `path` (AtomicWrite's and
+/// SafeFileWrite's, both "<dir>/.<name>.tmp...").
+inline void RemoveTemporaries(const std::string &path)
 {
-    const std::string prefix = TempPrefix(path, pid);
+    const std::string prefix = TempPrefix(path, 0).substr(0, TempPrefix(path, 0).size() - 2);
     const size_t slash = prefix.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "." : prefix.substr(0, slash);
     const std::string stem = prefix.substr(slash == std::string::npos ? 0 : slash + 1);
@@ -189,15 +168,20 @@ inline void RemoveTemporaries(const std::string &path, long pid)
     }
 }
 
-/// Writes through `writer(tmp)` into a temporary file in the target's folder (same extension,
-/// so format-by-extension writers work), then renames it over `path`: a failure leaves no
-/// partial file and never truncates an existing one.
+/// SafeFileWrite for vcglib's exporters, which write to a file name: `writer(tmp)` fills a
+/// temporary file in the target's folder (same extension, for writers that choose the format by
+/// it), which is flushed to disk and renamed over `path`: a failure leaves no partial file and
+/// never truncates an existing one.
 inline void AtomicWrite(const std::string &path, const std::function<void(const std::string &)> &writer)
 {
     static int counter = 0;
     const std::string tmp = TempPrefix(path, long(::getpid())) + std::to_string(++counter) + "." + Extension(path);
     try {
         writer(tmp);
+        const int fd = ::open(tmp.c_str(), O_RDONLY);
+        const bool synced = fd >= 0 && ::fsync(fd) == 0;
+        if (fd >= 0) ::close(fd);
+        if (!synced) throw SnakeError("Cannot write \"" + path + "\": " + std::strerror(errno) + ".");
         if (std::rename(tmp.c_str(), path.c_str()) != 0)
             throw SnakeError("Cannot write \"" + path + "\": " + std::strerror(errno) + ".");
     } catch (...) {

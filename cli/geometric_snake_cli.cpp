@@ -243,19 +243,29 @@ void SetOption(Job &job, const std::string &key, const std::string &value, bool 
     }
 }
 
+/// The files a job must never overwrite: its input mesh (and Pick Points file).
+std::vector<ProtectedFile> Keep(const Job &job)
+{
+    std::vector<ProtectedFile> keep{{job.mesh, "the input mesh"}};
+    if (const ParamDef *d = job.values->FindOption("pp"))
+        if (!job.values->Text(d->name).empty()) keep.push_back({job.values->Text(d->name), "the seed file"});
+    return keep;
+}
+
 /// Validates a job before any work: parameters, outputs (format, folder, not the input).
 void CheckJob(Job &job)
 {
-    if (job.mesh.empty()) throw UsageError("No mesh given. Usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(*job.cmd), 2));
+    if (job.mesh.empty())
+        throw UsageError("No mesh given. Usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(*job.cmd), 2));
     job.values->Check(true);
     if (job.output.empty() && job.cmd->outputRequired)
         throw UsageError("No output file: give -o FILE (" + job.cmd->name + " writes " + job.cmd->outputs[0] + ").");
     if (job.output.empty() && job.meshOut.empty() && !job.jsonLog)
         throw UsageError("Nothing to write: give -o FILE, --mesh-out FILE.ply or --json-log.");
-    if (!job.output.empty()) CheckWritable(job.output, job.cmd->outputs, "the output", {job.mesh});
+    if (!job.output.empty()) CheckWritable(job.output, job.cmd->outputs, "the output", Keep(job));
     if (!job.meshOut.empty()) {
-        CheckWritable(job.meshOut, {"ply"}, "the mesh", {job.mesh});
-        if (job.meshOut == job.output) throw UsageError("-o and --mesh-out name the same file.");
+        CheckWritable(job.meshOut, {"ply"}, "the mesh", Keep(job));
+        if (SafeFileWrite::SameFile(job.meshOut, job.output)) throw UsageError("-o and --mesh-out name the same file.");
     }
 }
 
@@ -426,12 +436,7 @@ json RunPath(Job &job, CMeshO &m, int mask, json r)
         json pl = json::array();
         for (const auto &p : pts) pl.push_back({p[0], p[1], p[2]});
         j["polyline"] = pl;
-        AtomicWrite(job.output, [&](const std::string &tmp) {
-            std::ofstream out(tmp);
-            out.precision(17);
-            out << j.dump(1) << "\n";
-            if (!out.flush()) throw SnakeError("Writing \"" + job.output + "\" failed.");
-        });
+        SafeFileWrite::Write(job.output, j.dump(1) + "\n", Keep(job));
     } else {
         SavePolylines({pts}, {closed}, job.output);
     }
@@ -489,7 +494,10 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
         ctl.CreateSnakeFromSeedPoints(Snap(job, m, seedPts, closed, source).points, closed);
     }
     json warnings = json::array();
-    for (const auto &w : ctl.EnsureSurface().Warnings()) warnings.push_back(w);
+    // (As the filter: those warnings are about the vertex energy; the crease energy is read at the samples.)
+    const bool creaseField = !useQuality && energyType == int(FeatureEnergyType::Crease);
+    for (const auto &w : ctl.EnsureSurface().Warnings())
+        if (!creaseField) warnings.push_back(w);
     GeometricSnake<CMeshO> &snake = ctl.Get(0);
     {
         Progress bar(job.progress);
@@ -505,7 +513,7 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
             throw SnakeError("The snake produced invalid coordinates (please report this with the mesh).");
     if (!job.output.empty()) {
         std::vector<GeometricSnake<CMeshO> *> list{&snake};
-        AtomicWrite(job.output, [&](const std::string &tmp) { SnakeIO<CMeshO>::WriteCurves(tmp, list); });
+        SnakeIO<CMeshO>::WriteCurves(job.output, list, Keep(job));
     }
     if (!job.meshOut.empty()) {
         namespace io = vcg::tri::io;
@@ -743,7 +751,7 @@ int RunBatch(const std::string &file, int jobs, int timeout, bool jsonLog, bool 
             try {
                 CaseToJob(cases[i].text, dir, killed);
                 for (const auto &o : {killed.output, killed.meshOut})
-                    if (!o.empty()) RemoveTemporaries(o, long(pid));
+                    if (!o.empty()) RemoveTemporaries(o);
             } catch (const std::exception &) {
             }
             std::string why = "the case stopped without a result";
