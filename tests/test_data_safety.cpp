@@ -307,6 +307,20 @@ long ChildPeakKb(const std::function<void()> &f, bool &ok, double &cpu)
     return run(true) - base;
 }
 
+// AddressSanitizer's shadow memory and quarantine inflate the peak several times: the memory
+// bounds hold for the real (uninstrumented) build only.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kMemoryMeasured = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kMemoryMeasured = false;
+#else
+constexpr bool kMemoryMeasured = true;
+#endif
+#else
+constexpr bool kMemoryMeasured = true;
+#endif
+
 } // namespace
 
 TEST(Sidecar, LargeSidecarsLoadInBoundedTimeAndMemoryOrAreRefused)
@@ -332,7 +346,7 @@ TEST(Sidecar, LargeSidecarsLoadInBoundedTimeAndMemoryOrAreRefused)
            kb / 1024.0);
     EXPECT_LT(cpu, 2.0);
     EXPECT_LT(secs, 30.0); // a hang, on a busy machine
-    EXPECT_LT(kb / 1024.0, 10 * mb10k);
+    if (kMemoryMeasured) EXPECT_LT(kb / 1024.0, 10 * mb10k);
 
     // 1,000,000 samples: refused with a message, while reading, in bounded time and memory
     const std::string p1m = t / "m1m.ply.snakes.json";
@@ -364,7 +378,7 @@ TEST(Sidecar, LargeSidecarsLoadInBoundedTimeAndMemoryOrAreRefused)
            kb1m / 1024.0);
     EXPECT_LT(cpu, 4.0);
     EXPECT_LT(secs1m, 60.0);
-    EXPECT_LT(kb1m / 1024.0, 10 * mb1m);
+    if (kMemoryMeasured) EXPECT_LT(kb1m / 1024.0, 10 * mb1m);
     msg = ErrorOf([&] { Controller c(m); c.Load(p1m); });
     EXPECT_NE(msg.find("was not loaded"), std::string::npos) << msg;
 }
