@@ -442,19 +442,7 @@ private:
                         bestLast = u;
                         open.emplace(bestTotal, goalNode);
                     }
-                const vcg::Point3d pu = P(u);
-                ForNeighbours(u, [&](int w) {
-                    if (done_[w] || w == u) return;
-                    double c = vcg::Distance(pu, P(w));
-                    if (feature_) c *= eps_ + 0.5 * (q_[u] + q_[w]);
-                    const double ng = g_[u] + c;
-                    if (ng < g_[w]) {
-                        if (g_[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
-                        g_[w] = ng;
-                        parent_[w] = u;
-                        open.emplace(ng + hScale_ * vcg::Distance(P(w), goal), w);
-                    }
-                });
+                relax(u, goal, open);
             }
             path.clear();
             if (bestLast < 0) return std::numeric_limits<double>::infinity();
@@ -483,19 +471,7 @@ private:
                     found = true;
                     break;
                 }
-                const vcg::Point3d pu = P(u);
-                ForNeighbours(u, [&](int w) {
-                    if (done_[w] || w == u) return;
-                    double c = vcg::Distance(pu, P(w));
-                    if (feature_) c *= eps_ + 0.5 * (q_[u] + q_[w]);
-                    const double ng = g_[u] + c;
-                    if (ng < g_[w]) {
-                        if (g_[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
-                        g_[w] = ng;
-                        parent_[w] = u;
-                        open.emplace(ng + H(w, pt), w);
-                    }
-                });
+                relax(u, pt, open);
             }
             path.clear();
             if (!found) return false;
@@ -523,6 +499,25 @@ private:
         }
         vcg::Point3d P(int v) const { return vcg::Point3d::Construct(m_.vert[v].cP()); }
         double H(int v, const vcg::Point3d &pt) const { return hScale_ * vcg::Distance(P(v), pt); }
+        /// One A* expansion of u: relaxes its edges (length, or Eq. 6-weighted length for the
+        /// feature cost) and queues the improved neighbours with the heuristic towards goal.
+        template <class Queue>
+        void relax(int u, const vcg::Point3d &goal, Queue &open)
+        {
+            const vcg::Point3d pu = P(u);
+            ForNeighbours(u, [&](int w) {
+                if (done_[w] || w == u) return;
+                double c = vcg::Distance(pu, P(w));
+                if (feature_) c *= eps_ + 0.5 * (q_[u] + q_[w]);
+                const double ng = g_[u] + c;
+                if (ng < g_[w]) {
+                    if (g_[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
+                    g_[w] = ng;
+                    parent_[w] = u;
+                    open.emplace(ng + H(w, goal), w);
+                }
+            });
+        }
 
         template <class F>
         void ForNeighbours(int u, F &&fn)
