@@ -52,7 +52,8 @@ public:
                     {"spacing", p.spacing}, {"updates_per_operation", p.updatesPerOperation},
                     {"segment_samples", p.segmentSamples}, {"virtual_layers", p.virtualLayers},
                     {"max_step", p.maxStep}, {"convergence_tol", p.convergenceTol},
-                    {"convergence_window", p.convergenceWindow}, {"method", int(p.method)}};
+                    {"convergence_window", p.convergenceWindow}, {"balloon", p.balloon},
+                    {"method", int(p.method)}};
     }
     static SnakeParams ParamsFromJson(const json &j, SnakeParams p = SnakeParams())
     {
@@ -67,6 +68,7 @@ public:
         p.maxStep = j.value("max_step", p.maxStep);
         p.convergenceTol = j.value("convergence_tol", p.convergenceTol);
         p.convergenceWindow = j.value("convergence_window", p.convergenceWindow);
+        p.balloon = j.value("balloon", p.balloon);
         p.method = SnakeMethod(j.value("method", int(p.method)));
         p.Validate();
         return p;
