@@ -25,6 +25,7 @@
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_mesh_store.h>
+#include <vcg_ext/snake_param_defs.h>
 
 #include <QFileInfo>
 #include <fstream>
@@ -34,11 +35,48 @@ using namespace vcg;
 namespace {
 
 const char *const kEnergyNames[] = {"normal variation", "curvature norm", "quadric error"};
-constexpr int kDefaultSmoothingSteps = 2;
+const int kDefaultSmoothingSteps = tri::SnakeParamDefs::DefaultSmoothingSteps();
 
-QStringList energyTypeLabels()
+/// MeshLab parameters from the shared definitions (vcg_ext/snake_param_defs.h), which the
+/// geometric-snake program reads too: same names, defaults, ranges and help.
+void addParams(RichParameterList &par, const std::vector<tri::ParamDef> &defs)
 {
-	return QStringList() << "Normal variation" << "Curvature norm" << "Quadric error";
+	for (const tri::ParamDef &d : defs) {
+		const QString name = QString::fromStdString(d.name), label = QString::fromStdString(d.label);
+		QString help = QString::fromStdString(d.help);
+		if (d.kind == tri::ParamDef::Int || d.kind == tri::ParamDef::Real)
+			help += QString(" Range %1.").arg(QString::fromStdString(d.RangeText()));
+		switch (d.kind) {
+		case tri::ParamDef::Bool: par.addParam(RichBool(name, d.value != 0, label, help)); break;
+		case tri::ParamDef::Int: par.addParam(RichInt(name, int(d.value), label, help)); break;
+		case tri::ParamDef::Real: par.addParam(RichFloat(name, float(d.value), label, help)); break;
+		case tri::ParamDef::Text: par.addParam(RichString(name, QString::fromStdString(d.text), label, help)); break;
+		case tri::ParamDef::Enum: {
+			QStringList labels;
+			for (const auto &c : d.choices) labels << QString::fromStdString(c.label);
+			par.addParam(RichEnum(name, int(d.value), labels, label, help));
+			break;
+		}
+		}
+	}
+}
+
+/// The filter's values, checked against the shared ranges (SnakeError on a bad one).
+tri::ParamValues readParams(const RichParameterList &par, const std::vector<tri::ParamDef> &defs)
+{
+	tri::ParamValues v(defs);
+	for (const tri::ParamDef &d : defs) {
+		const QString name = QString::fromStdString(d.name);
+		switch (d.kind) {
+		case tri::ParamDef::Bool: v.SetNumber(d.name, par.getBool(name) ? 1 : 0); break;
+		case tri::ParamDef::Int: v.SetNumber(d.name, par.getInt(name)); break;
+		case tri::ParamDef::Real: v.SetNumber(d.name, par.getFloat(name)); break;
+		case tri::ParamDef::Enum: v.SetNumber(d.name, par.getEnum(name)); break;
+		case tri::ParamDef::Text: v.SetText(d.name, par.getString(name).toStdString()); break;
+		}
+	}
+	v.Check();
+	return v;
 }
 
 QString paperReference()
@@ -177,81 +215,10 @@ int FilterGeometricSnakePlugin::postCondition(QAction *a) const
 void FilterGeometricSnakePlugin::initParameterSet(QAction *a, MeshModel & /*m*/, RichParameterList &par)
 {
 	switch (ID(a)) {
-	case FP_FEATURE_ENERGY:
-		par.addParam(RichEnum("EnergyType", 0, energyTypeLabels(), "Energy type",
-		    "How features are measured at each vertex. <b>Normal variation</b> (paper): how much the "
-		    "normals of the faces around the vertex differ. <b>Curvature norm</b>: the norm of the "
-		    "principal curvatures. <b>Quadric error</b>: the distance error of the vertex's "
-		    "face-plane quadric. In every case the result is normalised to [0,1], 0 = feature."));
-		par.addParam(RichInt("SmoothingSteps", kDefaultSmoothingSteps, "Smoothing steps",
-		    "Number of Laplacian smoothing passes over the per-vertex energy before normalisation "
-		    "(0 = none, at most 10000). A little smoothing removes noise and widens the basin of "
-		    "attraction of features."));
-		par.addParam(RichBool("Colorize", true, "Colorize by energy",
-		    "Also colour the vertices by the energy with MeshLab's quality colour ramp over [0,1] "
-		    "(red = feature, blue = flat). Adds per-vertex colour to the mesh."));
-		break;
-	case FP_SEED_PATH:
-		par.addParam(RichString("Seeds", "", "Seed vertices",
-		    "Comma-separated 0-based vertex indices, in file order (the order of the vertices in the "
-		    "loaded file), e.g. <code>0, 57, 112</code>. At least two; the path visits them in "
-		    "this order."));
-		par.addParam(RichBool("Closed", false, "Closed path",
-		    "Also join the last seed back to the first one (a closed snake)."));
-		par.addParam(RichEnum("Cost", 0, QStringList() << "Length" << "Feature", "Path cost",
-		    "<b>Length</b>: shortest path along edges. <b>Feature</b>: edge lengths weighted by the "
-		    "vertex quality (the feature energy, expected in [0,1]) so the path prefers features; "
-		    "if the mesh has no vertex quality, the normal-variation energy is computed first and "
-		    "stored in the vertex quality."));
-		par.addParam(RichBool("NewLayer", true, "Add path as new layer",
-		    "Also add the path as a new layer named \"Seed path\" made of its vertices and edges. "
-		    "The current layer stays the input mesh."));
-		break;
-	case FP_SNAKE: {
-		const vcg::tri::SnakeParams d;
-		par.addParam(RichString("Seeds", "", "Seed vertices",
-		    "Comma-separated 0-based vertex indices, in file order, near the feature to capture, in "
-		    "the order the curve visits them (at least 2; 3 for a closed snake)."));
-		par.addParam(RichBool("Closed", false, "Closed snake", "Join the last seed back to the first: a closed curve."));
-		par.addParam(RichFloat("Alpha", float(d.alpha), "Alpha (tension)",
-		    "Weight of the first-derivative (tension) term of the spline energy, Eq. 2. Scale-free "
-		    "(positions are measured in mean edge lengths). Range [0, 10000]."));
-		par.addParam(RichFloat("Beta", float(d.beta), "Beta (rigidity)",
-		    "Weight of the second-derivative (rigidity) term of the spline energy, Eq. 2: larger "
-		    "gives smoother curves. Range [0, 10000]."));
-		par.addParam(RichFloat("Gamma", float(d.gamma), "Gamma (inverse step)",
-		    "Inverse time step of the update, Eq. 4: larger moves the snake in smaller, steadier "
-		    "steps. Range (0, 1e6]."));
-		par.addParam(RichFloat("ExternalWeight", float(d.externalWeight), "External weight",
-		    "Weight of the feature force (the gradient of the energy, which lies in [0,1]) against "
-		    "the spline energy. Range [0, 10000]."));
-		par.addParam(RichFloat("Spacing", float(d.spacing), "Sample spacing",
-		    "Distance between snake samples, in mean edge lengths of the mesh. Range [0.05, 1000]."));
-		par.addParam(RichInt("MaxOperations", 500, "Max operations",
-		    "Upper limit on snake operations (one embedding + up to 5 updates each); the snake "
-		    "usually converges much earlier. Range [0, 1000000]."));
-		par.addParam(RichEnum("Method", 0, QStringList() << "Local embedding (paper)" << "3D update + projection",
-		    "Method", "<b>Local embedding</b>: the paper's method, updates in the plane of a local "
-		    "parameterization. <b>3D update + projection</b>: the naive alternative of Sec. 4.2, for "
-		    "comparison."));
-		par.addParam(RichBool("UseQuality", false, "Use vertex quality",
-		    "Take the feature energy from the current vertex quality (low = feature; any range, it "
-		    "is normalized) instead of computing the normal-variation energy."));
-		par.addParam(RichString("OutputFile", "", "Output file",
-		    "Where to write the final curve; the extension chooses the format: .json (samples, "
-		    "initial and final curve, timings), .obj (l records) or .ply (edges). Empty: no file."));
-		par.addParam(RichBool("NewLayer", true, "Add curve as new layer",
-		    "Also add the final curve as a new layer made of vertices and edges."));
-		break;
-	}
-	case FP_EXPORT:
-		par.addParam(RichString("OutputFile", "", "Output file",
-		    "File to write: .json, .obj or .ply (by extension)."));
-		par.addParam(RichEnum("Which", 0, QStringList() << "All snakes" << "Selected snake", "Which snakes",
-		    "All the snakes kept on the mesh, or only the one selected in the edit tool."));
-		par.addParam(RichBool("NewLayer", false, "Add curves as new layer",
-		    "Also add the curves as a new layer made of vertices and edges."));
-		break;
+	case FP_FEATURE_ENERGY: addParams(par, tri::SnakeParamDefs::FeatureEnergy()); break;
+	case FP_SEED_PATH: addParams(par, tri::SnakeParamDefs::SeedPath()); break;
+	case FP_SNAKE: addParams(par, tri::SnakeParamDefs::Snake()); break;
+	case FP_EXPORT: addParams(par, tri::SnakeParamDefs::Export()); break;
 	default: break;
 	}
 }
@@ -291,15 +258,10 @@ bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, 
 bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
-	const int type = par.getEnum("EnergyType");
-	const int steps = par.getInt("SmoothingSteps");
-	const bool colorize = par.getBool("Colorize");
-
-	if (type < 0 || type > 2)
-		return fail(QString("EnergyType must be 0 (normal variation), 1 (curvature norm) or 2 (quadric "
-		                    "error), not %1.").arg(type));
-	if (steps < 0 || steps > kMaxSmoothingSteps)
-		return fail(QString("SmoothingSteps must be between 0 and %1, not %2.").arg(kMaxSmoothingSteps).arg(steps));
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::FeatureEnergy());
+	const int type = v.Enum("EnergyType");
+	const int steps = v.Int("SmoothingSteps");
+	const bool colorize = v.Bool("Colorize");
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
 	// FeatureEnergy needs no optional component (no adjacency, no curvature fields):
@@ -333,13 +295,11 @@ bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const Rich
 bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
-	const std::string seedText = par.getString("Seeds").toStdString();
-	const bool closed = par.getBool("Closed");
-	const int cost = par.getEnum("Cost");
-	const bool newLayer = par.getBool("NewLayer");
-
-	if (cost < 0 || cost > 1)
-		return fail(QString("Cost must be 0 (length) or 1 (feature), not %1.").arg(cost));
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::SeedPath());
+	const std::string seedText = v.Text("Seeds");
+	const bool closed = v.Bool("Closed");
+	const int cost = v.Enum("Cost");
+	const bool newLayer = v.Bool("NewLayer");
 
 	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(seedText);
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
@@ -441,23 +401,13 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	typedef tri::SnakeController<CMeshO> Controller;
 	MeshModel &m = *md.mm();
 	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(par.getString("Seeds").toStdString());
-	const bool closed = par.getBool("Closed");
-	tri::SnakeParams p;
-	p.alpha = par.getFloat("Alpha");
-	p.beta = par.getFloat("Beta");
-	p.gamma = par.getFloat("Gamma");
-	p.externalWeight = par.getFloat("ExternalWeight");
-	p.spacing = par.getFloat("Spacing");
-	const int method = par.getEnum("Method");
-	if (method < 0 || method > 1)
-		return fail(QString("Method must be 0 (local embedding) or 1 (3D update + projection), not %1.").arg(method));
-	p.method = tri::SnakeMethod(method);
-	p.Validate();
-	const int maxOps = par.getInt("MaxOperations");
-	if (maxOps < 0 || maxOps > 1000000)
-		return fail(QString("MaxOperations must be between 0 and 1000000, not %1.").arg(maxOps));
-	const bool useQuality = par.getBool("UseQuality");
-	const std::string out = par.getString("OutputFile").trimmed().toStdString();
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::Snake());
+	const bool closed = v.Bool("Closed");
+	const tri::SnakeParams p = tri::SnakeParamDefs::ToSnakeParams(v);
+	const int method = int(p.method);
+	const int maxOps = v.Int("MaxOperations");
+	const bool useQuality = v.Bool("UseQuality");
+	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
 	if (compactIfNeeded(m.cm))
@@ -501,7 +451,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 		tri::SnakeIO<CMeshO>::WriteCurves(out, list);
 		Log("Wrote the curve to %s.", out.c_str());
 	}
-	if (par.getBool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {curve}, {closed});
+	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {curve}, {closed});
 
 	// Keep the snake on the mesh with any the user already has there: curves are never lost.
 	nlohmann::json session = ctl.ToJson();
@@ -537,9 +487,10 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
-	const std::string out = par.getString("OutputFile").trimmed().toStdString();
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::Export());
+	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
 	if (out.empty()) return fail("OutputFile is empty: give a .json, .obj or .ply file name.");
-	const bool all = par.getEnum("Which") == 0;
+	const bool all = v.Enum("Which") == 0;
 
 	std::string session = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
 	QString source = "the mesh";
@@ -592,7 +543,7 @@ bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParamet
 		closed.push_back(s->Closed());
 	}
 	tri::SnakeIO<CMeshO>::WriteCurves(out, list);
-	if (par.getBool("NewLayer")) addCurveLayer(md, m, "Geometric snake curves", curves, closed);
+	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake curves", curves, closed);
 	Log("Exported %d geometric snake(s) from %s to %s.", int(list.size()), qUtf8Printable(source), out.c_str());
 	return true;
 }

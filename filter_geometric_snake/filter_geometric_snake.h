@@ -29,9 +29,6 @@ public:
 		FP_EXPORT = 3
 	};
 
-	// Parameter limits shared by the GUI dialog and the scripted path.
-	static constexpr int kMaxSmoothingSteps = 10000;
-
 	FilterGeometricSnakePlugin();
 
 	QString pluginName() const override;

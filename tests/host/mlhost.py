@@ -16,6 +16,7 @@ import os
 import shutil
 import struct
 import subprocess
+import tempfile
 import sys
 from xml.sax.saxutils import quoteattr
 
@@ -67,15 +68,17 @@ def write_mlx(path, filters):
 
 
 # ---------------------------------------------------------------------------- host
-def meshlabserver_cmd():
+def meshlabserver_cmd(authfile):
     exe = shutil.which("meshlabserver")
     if exe is None:
         raise RuntimeError("meshlabserver not found: apt-get install meshlab")
     xvfb = shutil.which("xvfb-run")
     if xvfb is None:
         raise RuntimeError("xvfb-run not found: apt-get install xvfb xauth")
-    # Always a private virtual display: meshlabserver creates a GL context.
-    return [xvfb, "-a", "-s", "-screen 0 640x480x24", exe]
+    # Always a private virtual display: meshlabserver creates a GL context. Our own auth file
+    # (-f): xvfb-run's own temporary folder sometimes fails to clean up ("problem while
+    # cleaning up temporary directory", exit 5), which would mask meshlabserver's status.
+    return [xvfb, "-a", "-f", authfile, "-s", "-screen 0 640x480x24", exe]
 
 
 def run_meshlabserver(args, timeout=300, cwd=None):
@@ -85,8 +88,10 @@ def run_meshlabserver(args, timeout=300, cwd=None):
     env.setdefault("LIBGL_ALWAYS_SOFTWARE", "1")
     env.setdefault("XDG_RUNTIME_DIR", "/tmp/runtime-%d" % os.getuid())
     os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
-    p = subprocess.run(meshlabserver_cmd() + list(args), stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                       stdin=subprocess.DEVNULL, timeout=timeout, cwd=cwd, env=env)
+    with tempfile.TemporaryDirectory(prefix="gs-xauth-", ignore_cleanup_errors=True) as auth:
+        p = subprocess.run(meshlabserver_cmd(os.path.join(auth, "Xauthority")) + list(args),
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           stdin=subprocess.DEVNULL, timeout=timeout, cwd=cwd, env=env)
     out = p.stdout.decode("utf-8", "replace")
     rc = p.returncode
     # xvfb-run reports a child killed by signal N as exit status 128+N.

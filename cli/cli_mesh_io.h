@@ -1,0 +1,254 @@
+#ifndef GS_CLI_MESH_IO_H
+#define GS_CLI_MESH_IO_H
+
+// Mesh and curve files for the geometric-snake program, with vcglib's importers and
+// exporters, read as MeshLab 2020.09 reads them (so the program and the filters see the same
+// mesh), and written safely: to a temporary file next to the target, then renamed over it.
+
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <common/ml_mesh_type.h>
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <wrap/io_trimesh/export_obj.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/import_obj.h>
+#include <wrap/io_trimesh/import_off.h>
+#include <wrap/io_trimesh/import_ply.h>
+#include <wrap/io_trimesh/import_stl.h>
+
+#include <vcg_ext/snake_error.h>
+
+namespace gs_cli {
+
+using vcg::tri::SnakeError;
+
+inline std::string Extension(const std::string &path)
+{
+    const size_t slash = path.find_last_of('/');
+    const size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    std::string e = path.substr(dot + 1);
+    for (auto &c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return e;
+}
+
+/// False for a file vcglib's ASCII STL reader would never finish: no line break at all (it skips
+/// the first line with getc until '\n') and not the size of a binary STL.
+inline bool HasNewlineOrBinaryStlSize(const std::string &path, long long size)
+{
+    FILE *f = std::fopen(path.c_str(), "rb");
+    if (!f) return false;
+    unsigned char head[84];
+    bool ok = false;
+    if (std::fread(head, 1, 84, f) == 84) {
+        uint32_t n;
+        std::memcpy(&n, head + 80, 4);
+        ok = size == 84 + 50LL * n;
+    }
+    std::rewind(f);
+    char buf[65536];
+    for (size_t got; !ok && (got = std::fread(buf, 1, sizeof buf, f)) > 0;) ok = std::memchr(buf, '\n', got) != nullptr;
+    std::fclose(f);
+    return ok;
+}
+
+/// A mesh as MeshLab opens it: the vcglib importer of its format, the optional components the
+/// file needs, STL vertices unified, normals and bounding box updated (meshlabserver's
+/// loadMesh). `mask` receives what the file held (vcg::tri::io::Mask bits).
+inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
+{
+    namespace io = vcg::tri::io;
+    struct stat st;
+    if (::stat(path.c_str(), &st) != 0)
+        throw SnakeError("Cannot open the mesh \"" + path + "\": " + std::strerror(errno) + ".");
+    if (S_ISDIR(st.st_mode)) throw SnakeError("\"" + path + "\" is a folder, not a mesh file.");
+    if (::access(path.c_str(), R_OK) != 0)
+        throw SnakeError("Cannot read the mesh \"" + path + "\": " + std::strerror(errno) + ".");
+    if (st.st_size == 0) throw SnakeError("Cannot read the mesh \"" + path + "\": the file is empty.");
+    const std::string ext = Extension(path);
+    const char *fn = path.c_str();
+    if (ext == "stl" && !HasNewlineOrBinaryStlSize(path, st.st_size)) // vcglib's ASCII reader loops forever on it
+        throw SnakeError("Cannot read the mesh \"" + path + "\": not a readable STL file.");
+    auto enable = [&m](int mk) { // MeshModel::Enable: the optional components the file fills
+        if (mk & io::Mask::IOM_VERTTEXCOORD) m.vert.EnableTexCoord();
+        if (mk & io::Mask::IOM_WEDGTEXCOORD) m.face.EnableWedgeTexCoord();
+        if (mk & io::Mask::IOM_FACECOLOR) m.face.EnableColor();
+        if (mk & io::Mask::IOM_FACEQUALITY) m.face.EnableQuality();
+        if (mk & io::Mask::IOM_VERTRADIUS) m.vert.EnableRadius();
+    };
+    auto failed = [&](const char *why) {
+        return SnakeError("Cannot read the mesh \"" + path + "\": " + why + ".");
+    };
+    mask = 0;
+    if (ext == "ply") {
+        if (!io::ImporterPLY<CMeshO>::LoadMask(fn, mask)) throw failed("not a readable PLY file");
+        if (mask & io::Mask::IOM_WEDGCOLOR) mask |= io::Mask::IOM_FACECOLOR;
+        enable(mask);
+        const int r = io::ImporterPLY<CMeshO>::Open(m, fn, mask);
+        if (r != 0 && io::ImporterPLY<CMeshO>::ErrorCritical(r)) throw failed(io::ImporterPLY<CMeshO>::ErrorMsg(r));
+    } else if (ext == "stl") {
+        if (!io::ImporterSTL<CMeshO>::LoadMask(fn, mask)) throw failed("not a readable STL file");
+        enable(mask);
+        const int r = io::ImporterSTL<CMeshO>::Open(m, fn, mask);
+        if (r != 0) throw failed(io::ImporterSTL<CMeshO>::ErrorMsg(r));
+        vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m); // MeshLab's default "unify STL vertices"
+        vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+    } else if (ext == "obj") {
+        io::ImporterOBJ<CMeshO>::Info oi;
+        if (!io::ImporterOBJ<CMeshO>::LoadMask(fn, oi)) throw failed("not a readable OBJ file");
+        enable(oi.mask);
+        const int r = io::ImporterOBJ<CMeshO>::Open(m, fn, oi);
+        if (r != io::ImporterOBJ<CMeshO>::E_NOERROR && !(r & io::ImporterOBJ<CMeshO>::E_NON_CRITICAL_ERROR))
+            throw failed(io::ImporterOBJ<CMeshO>::ErrorMsg(r));
+        mask = oi.mask;
+    } else if (ext == "off") {
+        if (!io::ImporterOFF<CMeshO>::LoadMask(fn, mask)) throw failed("not a readable OFF file");
+        enable(mask);
+        const int r = io::ImporterOFF<CMeshO>::Open(m, fn, mask);
+        if (r != 0) throw failed(io::ImporterOFF<CMeshO>::ErrorMsg(r));
+    } else {
+        throw SnakeError("Cannot read the mesh \"" + path + "\": unknown format \"" + ext +
+                         "\" (the program reads .ply, .off, .obj and .stl).");
+    }
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+    if (m.fn > 0) {
+        vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+        if (!(mask & io::Mask::IOM_VERTNORMAL)) vcg::tri::UpdateNormal<CMeshO>::PerVertexAngleWeighted(m);
+    }
+}
+
+/// True if both paths name the same existing file (also through links).
+inline bool SameFile(const std::string &a, const std::string &b)
+{
+    struct stat sa, sb;
+    return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+/// Checks, before any work, that `path` can be written (folder exists and is writable, not a
+/// folder, not one of `inputs`, extension among `exts`). `what` names it in messages.
+inline void CheckWritable(const std::string &path, const std::vector<std::string> &exts, const std::string &what,
+                          const std::vector<std::string> &inputs)
+{
+    const std::string ext = Extension(path);
+    bool known = false;
+    std::string list;
+    for (const auto &e : exts) {
+        known = known || e == ext;
+        list += (list.empty() ? "." : ", .") + e;
+    }
+    if (!known)
+        throw SnakeError("Cannot write " + what + " \"" + path + "\": unknown format \"" + ext + "\" (use " + list +
+                         ").");
+    for (const auto &in : inputs)
+        if (SameFile(path, in))
+            throw SnakeError("Refusing to write " + what + " over the input file \"" + path +
+                             "\": choose another output name.");
+    struct stat st;
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        throw SnakeError("Cannot write " + what + " \"" + path + "\": it is a folder.");
+    const size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+    if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        throw SnakeError("Cannot write " + what + " \"" + path + "\": the folder \"" + dir + "\" does not exist.");
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw SnakeError("Cannot write " + what + " \"" + path + "\": the folder \"" + dir + "\" is not writable.");
+}
+
+/// The temporary file AtomicWrite uses for `path` in process `pid` (any counter): "<dir>/.<name>.tmp<pid>-".
+inline std::string TempPrefix(const std::string &path, long pid)
+{
+    const size_t slash = path.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+    return dir + "." + path.substr(dir.size()) + ".tmp" + std::to_string(pid) + "-";
+}
+
+/// Removes what AtomicWrite of process `pid` may have left for `path` when the process was killed.
+inline void RemoveTemporaries(const std::string &path, long pid)
+{
+    const std::string prefix = TempPrefix(path, pid);
+    const size_t slash = prefix.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : prefix.substr(0, slash);
+    const std::string stem = prefix.substr(slash == std::string::npos ? 0 : slash + 1);
+    if (DIR *d = ::opendir(dir.c_str())) {
+        while (dirent *e = ::readdir(d))
+            if (std::strncmp(e->d_name, stem.c_str(), stem.size()) == 0) std::remove((dir + "/" + e->d_name).c_str());
+        ::closedir(d);
+    }
+}
+
+/// Writes through `writer(tmp)` into a temporary file in the target's folder (same extension,
+/// so format-by-extension writers work), then renames it over `path`: a failure leaves no
+/// partial file and never truncates an existing one.
+inline void AtomicWrite(const std::string &path, const std::function<void(const std::string &)> &writer)
+{
+    static int counter = 0;
+    const std::string tmp = TempPrefix(path, long(::getpid())) + std::to_string(++counter) + "." + Extension(path);
+    try {
+        writer(tmp);
+        if (std::rename(tmp.c_str(), path.c_str()) != 0)
+            throw SnakeError("Cannot write \"" + path + "\": " + std::strerror(errno) + ".");
+    } catch (...) {
+        std::remove(tmp.c_str());
+        throw;
+    }
+}
+
+/// The mesh with its vertex quality (and colour) as binary PLY, as meshlabserver saves it
+/// with `-m vq vc`.
+inline void SaveMeshPly(CMeshO &m, const std::string &path, int mask)
+{
+    AtomicWrite(path, [&](const std::string &tmp) {
+        const int r = vcg::tri::io::ExporterPLY<CMeshO>::Save(m, tmp.c_str(), mask, true);
+        if (r != 0)
+            throw SnakeError("Cannot write \"" + path + "\": " + vcg::tri::io::ExporterPLY<CMeshO>::ErrorMsg(r) + ".");
+    });
+}
+
+/// Polylines as a mesh of vertices and edges (the filters' curve layers), saved by vcglib's
+/// PLY (vertex + edge elements) or OBJ (`l` records) exporter.
+inline void SavePolylines(const std::vector<std::vector<vcg::Point3d>> &curves, const std::vector<bool> &closed,
+                          const std::string &path)
+{
+    CMeshO pm;
+    for (size_t c = 0; c < curves.size(); ++c) {
+        const auto &pts = curves[c];
+        if (pts.size() < 2) continue;
+        const size_t base = pm.vert.size();
+        auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(pm, pts.size());
+        for (const auto &p : pts) (vi++)->P() = CMeshO::CoordType::Construct(p);
+        const size_t n = pts.size(), ne = (closed[c] && n >= 3) ? n : n - 1;
+        auto ei = vcg::tri::Allocator<CMeshO>::AddEdges(pm, ne);
+        for (size_t i = 0; i < ne; ++i, ++ei) {
+            ei->V(0) = &pm.vert[base + i];
+            ei->V(1) = &pm.vert[base + (i + 1) % n];
+        }
+    }
+    const std::string ext = Extension(path);
+    AtomicWrite(path, [&](const std::string &tmp) {
+        namespace io = vcg::tri::io;
+        if (ext == "obj") {
+            const int r = io::ExporterOBJ<CMeshO>::Save(pm, tmp.c_str(), io::Mask::IOM_EDGEINDEX);
+            if (r != 0) throw SnakeError("Cannot write \"" + path + "\": " + io::ExporterOBJ<CMeshO>::ErrorMsg(r) + ".");
+        } else {
+            const int r = io::ExporterPLY<CMeshO>::Save(pm, tmp.c_str(), io::Mask::IOM_EDGEINDEX, false);
+            if (r != 0) throw SnakeError("Cannot write \"" + path + "\": " + io::ExporterPLY<CMeshO>::ErrorMsg(r) + ".");
+        }
+    });
+}
+
+} // namespace gs_cli
+
+#endif
