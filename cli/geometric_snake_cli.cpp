@@ -65,25 +65,20 @@ struct Command
     const std::vector<ParamDef> *defs;
     std::vector<std::string> outputs; ///< formats of -o
     bool outputRequired;
-    std::string synopsis, summary;
+    std::string summary;
 };
 
 const std::vector<Command> &Commands()
 {
     static const std::vector<Command> c = {
         {"energy", &SnakeParamDefs::FeatureEnergy(), {"ply"}, true,
-         "energy MESH [--type normal|curvature|quadric] [--smoothing K] [--no-colorize] -o OUT.ply",
          "Computes the feature energy (0 on features, 1 on flat regions) into the vertex quality and writes the "
          "mesh with it (filter \"Compute Geometric Snake Feature Energy\")."},
         {"snake", &SnakeParamDefs::Snake(), {"json", "obj", "ply"}, false,
-         "snake MESH --seeds \"i,j,k\" [--closed] [--alpha A] [--beta B] [--gamma G] [--external-weight W] "
-         "[--spacing S] [--max-operations N] [--method embedding|projection] [--use-quality] "
-         "-o OUT.json|.obj|.ply [--mesh-out MESH.ply]",
          "Runs a geometric snake from seed vertices onto the nearby feature and writes the curve: .json (the "
          "JSON contract: samples, initial and final curve, stats), .obj (l records) or .ply (edges) (filter "
          "\"Geometric Snake from Seed Vertices\")."},
         {"path", &SnakeParamDefs::SeedPath(), {"ply", "obj", "json"}, true,
-         "path MESH --seeds \"i,j,k\" [--closed] [--cost length|feature] -o OUT.ply|.obj|.json",
          "Joins the seed vertices by shortest paths along mesh edges (the snake's initial curve) and writes "
          "the path as vertices and edges (filter \"Geometric Snake Seed Path\")."},
     };
@@ -127,6 +122,7 @@ std::string Wrap(const std::string &text, size_t indent)
         line += (line.empty() ? "" : " ") + word;
     }
     if (!line.empty()) out += pad + line + "\n";
+    std::replace(out.begin(), out.end(), '\1', ' ');
     return out;
 }
 
@@ -136,9 +132,26 @@ std::string OptionHelp(const std::string &head, const std::string &text)
     return s + Wrap(text, 6);
 }
 
+/// "snake MESH [--seeds TEXT] [--closed] [--alpha X] ... -o OUT.json|.obj|.ply", from the definitions.
+std::string Synopsis(const Command &c)
+{
+    std::string s = c.name + " MESH";
+    for (const ParamDef &d : *c.defs) {
+        if (d.option.empty()) continue;
+        static const char *const arg[] = {"", "\1N", "\1X", "", "\1TEXT"}; // \1: a space Wrap keeps
+        s += " [--" + d.option + (d.kind == ParamDef::Enum ? "\1" + d.RangeText() : arg[d.kind]) + "]";
+    }
+    std::string outs;
+    for (const auto &o : c.outputs) outs += (outs.empty() ? "OUT." : "|.") + o;
+    s += c.outputRequired ? " -o\1" + outs : " [-o\1" + outs + "]";
+    if (c.name == "snake") s += " [--mesh-out\1MESH.ply]";
+    return s + " [--json-log] [-q]";
+}
+
 std::string CommandHelp(const Command &c)
 {
-    std::string s = std::string("usage: ") + kProgram + " " + c.synopsis + "\n\n" + Wrap(c.summary, 0) + "\noptions:\n";
+    std::string s = "usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(c), 2) + "\n" + Wrap(c.summary, 0) +
+                    "\noptions:\n";
     for (const ParamDef &d : *c.defs) {
         if (d.option.empty()) continue;
         std::string head = "--" + d.option;
@@ -230,7 +243,7 @@ void SetOption(Job &job, const std::string &key, const std::string &value, bool 
 /// Validates a job before any work: parameters, outputs (format, folder, not the input).
 void CheckJob(Job &job)
 {
-    if (job.mesh.empty()) throw UsageError("No mesh given: " + std::string(kProgram) + " " + job.cmd->synopsis);
+    if (job.mesh.empty()) throw UsageError("No mesh given. Usage:\n" + Wrap(std::string(kProgram) + " " + Synopsis(*job.cmd), 2));
     job.values->Check(true);
     if (job.output.empty() && job.cmd->outputRequired)
         throw UsageError("No output file: give -o FILE (" + job.cmd->name + " writes " + job.cmd->outputs[0] + ").");
@@ -458,6 +471,19 @@ json Run(Job &job)
     json r = {{"command", job.cmd->name}, {"mesh", job.mesh}};
     if (!job.output.empty()) r["output"] = job.output;
     if (!job.meshOut.empty()) r["mesh_out"] = job.meshOut;
+    json par = json::object(); // the values used, by option name: a batch's results say what they ran
+    for (const ParamDef &d : *job.cmd->defs) {
+        if (d.option.empty()) continue;
+        const ParamValues &v = *job.values;
+        switch (d.kind) {
+        case ParamDef::Bool: par[d.option] = v.Bool(d.name); break;
+        case ParamDef::Int: par[d.option] = v.Int(d.name); break;
+        case ParamDef::Real: par[d.option] = v.Real(d.name); break;
+        case ParamDef::Enum: par[d.option] = d.choices[size_t(v.Enum(d.name))].key; break;
+        case ParamDef::Text: par[d.option] = v.Text(d.name); break;
+        }
+    }
+    r["parameters"] = par;
     CMeshO m;
     int mask = 0;
     try {

@@ -21,6 +21,7 @@
 #include <vcg_ext/snake_curve.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_history.h>
+#include <vcg_ext/snake_partition.h>
 #include <vcg_ext/snake_segment_motion.h>
 #include <vcg_ext/snake_surface.h>
 #include <vcg_ext/surface_point.h>
@@ -81,7 +82,7 @@ public:
         for (size_t i = 1; i < pv.size(); ++i) pathEdges.push_back(cum[i] - cum[i - 1]);
         const double unit = surf->MeanEdge(); // TODO(h9): medianPositive(pathEdges)
         double d = st.params.spacing * unit;
-        if (!(L > 0)) throw SnakeError("Geometric snake: the seed path has zero length.");
+        if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
         n = std::max<long>(n, closed ? 3 : 2);
         if (n > 200000) throw SnakeError("Geometric snake: the spacing is too small for this path (too many samples).");
@@ -111,10 +112,11 @@ public:
         for (int g = 0; g < gapsN; ++g) {
             double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
             Gap &gap = st.gaps[g];
+            const double eps = 1e-12 * L; // relative: any scale
             for (size_t i = 0; i + 1 < pv.size(); ++i) {
-                if (cum[i + 1] < s0 - 1e-12 || cum[i] > s1 + 1e-12) continue;
+                if (cum[i + 1] < s0 - eps || cum[i] > s1 + eps) continue;
                 for (int f : edgeFaces(pv[i], pv[i + 1])) gap.faces.push_back(f);
-                if (cum[i] > s0 + 1e-12 && cum[i] < s1 - 1e-12) gap.crossings.push_back(vertexPoint(pv[i]));
+                if (cum[i] > s0 + eps && cum[i] < s1 - eps) gap.crossings.push_back(vertexPoint(pv[i]));
             }
             gap.traced = true;
         }
@@ -380,8 +382,8 @@ private:
     }
     double dist(int a, int b) const
     {
-        const MeshType &m = surf->Mesh();
-        return double((m.vert[a].cP() - m.vert[b].cP()).Norm());
+        const MeshType &m = surf->Mesh(); // in double: a float square over- or underflows at 1e30 / 1e-30
+        return vcg::Distance(vcg::Point3d::Construct(m.vert[a].cP()), vcg::Point3d::Construct(m.vert[b].cP()));
     }
     void checkIndex(int i) const
     {
@@ -570,94 +572,15 @@ private:
         return out;
     }
 
-    // ----- partitioning (Sec. 5.1)
+    // ----- partitioning (Sec. 5.1): snake_partition.h, checked before any sample moves
     std::vector<Segment> partition(std::vector<Segment> &overlaps) const
     {
-        std::vector<Segment> segs;
-        overlaps.clear();
         const int n = int(st.samples.size());
-        const int S = st.params.segmentSamples;
-        if (!st.closed && n <= S) {
-            Segment s;
-            for (int i = 0; i < n; ++i) s.idx.push_back(i);
-            segs.push_back(s);
-            return segs;
-        }
-        int K = st.closed ? std::max(2, (n + S - 1) / S) : std::max(1, (n - 1 + S - 2) / (S - 1));
-        if (st.closed && n < 6) K = 1;
-        // Sharp corners (turning angle > 60 degrees) belong in the middle of a segment.
-        std::vector<vcg::Point3d> p = positions();
-        std::vector<int> corners;
-        for (int i = 0; i < n; ++i) {
-            if (!st.closed && (i == 0 || i == n - 1)) continue;
-            vcg::Point3d a = p[i] - p[(i - 1 + n) % n], b = p[(i + 1) % n] - p[i];
-            double na = a.Norm(), nb = b.Norm();
-            if (na > 0 && nb > 0 && (a * b) / (na * nb) < 0.5) corners.push_back(i);
-        }
-        auto cyclicDist = [&](int a, int b) {
-            int d = std::abs(a - b);
-            return st.closed ? std::min(d, n - d) : d;
-        };
-        std::vector<int> borders;
-        if (st.closed) {
-            if (K == 1) { // tiny closed snake: one cyclic segment
-                Segment s;
-                for (int i = 0; i < n; ++i) s.idx.push_back(i);
-                segs.push_back(s);
-                return segs;
-            }
-            // choose the rotation that keeps corners farthest from the borders
-            int period = std::max(1, n / K), bestOff = 0;
-            double bestScore = -1;
-            for (int off = 0; off < period; ++off) {
-                double score = 1e9;
-                for (int c : corners)
-                    for (int k = 0; k < K; ++k) score = std::min(score, double(cyclicDist(c, (off + k * n / K) % n)));
-                if (score > bestScore) { bestScore = score; bestOff = off; }
-            }
-            for (int k = 0; k < K; ++k) borders.push_back((bestOff + k * n / K) % n);
-            for (int k = 0; k < K; ++k) {
-                Segment s;
-                int a = borders[k], b = borders[(k + 1) % K];
-                int len = (b - a + n) % n;
-                for (int j = 0; j <= len; ++j) s.idx.push_back((a + j) % n);
-                s.fixFirst = s.fixLast = true;
-                segs.push_back(s);
-            }
-        } else {
-            borders.push_back(0);
-            for (int k = 1; k < K; ++k) {
-                int b = int(std::lround(double(k) * (n - 1) / K));
-                int half = std::max(1, (n - 1) / (2 * K));
-                // shift the border away from a nearby corner
-                for (int c : corners)
-                    if (std::abs(c - b) < half / 2 + 1) b = (c > b) ? std::max(borders.back() + 2, c - half) : std::min(n - 3, c + half);
-                b = std::max(borders.back() + 2, std::min(n - 3, b));
-                borders.push_back(b);
-            }
-            borders.push_back(n - 1);
-            for (size_t k = 0; k + 1 < borders.size(); ++k) {
-                Segment s;
-                for (int i = borders[k]; i <= borders[k + 1]; ++i) s.idx.push_back(i);
-                s.fixFirst = (k != 0);
-                s.fixLast = (k + 2 != borders.size());
-                segs.push_back(s);
-            }
-            borders = std::vector<int>(borders.begin() + 1, borders.end() - 1);
-        }
-        // Overlapping segments across each border, with their own ends fixed (Fig. 2).
-        int half = std::max(3, S / 4); // enough on each side to smooth the border
-        for (int b : borders) {
-            Segment s;
-            int from = b - half, to = b + half;
-            if (!st.closed) { from = std::max(0, from); to = std::min(n - 1, to); }
-            if (st.closed && to - from + 1 >= n) { from = b - n / 2 + 1; to = from + n - 2; }
-            for (int i = from; i <= to; ++i) s.idx.push_back(((i % n) + n) % n);
-            s.fixFirst = st.closed || from > 0;
-            s.fixLast = st.closed || to < n - 1;
-            overlaps.push_back(s);
-        }
-        return segs;
+        SnakePartition::Result r =
+            SnakePartition::Compute(n, st.closed, st.params.segmentSamples, SnakePartition::Corners(positions(), st.closed));
+        SnakePartition::Check(r, n, st.closed);
+        overlaps = std::move(r.overlaps);
+        return std::move(r.segments);
     }
 
     // ----- the embedding method (Sec. 5.2 - 5.4)

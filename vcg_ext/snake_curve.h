@@ -132,13 +132,6 @@ struct SnakeMotionFrame
     double outside = 0;
 };
 
-/// A run of consecutive samples moved together (Sec. 5.1); fixFirst / fixLast hold its ends.
-struct SnakeSegment
-{
-    std::vector<int> idx; // snake sample indices, consecutive along the snake
-    bool fixFirst = false, fixLast = false;
-};
-
 } // namespace tri
 } // namespace vcg
 

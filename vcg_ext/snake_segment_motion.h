@@ -17,6 +17,7 @@
 #include <vcg_ext/local_region.h>
 #include <vcg_ext/region_walk.h>
 #include <vcg_ext/snake_curve.h>
+#include <vcg_ext/snake_partition.h>
 #include <vcg_ext/snake_spline.h>
 #include <vcg_ext/snake_surface.h>
 #include <vcg_ext/surface_point.h>
@@ -310,8 +311,10 @@ private:
 
     double faceEdge(int f) const
     {
-        const FaceType &ff = surf->Mesh().face[f];
-        return double((ff.cP(0) - ff.cP(1)).Norm() + (ff.cP(1) - ff.cP(2)).Norm() + (ff.cP(2) - ff.cP(0)).Norm()) / 3.0;
+        const FaceType &ff = surf->Mesh().face[f]; // in double: a float square over- or underflows at 1e30 / 1e-30
+        const vcg::Point3d p0 = vcg::Point3d::Construct(ff.cP(0)), p1 = vcg::Point3d::Construct(ff.cP(1)),
+                           p2 = vcg::Point3d::Construct(ff.cP(2));
+        return (vcg::Distance(p0, p1) + vcg::Distance(p1, p2) + vcg::Distance(p2, p0)) / 3.0;
     }
 
     typedef std::chrono::steady_clock clock;

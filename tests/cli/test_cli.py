@@ -80,7 +80,7 @@ class CliTests(unittest.TestCase):
     def test_help_lists_every_option(self):
         out, _ = self.ok(["--help"])
         for cmd in ("energy", "snake", "path"):
-            self.assertIn("usage: geometric-snake %s MESH" % cmd, out)
+            self.assertIn("geometric-snake %s MESH [--" % cmd, out)
         for opt in ("--type", "--smoothing", "--colorize", "--seeds", "--closed", "--cost", "--alpha", "--beta",
                     "--gamma", "--external-weight", "--spacing", "--max-operations", "--method", "--use-quality",
                     "--mesh-out", "--json-log", "--batch", "--jobs", "-o, --output"):
@@ -225,6 +225,9 @@ class CliTests(unittest.TestCase):
                     "ms_per_operation", "seconds_total", "length", "warnings"):
             self.assertIn(key, log)
         self.assertTrue(log["ok"])
+        self.assertEqual(log["parameters"]["method"], "embedding")
+        self.assertEqual(log["parameters"]["max-operations"], 500)
+        self.assertEqual(log["parameters"]["seeds"], seeds)
         rc, out, err = run(["snake", ICO, "--seeds", "1, 999999", "--json-log"])
         self.assertEqual(rc, 1)
         log = json.loads(out)

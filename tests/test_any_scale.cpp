@@ -1,0 +1,127 @@
+// Any scale (issue 8): the parameters are in mean edge lengths, so the same mesh scaled by
+// 1e-30, 1 or 1e30 gives the same snake up to the scale factor. Lengths are computed in double:
+// squared in float, 1e30 overflows and 1e-30 underflows.
+#include <gtest/gtest.h>
+
+#include <array>
+
+#include <snake_test_util.h>
+
+using namespace vcg::tri;
+using gs_test::EnableSnakeAdjacency;
+using Snake = GeometricSnake<CMeshO>;
+using Surface = SnakeSurface<CMeshO>;
+
+namespace {
+
+struct Outcome
+{
+    std::vector<vcg::Point3d> samples; // divided by the scale
+    double seedPathLength = 0;         // divided by the scale
+    bool converged = false;
+    int operations = 0;
+};
+
+// The cube [-1,1]^3 scaled by s; the snake starts 2 edge lengths inside the border of the face z = 1
+// (closed) or beside the edge x = y = 1 (open).
+Outcome RunCube(double s, bool closed, SnakeMethod method)
+{
+    CMeshO m;
+    gs_test::MakeRotatedIcoCube(m, 4, s);
+    EnableSnakeAdjacency(m);
+    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
+    auto surf = std::make_shared<Surface>(m);
+    const double h = surf->MeanEdge() / s;
+    std::vector<vcg::Point3d> pts;
+    if (closed) {
+        const double a = 1.0 - 2 * h;
+        for (auto q : std::vector<std::array<double, 2>>{{-a, -a}, {0, -a}, {a, -a}, {a, 0}, {a, a}, {0, a}, {-a, a}, {-a, 0}})
+            pts.push_back(vcg::Point3d(q[0], q[1], 1.0) * s);
+    } else {
+        for (double z : {-0.6, -0.2, 0.2, 0.6}) pts.push_back(vcg::Point3d(1.0, 1.0 - 2 * h, z) * s);
+    }
+    std::vector<int> seeds = gs_test::NearestVertices(m, pts);
+    Outcome o;
+    o.seedPathLength = SeedPath<CMeshO>::Compute(m, seeds, closed).length / s;
+    SnakeParams p;
+    p.method = method;
+    Snake snake(surf, p);
+    snake.InitFromSeeds(seeds, closed);
+    snake.Run(closed ? 300 : 150);
+    o.converged = snake.Converged();
+    o.operations = snake.Stats().operations;
+    for (const auto &x : snake.positions()) o.samples.push_back(x / s);
+    return o;
+}
+
+double Hausdorff(const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b, bool closed)
+{
+    double d = 0;
+    for (auto &x : a) d = std::max(d, gs_test::DistToPolyline(x, b, closed));
+    for (auto &x : b) d = std::max(d, gs_test::DistToPolyline(x, a, closed));
+    return d;
+}
+
+// Scales 2^-100 and 2^100 (about 8e-31 and 1.3e30) scale the float coordinates exactly, so any
+// difference comes from the code: the snake must be the same, sample by sample, to 1e-6 of the
+// cube's size. At 1e-30 and 1e30 the coordinates are rounded to float differently (relative
+// 6e-8); the snake must still converge onto the same curve, to `curveTol` edge lengths.
+void ExpectSameAtEveryScale(bool closed, SnakeMethod method, double curveTol)
+{
+    Outcome ref = RunCube(1.0, closed, method);
+    ASSERT_TRUE(ref.converged);
+    // the reference really captured the feature (a collapsed snake would also be "the same")
+    double spread = 0;
+    for (const auto &x : ref.samples) spread = std::max(spread, (x - ref.samples.front()).Norm());
+    ASSERT_GT(spread, 1.0);
+    const double h = 2.0 / 32; // about the cube's mean edge length, in units of its half size
+    for (double s : {std::ldexp(1.0, -100), std::ldexp(1.0, 100), 1e-30, 1e30}) {
+        SCOPED_TRACE("scale " + std::to_string(std::log10(s)) + " decades");
+        int e2 = 0;
+        const bool exact = std::frexp(s, &e2) == 0.5; // a power of two
+        Outcome o = RunCube(s, closed, method);
+        EXPECT_NEAR(o.seedPathLength, ref.seedPathLength, 1e-6 * ref.seedPathLength);
+        EXPECT_TRUE(o.converged);
+        ASSERT_EQ(o.samples.size(), ref.samples.size());
+        if (exact) {
+            EXPECT_EQ(o.operations, ref.operations);
+            double worst = 0;
+            for (size_t i = 0; i < o.samples.size(); ++i) worst = std::max(worst, (o.samples[i] - ref.samples[i]).Norm());
+            EXPECT_LT(worst, 1e-6) << "largest difference, relative to the cube's half size";
+        } else {
+            EXPECT_LT(Hausdorff(o.samples, ref.samples, closed), curveTol * h);
+        }
+    }
+}
+
+} // namespace
+
+TEST(AnyScale, ClosedSnakeOnTheCubeFaceIsTheSame)
+{
+    // measured at 1e+-30: 0.05 of the half size (the corners, where samples jitter, converge a
+    // few operations apart); collapsed to a point at 1e30 before lengths were computed in double
+    ExpectSameAtEveryScale(true, SnakeMethod::LocalEmbedding, 1.5);
+}
+
+TEST(AnyScale, OpenSnakeOnTheCubeEdgeIsTheSame)
+{
+    ExpectSameAtEveryScale(false, SnakeMethod::LocalEmbedding, 0.01); // measured 1e-6 at 1e+-30
+}
+
+TEST(AnyScale, ProjectionMethodIsTheSame)
+{
+    ExpectSameAtEveryScale(false, SnakeMethod::Projection3D, 0.1); // measured 1e-3 at 1e+-30
+}
+
+TEST(AnyScale, TinySeedPathIsNotZeroLength)
+{
+    // a 1e-30 cube was refused with "the seed path has zero length" (lengths squared in float)
+    CMeshO m;
+    gs_test::MakeRotatedIcoCube(m, 3, 1e-30);
+    EnableSnakeAdjacency(m);
+    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
+    auto surf = std::make_shared<Surface>(m);
+    Snake s(surf);
+    EXPECT_NO_THROW(s.InitFromPath({0, int(m.vert[0].cVFp()->cV1(m.vert[0].cVFi()) - &m.vert[0])}, false));
+    EXPECT_GE(s.SampleCount(), 2);
+}
