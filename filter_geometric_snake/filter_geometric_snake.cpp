@@ -6,6 +6,7 @@
 
 #include "filter_geometric_snake.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <string>
@@ -21,11 +22,13 @@
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/seed_path.h>
+#include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_mesh_store.h>
 #include <vcg_ext/snake_param_defs.h>
+#include <vcg_ext/triangle_soup.h>
 
 #include <QFileInfo>
 #include <fstream>
@@ -34,7 +37,6 @@ using namespace vcg;
 
 namespace {
 
-const char *const kEnergyNames[] = {"normal variation", "curvature norm", "quadric error"};
 const int kDefaultSmoothingSteps = tri::SnakeParamDefs::DefaultSmoothingSteps();
 
 /// MeshLab parameters from the shared definitions (vcg_ext/snake_param_defs.h), which the
@@ -153,9 +155,14 @@ QString FilterGeometricSnakePlugin::filterInfo(FilterIDType filterId) const
 		       "in the plane (convex combination with a virtual boundary) and solves the snake's "
 		       "equation of motion there (Eq. 4), up to 5 times, then maps back onto the surface. "
 		       "The alternative method updates in 3D and projects onto the surface after every step.<br>"
+		       "Seeds can also be 3D points (<i>Seed points</i>) or a MeshLab Pick Points file "
+		       "(<i>Seed file</i>), snapped onto the surface: the curve then starts and ends exactly at "
+		       "them, inside faces, which is what CAD tessellations need (all their vertices lie on "
+		       "creases).<br>"
 		       "The feature energy is the vertex quality if <i>Use vertex quality</i> is on (any "
-		       "quality field works: low = feature), else the normal-variation energy is computed "
-		       "and stored in the vertex quality.<br>"
+		       "quality field works: low = feature), else the energy of <i>Energy type</i> (normal "
+		       "variation by default; <i>crease distance</i> for CAD parts) is computed and stored in "
+		       "the vertex quality.<br>"
 		       "The curve can be written to a file (.json with samples, curve and timings; .obj; "
 		       ".ply) and added as a layer of edges. It is also kept on the mesh, so the Geometric "
 		       "Snake edit tool shows it and <i>Export Geometric Snake Curves</i> can write it." +
@@ -255,6 +262,43 @@ bool FilterGeometricSnakePlugin::applyFilter(QAction *filter, MeshDocument &md, 
 	}
 }
 
+std::vector<vcg::Point3d> FilterGeometricSnakePlugin::seedPointsWanted(const tri::ParamValues &v,
+                                                                       const std::vector<int> &seeds, QString &source)
+{
+	if (!seeds.empty()) {
+		if (!QString::fromStdString(v.Text("SeedPoints")).trimmed().isEmpty() ||
+		    !QString::fromStdString(v.Text("SeedFile")).trimmed().isEmpty())
+			Log(GLLogStream::WARNING, "Geometric snake: seed vertices are given, so SeedPoints and SeedFile are ignored.");
+		return {};
+	}
+	std::string src;
+	std::vector<vcg::Point3d> pts = tri::SeedPointsParser::FromTextOrFile(v.Text("SeedPoints"), v.Text("SeedFile"), src);
+	if (pts.empty())
+		throw tri::SnakeError("No seeds given: fill Seed vertices (vertex indices), Seed points (\"x y z; x y z\") "
+		                      "or Seed file (a MeshLab Pick Points .pp file).");
+	source = QString::fromStdString(src);
+	return pts;
+}
+
+void FilterGeometricSnakePlugin::logSnap(const vcg::tri::SeedPointSnap<CMeshO>::Result &snap, const QString &source)
+{
+	double worst = 0;
+	for (double d : snap.distances) worst = std::max(worst, d);
+	Log("%d seed points from %s, moved onto the surface by at most %g (%.2g%% of the bounding box diagonal).",
+	    int(snap.points.size()), qUtf8Printable(source), worst, 100.0 * worst / std::max(snap.bboxDiagonal, 1e-300));
+}
+
+void FilterGeometricSnakePlugin::handleSoup(MeshModel &m, bool merge)
+{
+	const int vn = m.cm.vn;
+	const int merged = tri::TriangleSoup<CMeshO>::Handle(m.cm, merge);
+	if (merged < 0) return;
+	m.clearDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
+	tri::UpdateBounding<CMeshO>::Box(m.cm);
+	Log("The mesh was a triangle soup: merged %d duplicate vertices (%d -> %d vertices, %d faces); vertex indices "
+	    "now refer to the merged mesh.", merged, vn, m.cm.vn, m.cm.fn);
+}
+
 bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const RichParameterList &par)
 {
 	MeshModel &m = *md.mm();
@@ -262,15 +306,17 @@ bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const Rich
 	const int type = v.Enum("EnergyType");
 	const int steps = v.Int("SmoothingSteps");
 	const bool colorize = v.Bool("Colorize");
+	const double creaseAngle = v.Real("CreaseAngle");
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	handleSoup(m, v.Bool("MergeDuplicateVertices"));
 	// FeatureEnergy needs no optional component (no adjacency, no curvature fields):
 	// only the (always allocated) vertex quality, which the mask marks as meaningful.
 	m.updateDataMask(MeshModel::MM_VERTQUALITY);
 
 	QElapsedTimer timer;
 	timer.start();
-	const auto stats = tri::FeatureEnergy<CMeshO>::Compute(m.cm, tri::FeatureEnergyType(type), steps);
+	const auto stats = tri::FeatureEnergy<CMeshO>::Compute(m.cm, tri::FeatureEnergyType(type), steps, creaseAngle);
 
 	if (colorize) {
 		m.updateDataMask(MeshModel::MM_VERTCOLOR);
@@ -282,8 +328,10 @@ bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const Rich
 
 	Log("Feature energy (%s, %d smoothing steps) on %d vertices: raw range [%g, %g], stored in vertex "
 	    "quality normalised to [%g, %g] (0 = feature, 1 = flat)%s.",
-	    kEnergyNames[type], steps, m.cm.vn, double(stats.rawMin), double(stats.rawMax), double(q.first),
+	    tri::FeatureEnergyName(tri::FeatureEnergyType(type)), steps, m.cm.vn, double(stats.rawMin), double(stats.rawMax), double(q.first),
 	    double(q.second), colorize ? ", coloured by the quality ramp" : "");
+	if (type == int(tri::FeatureEnergyType::Crease))
+		Log("Crease energy: %d sharp edges (dihedral angle above %g degrees).", stats.creases, creaseAngle);
 	if (stats.nonManifoldVertices > 0 || stats.degenerateFaces > 0)
 		Log(GLLogStream::WARNING, "Feature energy: %d non-manifold vertices, %d degenerate faces (handled, but "
 		    "the energy may be unreliable there).", stats.nonManifoldVertices, stats.degenerateFaces);
@@ -302,7 +350,10 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 	const bool newLayer = v.Bool("NewLayer");
 
 	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(seedText);
+	QString pointSource;
+	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(v, seeds, pointSource);
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	handleSoup(m, v.Bool("MergeDuplicateVertices"));
 	if (compactIfNeeded(m.cm))
 		Log("Compacted the mesh (it had deleted elements); vertex indices refer to the compacted order.");
 	for (int s : seeds)
@@ -329,25 +380,50 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 		}
 	}
 
-	const auto path = tri::SeedPath<CMeshO>::Compute(m.cm, seeds, closed, tri::SeedPathCost(cost));
-	if (path.vertices.empty())
+	// The path: through seed vertices, or from surface point to surface point.
+	std::vector<int> pathVertices;
+	std::vector<tri::SurfacePoint> pathPoints;
+	double pathLength = 0;
+	int seedCount = int(seeds.size());
+	if (seedPts.empty()) {
+		const auto path = tri::SeedPath<CMeshO>::Compute(m.cm, seeds, closed, tri::SeedPathCost(cost));
+		pathVertices = path.vertices;
+		pathLength = path.length;
+		std::vector<tri::SurfacePoint> corner(m.cm.vert.size()); // each vertex in one of its faces
+		for (size_t f = 0; f < m.cm.face.size(); ++f)
+			if (!m.cm.face[f].IsD())
+				for (int k = 0; k < 3; ++k) corner[tri::Index(m.cm, m.cm.face[f].cV(k))] = tri::SurfacePoint::AtCorner(int(f), k);
+		for (int vtx : path.vertices) pathPoints.push_back(corner[vtx]);
+	} else {
+		const auto snap = tri::SeedPointSnap<CMeshO>::Snap(m.cm, seedPts, closed ? 3 : 2, closed);
+		logSnap(snap, pointSource);
+		const auto path = tri::SeedPath<CMeshO>::ComputeFromPoints(m.cm, snap.points, closed, tri::SeedPathCost(cost));
+		pathVertices = path.vertices;
+		pathPoints = path.points;
+		pathLength = path.length;
+		seedCount = int(seedPts.size());
+	}
+	if (pathPoints.empty())
 		return fail("No path was found between the seeds.");
 
 	// Selection: exactly the path's vertices.
 	tri::UpdateSelection<CMeshO>::VertexClear(m.cm);
-	for (int vi : path.vertices)
+	for (int vi : pathVertices)
 		m.cm.vert[vi].SetS();
 	m.updateDataMask(MeshModel::MM_VERTFLAGSELECT);
 
 	if (newLayer) {
 		MeshModel *pl = md.addNewMesh("", "Seed path", false);
 		CMeshO &pm = pl->cm;
-		const int n = int(path.vertices.size());
+		const int n = int(pathPoints.size());
 		auto vi = tri::Allocator<CMeshO>::AddVertices(pm, n);
 		for (int i = 0; i < n; ++i, ++vi) {
-			vi->P() = m.cm.vert[path.vertices[i]].cP();
-			vi->N() = m.cm.vert[path.vertices[i]].cN();
-			vi->Q() = m.cm.vert[path.vertices[i]].cQ();
+			const tri::SurfacePoint &sp = pathPoints[i];
+			const CFaceO &f = m.cm.face[sp.face];
+			const Scalarm b0 = Scalarm(sp.bary[0]), b1 = Scalarm(sp.bary[1]), b2 = Scalarm(sp.bary[2]);
+			vi->P() = sp.P(m.cm);
+			vi->N() = f.cV(0)->cN() * b0 + f.cV(1)->cN() * b1 + f.cV(2)->cN() * b2;
+			vi->Q() = f.cV(0)->cQ() * b0 + f.cV(1)->cQ() * b1 + f.cV(2)->cQ() * b2;
 		}
 		const int ne = (closed && n >= 3) ? n : n - 1;
 		if (ne > 0) {
@@ -364,8 +440,7 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 	}
 
 	Log("Seed path (%s, %s cost) through %d seeds: %d vertices selected, length %g.",
-	    path.closed ? "closed" : "open", cost == 0 ? "length" : "feature", int(seeds.size()),
-	    int(path.vertices.size()), path.length);
+	    closed ? "closed" : "open", cost == 0 ? "length" : "feature", seedCount, int(pathVertices.size()), pathLength);
 	return true;
 }
 
@@ -408,8 +483,12 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	const int maxOps = v.Int("MaxOperations");
 	const bool useQuality = v.Bool("UseQuality");
 	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
+	const int energyType = v.Enum("EnergyType");
+	QString pointSource;
+	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(v, seeds, pointSource);
 
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	handleSoup(m, v.Bool("MergeDuplicateVertices"));
 	if (compactIfNeeded(m.cm))
 		Log("Compacted the mesh (it had deleted elements); vertex indices refer to the compacted order.");
 	for (int s : seeds)
@@ -425,10 +504,23 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	QElapsedTimer timer;
 	timer.start();
 	Controller ctl(m.cm);
-	if (useQuality) ctl.UseQualityAsEnergy();
+	if (useQuality) {
+		ctl.UseQualityAsEnergy();
+	} else {
+		ctl.SetCreaseAngle(v.Real("CreaseAngle"));
+		ctl.SetEnergySettings(tri::FeatureEnergyType(energyType), kDefaultSmoothingSteps);
+		Log("Geometric snake: %s energy (%d smoothing steps) stored in the vertex quality.",
+		    tri::FeatureEnergyName(tri::FeatureEnergyType(energyType)), kDefaultSmoothingSteps);
+	}
 	ctl.SetParams(p);
-	ctl.SetSeeds(seeds);
-	ctl.CloseSeeds(closed);
+	if (seedPts.empty()) {
+		ctl.SetSeeds(seeds);
+		ctl.CloseSeeds(closed);
+	} else {
+		const auto snap = tri::SeedPointSnap<CMeshO>::Snap(m.cm, seedPts, closed ? 3 : 2, closed);
+		logSnap(snap, pointSource);
+		ctl.CreateSnakeFromSeedPoints(snap.points, closed);
+	}
 	for (const auto &w : ctl.EnsureSurface().Warnings()) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
 	tri::GeometricSnake<CMeshO> &snake = ctl.Get(0);
 	int shown = -1;
@@ -480,7 +572,16 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	    "update (%d embeddings, %d updates).", timer.nsecsElapsed() * 1e-6,
 	    tri::SnakeStats::Median(st.msOperation), tri::SnakeStats::Median(st.msEmbedding),
 	    tri::SnakeStats::Median(st.msUpdate), st.embeddings, st.updates);
-	for (const auto &w : st.warnings) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
+	// Each distinct warning once per run (a frozen segment repeats it at every operation).
+	std::vector<std::pair<std::string, int>> distinct;
+	for (const auto &w : st.warnings) {
+		auto it = std::find_if(distinct.begin(), distinct.end(), [&](const std::pair<std::string, int> &d) { return d.first == w; });
+		if (it == distinct.end()) distinct.push_back({w, 1});
+		else ++it->second;
+	}
+	for (const auto &d : distinct)
+		Log(GLLogStream::WARNING, "Geometric snake: %s%s", d.first.c_str(),
+		    d.second > 1 ? qUtf8Printable(QString(" (%1 times in this run)").arg(d.second)) : "");
 	return true;
 }
 

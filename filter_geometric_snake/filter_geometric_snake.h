@@ -12,6 +12,8 @@
 #define FILTER_GEOMETRIC_SNAKE_H
 
 #include <common/interfaces.h>
+#include <vcg_ext/seed_points.h>
+#include <vcg_ext/snake_param_defs.h>
 
 class FilterGeometricSnakePlugin : public QObject, public MeshFilterInterface
 {
@@ -50,6 +52,15 @@ private:
 	/// Adds a layer made of the curves' polylines as vertices and edges.
 	void addCurveLayer(MeshDocument &md, const MeshModel &src, const QString &name,
 	                   const std::vector<std::vector<vcg::Point3d>> &curves, const std::vector<bool> &closed);
+
+	/// Seeds as points (SeedPoints, else SeedFile) when `seeds` (vertex indices) is empty;
+	/// throws if no seed is given at all. Empty when the seed vertices are used.
+	std::vector<vcg::Point3d> seedPointsWanted(const vcg::tri::ParamValues &v, const std::vector<int> &seeds,
+	                                           QString &source);
+	void logSnap(const vcg::tri::SeedPointSnap<CMeshO>::Result &snap, const QString &source);
+	/// A triangle soup is refused with a message naming Merge Close Vertices, or merged (with
+	/// a Log line) when `merge` (the MergeDuplicateVertices parameter).
+	void handleSoup(MeshModel &m, bool merge);
 
 	/// Sets errorMessage and mirrors it in the Log (meshlabserver prints the Log but
 	/// not errorMessage). Always returns false, for `return fail(...)`.

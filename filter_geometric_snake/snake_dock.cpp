@@ -92,6 +92,7 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     energyType->addItem("Normal variation (Eq. 6)");
     energyType->addItem("Curvature norm");
     energyType->addItem("Quadric error");
+    energyType->addItem("Crease distance (CAD)");
     energyType->setToolTip("The feature energy the snakes minimize (low = feature)");
     smoothing = new QSpinBox;
     smoothing->setRange(0, 100);

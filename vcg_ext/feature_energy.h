@@ -22,13 +22,22 @@
 #include <vcg/math/quadric.h>
 #include <vcg/space/plane3.h>
 
+#include "crease_energy.h"
 #include "mesh_validation.h"
 #include "snake_error.h"
 
 namespace vcg {
 namespace tri {
 
-enum class FeatureEnergyType { NormalVariation = 0, CurvatureNorm = 1, QuadricError = 2 };
+enum class FeatureEnergyType { NormalVariation = 0, CurvatureNorm = 1, QuadricError = 2, Crease = 3 };
+/// Number of FeatureEnergyType values (valid types are 0 .. count-1).
+inline int FeatureEnergyTypeCount() { return 4; }
+/// Lower-case names, indexed by type, for messages and the Log.
+inline const char *FeatureEnergyName(FeatureEnergyType t)
+{
+    static const char *const n[] = {"normal variation", "curvature norm", "quadric error", "crease distance"};
+    return (int(t) >= 0 && int(t) < FeatureEnergyTypeCount()) ? n[int(t)] : "unknown";
+}
 
 template <class MeshType>
 class FeatureEnergy
@@ -45,6 +54,7 @@ public:
         float rawMin = 0, rawMax = 0; // range of the raw (dimensionless) energy before normalization
         int nonManifoldVertices = 0;
         int degenerateFaces = 0;
+        int creases = 0; // crease energy: number of sharp edges found
         double seconds = 0;
     };
 
@@ -55,7 +65,11 @@ public:
     /// Computes the energy into the vertex quality, in [0,1] with 0 = strongest feature, flat = 1,
     /// then `smoothingSteps` rounds of Sec. 6.3 smoothing and a renormalization (so the feature
     /// is at 0 again). Updates face normals and angle-weighted vertex normals.
-    static Stats Compute(MeshType &m, FeatureEnergyType type, int smoothingSteps)
+    /// The crease energy (CreaseEnergy) is already in [0,1]: its smoothing widens its basin by
+    /// distance, and the vertices get its values at the vertices (creaseAngleDeg: the dihedral
+    /// angle that makes an edge a crease).
+    static Stats Compute(MeshType &m, FeatureEnergyType type, int smoothingSteps,
+                         double creaseAngleDeg = CreaseEnergy<MeshType>::DefaultAngle())
     {
         const auto t0 = std::chrono::steady_clock::now();
         RequireComponents(m);
@@ -75,6 +89,19 @@ public:
         case FeatureEnergyType::NormalVariation: NormalVariationImpl(m, fn); break;
         case FeatureEnergyType::CurvatureNorm: CurvatureNormImpl(m, rep.meanEdgeLength); break;
         case FeatureEnergyType::QuadricError: QuadricErrorImpl(m, fn, rep.meanEdgeLength); break;
+        case FeatureEnergyType::Crease: {
+            CreaseEnergy<MeshType> ce;
+            const double w = CreaseEnergy<MeshType>::WidthFor(Diagonal(m), smoothingSteps);
+            ce.Build(m, creaseAngleDeg, CreaseEnergy<MeshType>::ReachInWidths() * w);
+            const std::vector<double> e = ce.VertexValues(w);
+            for (size_t i = 0; i < m.vert.size(); ++i)
+                if (!m.vert[i].IsD()) m.vert[i].Q() = ScalarType(e[i]);
+            st.creases = ce.CreaseCount();
+            st.rawMin = 0;
+            st.rawMax = 1;
+            st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            return st;
+        }
         default: throw SnakeError("Unknown feature energy type.");
         }
 
@@ -368,6 +395,14 @@ private:
             const double e = -std::max(0.0, err[i]) / L2;
             m.vert[i].Q() = ScalarType(std::isfinite(e) ? e : 0.0);
         }
+    }
+
+    static double Diagonal(const MeshType &m)
+    {
+        vcg::Box3d b;
+        for (const VertexType &v : m.vert)
+            if (!v.IsD()) b.Add(vcg::Point3d::Construct(v.cP()));
+        return b.Diag();
     }
 
     static void RequireComponents(MeshType &m)

@@ -60,6 +60,8 @@ public:
         typename SeedPath<MeshType>::Result path = SeedPath<MeshType>::Compute(surf->Mesh(), seeds, closed, cost);
         InitFromPath(path.vertices, closed);
         seedVertices = seeds;
+        seedPoints.clear();
+        for (int v : seeds) seedPoints.push_back(vertexPoint(v));
     }
 
     /// Samples along a vertex path (consecutive vertices share an edge). Closed paths do not
@@ -117,6 +119,84 @@ public:
                 if (cum[i + 1] < s0 - eps || cum[i] > s1 + eps) continue;
                 for (int f : edgeFaces(pv[i], pv[i + 1])) gap.faces.push_back(f);
                 if (cum[i] > s0 + eps && cum[i] < s1 - eps) gap.crossings.push_back(vertexPoint(pv[i]));
+            }
+            gap.traced = true;
+        }
+        initialSamples = st.samples;
+        initialPolyline = Polyline();
+        resetRun();
+    }
+
+    /// Seeds given as surface points (face + barycentric, e.g. snapped from coordinates or a
+    /// Pick Points file): the curve starts and ends exactly at them (SeedPath::ComputeFromPoints).
+    void InitFromSeedPoints(const std::vector<SurfacePoint> &seeds, bool closed, SeedPathCost cost = SeedPathCost::Length)
+    {
+        typename SeedPath<MeshType>::PointResult path = SeedPath<MeshType>::ComputeFromPoints(surf->Mesh(), seeds, closed, cost);
+        InitFromSurfacePath(path.points, closed);
+        seedVertices.clear();
+        seedPoints.clear();
+        for (int i : path.seedPositions) seedPoints.push_back(path.points[i]);
+    }
+
+    /// Samples at uniform spacing along a polyline of surface points in which consecutive
+    /// points share a face (closed: the first point is not repeated).
+    void InitFromSurfacePath(const std::vector<SurfacePoint> &pathPts, bool closed)
+    {
+        const MeshType &m = surf->Mesh();
+        std::vector<SurfacePoint> pv;
+        for (const auto &p : pathPts) {
+            checkPoint(p);
+            if (pv.empty() || p.Pd(m) != pv.back().Pd(m)) pv.push_back(p);
+        }
+        if (closed && pv.size() > 1 && pv.front().Pd(m) == pv.back().Pd(m)) pv.pop_back();
+        if (closed) pv.push_back(pv.front());
+        if (pv.size() < 2) throw SnakeError("Geometric snake: the seed path is too short.");
+        // The face each piece lies in, and both ends expressed in it.
+        const size_t np = pv.size() - 1;
+        std::vector<int> pieceFace(np);
+        std::vector<std::pair<SurfacePoint, SurfacePoint>> ends(np);
+        for (size_t i = 0; i < np; ++i) {
+            pieceFace[i] = commonFace(pv[i], pv[i + 1]);
+            if (pieceFace[i] < 0) throw SnakeError("Geometric snake: consecutive seed path points share no face.");
+            pv[i].InFace(m, pieceFace[i], ends[i].first);
+            pv[i + 1].InFace(m, pieceFace[i], ends[i].second);
+        }
+        std::vector<double> cum(pv.size(), 0.0);
+        for (size_t i = 1; i < pv.size(); ++i) cum[i] = cum[i - 1] + (pv[i].Pd(m) - pv[i - 1].Pd(m)).Norm();
+        const double L = cum.back();
+        const double d = st.params.spacing * surf->MeanEdge();
+        if (!(L > 0)) throw SnakeError("Geometric snake: the seed path has zero length.");
+        long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
+        n = std::max<long>(n, closed ? 3 : 2);
+        if (n > 200000) throw SnakeError("Geometric snake: the spacing is too small for this path (too many samples).");
+        const double step = closed ? L / double(n) : L / double(n - 1);
+
+        pushUndo();
+        st.samples.clear();
+        st.gaps.clear();
+        st.closed = closed;
+        std::vector<double> sampleArc;
+        size_t e = 0;
+        for (long k = 0; k < n; ++k) {
+            const double s = (!closed && k == n - 1) ? L : std::min(L, k * step);
+            while (e + 2 < pv.size() && cum[e + 1] < s) ++e;
+            const double len = cum[e + 1] - cum[e];
+            const double t = std::min(1.0, std::max(0.0, len > 0 ? (s - cum[e]) / len : 0.0));
+            SnakeSample smp;
+            smp.p = SurfacePoint(pieceFace[e], ends[e].first.bary * (1 - t) + ends[e].second.bary * t);
+            smp.p.Normalize();
+            st.samples.push_back(smp);
+            sampleArc.push_back(s);
+        }
+        const int gapsN = numGaps();
+        st.gaps.assign(gapsN, Gap());
+        for (int g = 0; g < gapsN; ++g) {
+            const double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
+            Gap &gap = st.gaps[g];
+            for (size_t i = 0; i < np; ++i) {
+                if (cum[i + 1] < s0 - 1e-12 || cum[i] > s1 + 1e-12) continue;
+                gap.faces.push_back(pieceFace[i]);
+                if (cum[i] > s0 + 1e-12 && cum[i] < s1 - 1e-12) gap.crossings.push_back(pv[i]);
             }
             gap.traced = true;
         }
@@ -313,6 +393,8 @@ public:
     Surface &GetSurface() { return *surf; }
     std::shared_ptr<Surface> SurfacePtr() const { return surf; }
     const std::vector<int> &SeedVertices() const { return seedVertices; }
+    /// The seeds as surface points (for vertex seeds: the vertex, in one of its faces).
+    const std::vector<SurfacePoint> &SeedPoints() const { return seedPoints; }
     const std::vector<SnakeSample> &InitialSamples() const { return initialSamples; }
     const std::vector<SurfacePoint> &InitialPolyline() const { return initialPolyline; }
     const std::vector<Gap> &Gaps() const { return st.gaps; }
@@ -360,6 +442,7 @@ private:
     SnakeHistory<SnakeCurve> history;
     SnakeStats stats;
     std::vector<int> seedVertices;
+    std::vector<SurfacePoint> seedPoints;
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
     bool coarseStage = true;
@@ -522,6 +605,23 @@ private:
                 if (vfi.F()->V(k) == &m.vert[b]) out.push_back(surf->Idx(vfi.F()));
         return out;
     }
+    /// A face holding both surface points (each may lie on an edge or at a vertex), or -1.
+    int commonFace(const SurfacePoint &a, const SurfacePoint &b) const
+    {
+        const MeshType &m = surf->Mesh();
+        SurfacePoint tmp;
+        for (int f : {a.face, b.face})
+            if (a.InFace(m, f, tmp) && b.InFace(m, f, tmp)) return f;
+        for (int k = 0; k < 3; ++k) {
+            if (!(a.bary[k] > 1e-12)) continue;
+            for (vcg::face::VFIterator<FaceType> vfi(const_cast<FaceType *>(&m.face[a.face])->V(k)); !vfi.End(); ++vfi) {
+                const int f = surf->Idx(vfi.F());
+                if (!vfi.F()->IsD() && a.InFace(m, f, tmp) && b.InFace(m, f, tmp)) return f;
+            }
+        }
+        return -1;
+    }
+
     /// The point (1-t) a + t b on mesh edge ab, expressed in a face containing that edge.
     SurfacePoint pointOnEdge(int a, int b, double t) const
     {

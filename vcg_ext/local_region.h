@@ -20,9 +20,12 @@ namespace tri {
 ///  - Holes made of mesh faces (the one-ring missed them) are filled with those faces.
 ///  - Holes of the mesh itself (a scan's gap inside the region) are closed by a virtual fan:
 ///    it keeps the region a disk for the embedding, but no sample can walk into it.
-///  - A region that is not a disk after that (it wraps around a handle or a closed surface),
-///    is non-manifold or inconsistently oriented is refused with a reason; the caller then
-///    splits the segment (Sec. 5.1).
+///  - A region that is not a disk after that (vertex stars of long slivers wrap around a bore
+///    of a CAD part, a handle, a closed surface) is trimmed rather than refused: built again
+///    from the crossed faces and their edge neighbours only, then from the crossed faces alone
+///    (the farthest faces go first). Only when even that fails (non-manifold, inconsistently
+///    oriented, or the crossed faces themselves wrap around) is it refused with a reason; the
+///    caller then splits the segment (Sec. 5.1).
 /// Local vertex ids: real mesh vertices first, then fan centres. Local faces: real faces
 /// first (faces[i] = mesh index), then fan faces. Edge i of a local face runs from
 /// tri[t][i] to tri[t][(i+1)%3], as in vcglib; adj[t][i] is the local face across it,
@@ -42,6 +45,9 @@ public:
     std::vector<int> boundary;                // outer loop (local ids), region on its left
     std::string error;
     int holesFilled = 0, meshHolesClosed = 0;
+    /// How far the last region was trimmed: 0 the paper's region (vertex stars), 1 crossed
+    /// faces and their edge neighbours, 2 the crossed faces only.
+    int trimLevel = 0;
 
     int RealFaces() const { return int(faces.size()); }
 
@@ -53,21 +59,44 @@ public:
         return s.faceSlot[meshFace];
     }
 
-    /// Builds the region around `core` faces. False (with `error`) when it cannot be a disk.
+    /// Builds the region around `core` faces, trimmed if the full one is not a disk. False
+    /// (with `error`, the reason the full region failed) when no trimming gives a disk.
     bool Build(SnakeSurface<MeshType> &s, const std::vector<int> &core, int maxFaces = 60000)
+    {
+        std::string first;
+        for (int level = 0; level <= 2; ++level) {
+            if (buildAt(s, core, maxFaces, level)) {
+                trimLevel = level;
+                return true;
+            }
+            if (level == 0) first = error;
+        }
+        error = first; // report why the paper's region failed
+        return false;
+    }
+
+private:
+    bool buildAt(SnakeSurface<MeshType> &s, const std::vector<int> &core, int maxFaces, int level)
     {
         MeshType &m = s.Mesh();
         clear();
         gen = s.NewGeneration();
         for (int f : core) {
             if (!s.FaceUsable(f)) continue;
-            for (int k = 0; k < 3; ++k) {
-                VertexType *v = m.face[f].V(k);
-                int vi = s.Idx(v);
-                if (s.vertStamp[vi] == gen) continue; // star already taken
-                s.vertStamp[vi] = gen;
-                s.vertSlot[vi] = -1; // not yet a local vertex
-                for (vcg::face::VFIterator<FaceType> vfi(v); !vfi.End(); ++vfi) add(s, s.Idx(vfi.F()));
+            if (level == 0) {
+                for (int k = 0; k < 3; ++k) {
+                    VertexType *v = m.face[f].V(k);
+                    int vi = s.Idx(v);
+                    if (s.vertStamp[vi] == gen) continue; // star already taken
+                    s.vertStamp[vi] = gen;
+                    s.vertSlot[vi] = -1; // not yet a local vertex
+                    for (vcg::face::VFIterator<FaceType> vfi(v); !vfi.End(); ++vfi) add(s, s.Idx(vfi.F()));
+                }
+            } else if (level == 1) {
+                for (int k = 0; k < 3; ++k) {
+                    FaceType *g = m.face[f].FFp(k);
+                    if (g != nullptr && g != &m.face[f]) add(s, s.Idx(g));
+                }
             }
             add(s, f);
         }
@@ -156,7 +185,6 @@ public:
         return true;
     }
 
-private:
     int gen = 0;
     int pinched = -1; // a vertex where the region border touches itself
 

@@ -22,6 +22,7 @@
 
 #include "mesh_validation.h"
 #include "snake_error.h"
+#include "surface_point.h"
 
 namespace vcg {
 namespace tri {
@@ -111,6 +112,85 @@ public:
         return r;
     }
 
+    /// A path between seeds that are surface points (face + barycentric), not vertices: each
+    /// seed is joined straight to the vertices of its own face, and from there along mesh
+    /// edges as in Compute(); two seeds in one face are joined straight. The path starts and
+    /// ends exactly at the seeds. Consecutive points of `points` always share a face.
+    struct PointResult
+    {
+        std::vector<SurfacePoint> points; // seeds and the path vertices between them; closed: first not repeated
+        std::vector<int> seedPositions;   // index in `points` of each seed
+        std::vector<int> vertices;        // the mesh vertices the path runs through, in order
+        bool closed = false;
+        double length = 0;
+    };
+
+    static PointResult ComputeFromPoints(MeshType &m, const std::vector<SurfacePoint> &seeds, bool closed,
+                                         SeedPathCost cost = SeedPathCost::Length, double featureEpsilon = 0.05)
+    {
+        MV::RequireSurface(m);
+        const size_t minSeeds = closed ? 3 : 2;
+        if (seeds.size() < minSeeds)
+            throw SnakeError(std::string("A ") + (closed ? "closed" : "open") + " snake needs at least " +
+                             std::to_string(minSeeds) + " seed points (got " + std::to_string(seeds.size()) + ").");
+        if (cost == SeedPathCost::Feature && !tri::HasPerVertexQuality(m))
+            throw SnakeError("The feature-weighted seed path needs the feature energy in the vertex quality.");
+        if (!(featureEpsilon > 0) || !std::isfinite(featureEpsilon))
+            throw SnakeError("The feature path epsilon must be a positive number.");
+        for (size_t i = 0; i < seeds.size(); ++i) {
+            const SurfacePoint &s = seeds[i];
+            if (!s.IsValid() || s.face >= int(m.face.size()) || m.face[s.face].IsD() || MV::IsDegenerate(m.face[s.face]))
+                throw SnakeError("Seed point " + std::to_string(i + 1) + " is not on a usable face of the mesh.");
+        }
+        // One incident face per vertex, to express path vertices as surface points.
+        std::vector<std::pair<int, int>> corner(m.vert.size(), std::make_pair(-1, -1));
+        for (size_t f = 0; f < m.face.size(); ++f)
+            if (!m.face[f].IsD())
+                for (int k = 0; k < 3; ++k) corner[MV::VIndex(m, m.face[f].cV(k))] = std::make_pair(int(f), k);
+
+        Search search(m, cost, featureEpsilon);
+        PointResult r;
+        r.closed = closed;
+        r.points.push_back(Clean(seeds[0]));
+        r.seedPositions.push_back(0);
+        const size_t nSeg = closed ? seeds.size() : seeds.size() - 1;
+        for (size_t i = 0; i < nSeg; ++i) {
+            const size_t j = (i + 1) % seeds.size();
+            const SurfacePoint a = Clean(seeds[i]), b = Clean(seeds[j]);
+            std::vector<std::pair<int, double>> src, dst;
+            for (int k = 0; k < 3; ++k) {
+                const int va = MV::VIndex(m, m.face[a.face].cV(k)), vb = MV::VIndex(m, m.face[b.face].cV(k));
+                src.emplace_back(va, search.PointCost(a, va));
+                dst.emplace_back(vb, search.PointCost(b, vb));
+            }
+            std::vector<int> seg;
+            double viaEdges = search.RunPoints(src, dst, b.Pd(m), seg);
+            const double direct = a.face == b.face ? search.PointCost(a, b) : std::numeric_limits<double>::infinity();
+            if (direct <= viaEdges) seg.clear();
+            else if (!std::isfinite(viaEdges))
+                throw SnakeError("Seed points " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+                                 " are on different connected components of the mesh: no path along its edges "
+                                 "joins them.");
+            // A seed lying on a vertex is not repeated as that vertex.
+            auto same = [&](const SurfacePoint &x, const SurfacePoint &y) { return x.Pd(m) == y.Pd(m); };
+            for (int v : seg) {
+                if (r.vertices.empty() || r.vertices.back() != v) r.vertices.push_back(v);
+                const SurfacePoint pv = SurfacePoint::AtCorner(corner[v].first, corner[v].second);
+                if (!same(pv, r.points.back())) r.points.push_back(pv);
+            }
+            if (j != 0 || !closed) {
+                if (int(r.points.size()) - 1 > r.seedPositions.back() && same(r.points.back(), b)) r.points.back() = b;
+                else r.points.push_back(b);
+                r.seedPositions.push_back(int(r.points.size()) - 1);
+            } else if (int(r.points.size()) - 1 > r.seedPositions.back() && same(r.points.back(), b)) {
+                r.points.pop_back(); // closed: the path came back onto the first seed
+            }
+        }
+        for (size_t i = 0; i + 1 < r.points.size(); ++i) r.length += (r.points[i + 1].Pd(m) - r.points[i].Pd(m)).Norm();
+        if (closed) r.length += (r.points.front().Pd(m) - r.points.back().Pd(m)).Norm();
+        return r;
+    }
+
     /// "12, 40,77" -> {12,40,77}. Separators: whitespace and/or one ',' or ';'. Empty text gives
     /// no seeds. Throws SnakeError on anything else (negative numbers, letters, ",,").
     static std::vector<int> ParseSeeds(const std::string &text)
@@ -152,6 +232,12 @@ public:
     }
 
 private:
+    static SurfacePoint Clean(SurfacePoint p)
+    {
+        p.Normalize();
+        return p;
+    }
+
     static double EdgeLen(const MeshType &m, int a, int b)
     {
         return vcg::Distance(vcg::Point3d::Construct(m.vert[a].cP()), vcg::Point3d::Construct(m.vert[b].cP()));
@@ -197,15 +283,77 @@ private:
             }
         }
 
+        /// Cost of the straight piece from surface point p to vertex v (same cost as an edge).
+        double PointCost(const SurfacePoint &p, int v) const
+        {
+            double c = vcg::Distance(p.Pd(m_), P(v));
+            if (feature_) c *= eps_ + 0.5 * (PointQuality(p) + q_[v]);
+            return c;
+        }
+        double PointCost(const SurfacePoint &a, const SurfacePoint &b) const
+        {
+            double c = vcg::Distance(a.Pd(m_), b.Pd(m_));
+            if (feature_) c *= eps_ + 0.5 * (PointQuality(a) + PointQuality(b));
+            return c;
+        }
+
+        /// Multi-source, multi-target A*: sources (vertex, initial cost), targets (vertex, cost
+        /// from it to the goal point `goal`). Returns the total cost (infinity if unreachable)
+        /// and the vertices of the best path in `path`.
+        double RunPoints(const std::vector<std::pair<int, double>> &src, const std::vector<std::pair<int, double>> &dst,
+                         const vcg::Point3d &goal, std::vector<int> &path)
+        {
+            reset();
+            typedef std::pair<double, int> Entry;
+            std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+            for (const auto &s : src)
+                if (s.second < g_[s.first]) {
+                    if (g_[s.first] == std::numeric_limits<double>::infinity()) touched_.push_back(s.first);
+                    g_[s.first] = s.second;
+                    parent_[s.first] = -1;
+                    open.emplace(s.second + hScale_ * vcg::Distance(P(s.first), goal), s.first);
+                }
+            const int goalNode = -2;
+            double bestTotal = std::numeric_limits<double>::infinity();
+            int bestLast = -1;
+            while (!open.empty()) {
+                const Entry e = open.top();
+                open.pop();
+                if (e.second == goalNode) break; // the goal was reached at the lowest cost
+                const int u = e.second;
+                if (done_[u]) continue;
+                done_[u] = 1;
+                for (const auto &t : dst)
+                    if (t.first == u && g_[u] + t.second < bestTotal) {
+                        bestTotal = g_[u] + t.second;
+                        bestLast = u;
+                        open.emplace(bestTotal, goalNode);
+                    }
+                const vcg::Point3d pu = P(u);
+                ForNeighbours(u, [&](int w) {
+                    if (done_[w] || w == u) return;
+                    double c = vcg::Distance(pu, P(w));
+                    if (feature_) c *= eps_ + 0.5 * (q_[u] + q_[w]);
+                    const double ng = g_[u] + c;
+                    if (ng < g_[w]) {
+                        if (g_[w] == std::numeric_limits<double>::infinity()) touched_.push_back(w);
+                        g_[w] = ng;
+                        parent_[w] = u;
+                        open.emplace(ng + hScale_ * vcg::Distance(P(w), goal), w);
+                    }
+                });
+            }
+            path.clear();
+            if (bestLast < 0) return std::numeric_limits<double>::infinity();
+            for (int v = bestLast; v != -1; v = parent_[v]) path.push_back(v);
+            std::reverse(path.begin(), path.end());
+            return bestTotal;
+        }
+
         /// Fills path (source..target) and returns true, or false if target is unreachable.
         bool Run(int source, int target, std::vector<int> &path)
         {
-            for (int v : touched_) {
-                g_[v] = std::numeric_limits<double>::infinity();
-                parent_[v] = -1;
-                done_[v] = 0;
-            }
-            touched_.clear();
+            reset();
             const vcg::Point3d pt = P(target);
             typedef std::pair<double, int> Entry;
             std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
@@ -244,6 +392,22 @@ private:
         }
 
     private:
+        void reset()
+        {
+            for (int v : touched_) {
+                g_[v] = std::numeric_limits<double>::infinity();
+                parent_[v] = -1;
+                done_[v] = 0;
+            }
+            touched_.clear();
+        }
+        double PointQuality(const SurfacePoint &p) const
+        {
+            const FaceType &f = m_.face[p.face];
+            double q = 0;
+            for (int k = 0; k < 3; ++k) q += p.bary[k] * q_[MV::VIndex(m_, f.cV(k))];
+            return q;
+        }
         vcg::Point3d P(int v) const { return vcg::Point3d::Construct(m_.vert[v].cP()); }
         double H(int v, const vcg::Point3d &pt) const { return hScale_ * vcg::Distance(P(v), pt); }
 

@@ -10,6 +10,7 @@
 // command line program and the fuzz targets all call these same functions.
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -126,7 +127,11 @@ public:
                 else if (a.first == "x" || a.first == "y" || a.first == "z") {
                     const int k = a.first[0] - 'x';
                     std::vector<double> c;
-                    Numbers(a.second, c, a.second);
+                    try {
+                        Numbers(a.second, c, a.second);
+                    } catch (const SnakeError &) {
+                        c.clear();
+                    }
                     if (c.size() != 1)
                         throw PpJunk("point " + std::to_string(out.size() + 1) + " has a bad " + a.first + " (\"" +
                                      Short(a.second) + "\")");
@@ -163,6 +168,25 @@ public:
         } catch (const SnakeError &e) {
             throw SnakeError(std::string(e.what()) + " (file \"" + path + "\")");
         }
+    }
+
+    /// Seeds as the filters and the program take them: the SeedPoints text, else the active
+    /// points of the SeedFile (.pp); `source` says which, for the Log. Empty if neither is
+    /// given; both given is an error.
+    static std::vector<vcg::Point3d> FromTextOrFile(const std::string &text, std::string file, std::string &source)
+    {
+        while (!file.empty() && std::isspace(static_cast<unsigned char>(file.back()))) file.pop_back();
+        while (!file.empty() && std::isspace(static_cast<unsigned char>(file.front()))) file.erase(file.begin());
+        std::vector<vcg::Point3d> pts = Parse(text);
+        if (!pts.empty()) {
+            if (!file.empty()) throw SnakeError("Both SeedPoints and SeedFile are given: use one of them.");
+            source = "the SeedPoints coordinates";
+            return pts;
+        }
+        if (file.empty()) return pts;
+        pts = Active(ReadPickPointsFile(file));
+        source = "the Pick Points file " + file;
+        return pts;
     }
 
     /// The placed (active) points, in order: what Pick Points' own "get points" returns.
@@ -313,7 +337,7 @@ public:
             // Search a little farther than the limit so the message can say how far the point is.
             const ScalarType searchMax = ScalarType(std::max(maxD, 1e-30) * 4);
             ScalarType dist = searchMax;
-            CoordType closest;
+            CoordType closest(0, 0, 0);
             DistanceFunctor fn;
             FaceType *f = grid.GetClosest(fn, marker, q, searchMax, dist, closest);
             const std::string who = "Seed point " + std::to_string(i + 1) + " (" + Fmt(pts[i][0]) + " " +

@@ -56,9 +56,9 @@ public:
     /// snake slither on it. Throws on a bad type/smoothing or an unusable mesh.
     void ComputeEnergy(FeatureEnergyType type, int smoothing)
     {
-        if (int(type) < 0 || int(type) > 2) throw SnakeError("Geometric snake: unknown energy type.");
+        if (int(type) < 0 || int(type) >= FeatureEnergyTypeCount()) throw SnakeError("Geometric snake: unknown energy type.");
         if (smoothing < 0 || smoothing > 1000) throw SnakeError("Geometric snake: energy smoothing must be in [0, 1000].");
-        FeatureEnergy<MeshType>::Compute(mesh, type, smoothing);
+        FeatureEnergy<MeshType>::Compute(mesh, type, smoothing, creaseAngle);
         energyFromQuality = false;
         energyType = type;
         energySmoothing = smoothing;
@@ -84,11 +84,22 @@ public:
     bool EnergyFromQuality() const { return energyFromQuality; }
     bool EnergyComputed() const { return energyComputed; }
     FeatureEnergyType EnergyType() const { return energyType; }
+    /// Dihedral angle (degrees) above which an edge is a crease, for the crease energy.
+    double CreaseAngle() const { return creaseAngle; }
+    void SetCreaseAngle(double deg)
+    {
+        if (!std::isfinite(deg) || deg <= 0 || deg >= 180)
+            throw SnakeError("Geometric snake: the crease angle must be between 0 and 180 degrees.");
+        const bool changed = deg != creaseAngle;
+        creaseAngle = deg;
+        if (changed && energyComputed && !energyFromQuality && energyType == FeatureEnergyType::Crease)
+            ComputeEnergy(energyType, energySmoothing);
+    }
     int EnergySmoothing() const { return energySmoothing; }
     /// Energy settings used when the energy is computed on demand (first snake).
     void SetEnergySettings(FeatureEnergyType type, int smoothing)
     {
-        if (int(type) < 0 || int(type) > 2) throw SnakeError("Geometric snake: unknown energy type.");
+        if (int(type) < 0 || int(type) >= FeatureEnergyTypeCount()) throw SnakeError("Geometric snake: unknown energy type.");
         if (smoothing < 0 || smoothing > 1000) throw SnakeError("Geometric snake: energy smoothing must be in [0, 1000].");
         if (energyComputed && (type != energyType || smoothing != energySmoothing)) ComputeEnergy(type, smoothing);
         energyType = type;
@@ -272,6 +283,20 @@ public:
         return selected;
     }
 
+    /// Builds a snake from seeds given as surface points (e.g. snapped from coordinates or a
+    /// Pick Points file, SeedPointSnap): the curve starts and ends exactly at them. Selects it.
+    int CreateSnakeFromSeedPoints(const std::vector<SurfacePoint> &pts, bool closed)
+    {
+        EnsureSurface();
+        checkMesh();
+        std::unique_ptr<Snake> sn(new Snake(surface, params));
+        sn->InitFromSeedPoints(pts, closed, seedCost);
+        snakes.push_back(std::move(sn));
+        selected = int(snakes.size()) - 1;
+        touch("create snake");
+        return selected;
+    }
+
     // ================================================================ snakes
     int SnakeCount() const { return int(snakes.size()); }
     int Selected() const { return selected; }
@@ -442,7 +467,8 @@ public:
         j["format"] = FormatName();
         j["version"] = FormatVersion();
         j["mesh"] = {{"vertices", int(mesh.vert.size())}, {"faces", int(mesh.face.size())}};
-        j["energy"] = {{"type", energyFromQuality ? -1 : int(energyType)}, {"smoothing", energySmoothing}};
+        j["energy"] = {{"type", energyFromQuality ? -1 : int(energyType)}, {"smoothing", energySmoothing},
+                       {"crease_angle", creaseAngle}};
         j["params"] = IO::ParamsJson(params);
         j["seed_cost"] = int(seedCost);
         j["selected"] = selected;
@@ -471,18 +497,25 @@ public:
             const int etype = j.at("energy").value("type", 0); // -1: the vertex quality as it is
             FeatureEnergyType et = FeatureEnergyType(std::max(0, etype));
             int es = j.at("energy").value("smoothing", 2);
-            if (etype < -1 || etype > 2 || es < 0 || es > 1000)
+            if (etype < -1 || etype >= FeatureEnergyTypeCount() || es < 0 || es > 1000)
                 throw SnakeError("Geometric snake: bad energy settings in the session file.");
             int sc = j.value("seed_cost", 0);
             if (sc < 0 || sc > 1) throw SnakeError("Geometric snake: bad seed cost in the session file.");
             std::vector<int> ns = j.value("seeds", std::vector<int>());
             for (int v : ns) checkVertex(v);
 
+            const double ca = j.at("energy").value("crease_angle", CreaseEnergy<MeshType>::DefaultAngle());
+            if (!std::isfinite(ca) || ca <= 0 || ca >= 180)
+                throw SnakeError("Geometric snake: bad crease angle in the session file.");
+
             if (etype == -1) {
                 if (!energyFromQuality) UseQualityAsEnergy();
-            } else if (!energyComputed || energyFromQuality || et != energyType || es != energySmoothing) {
+            } else if (!energyComputed || energyFromQuality || et != energyType || es != energySmoothing ||
+                       (et == FeatureEnergyType::Crease && ca != creaseAngle)) {
+                creaseAngle = ca;
                 ComputeEnergy(et, es);
             }
+            creaseAngle = ca;
             EnsureSurface();
             checkMesh();
             std::vector<std::unique_ptr<Snake>> nsn;
@@ -587,6 +620,7 @@ private:
     SeedPathCost seedCost = SeedPathCost::Length;
     FeatureEnergyType energyType = FeatureEnergyType::NormalVariation;
     int energySmoothing = 2;
+    double creaseAngle = CreaseEnergy<MeshType>::DefaultAngle();
     bool energyComputed = false;
     bool energyFromQuality = false;
     long revision = 0, savedRevision = 0;

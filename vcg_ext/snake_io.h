@@ -82,6 +82,8 @@ public:
         json j;
         j["closed"] = s.Closed();
         j["seeds"] = s.SeedVertices();
+        j["seed_points"] = json::array();
+        for (const auto &p : s.SeedPoints()) j["seed_points"].push_back(PointJson(m, p));
         j["initial"] = {{"samples", SamplesJson(m, s.InitialSamples())}, {"polyline", PolylineJson(m, s.InitialPolyline())}};
         j["samples"] = SamplesJson(m, s.Samples());
         j["polyline"] = PolylineJson(m, s.Polyline());

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <vcg_ext/crease_energy.h>
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/geometric_snake.h>
 #include <vcg_ext/seed_path.h>
@@ -272,24 +273,66 @@ public:
     static const std::vector<ParamChoice> &EnergyChoices()
     {
         static const std::vector<ParamChoice> c = {
-            {"normal", "Normal variation"}, {"curvature", "Curvature norm"}, {"quadric", "Quadric error"}};
+            {"normal", "Normal variation"}, {"curvature", "Curvature norm"}, {"quadric", "Quadric error"},
+            {"crease", "Crease distance (CAD)"}};
         return c;
+    }
+
+    static std::string EnergyTypeHelp()
+    {
+        return "How features are measured. <b>Normal variation</b> (paper, Eq. 6): how much the normals of the "
+               "faces around a vertex differ. <b>Curvature norm</b>: the norm of the principal curvatures. "
+               "<b>Quadric error</b>: the distance error of the vertex's face-plane quadric. These three live at "
+               "vertices and are normalised to [0,1], 0 = feature. <b>Crease distance (CAD)</b>, for CAD "
+               "tessellations (flat faces made of long slivers, every vertex on a crease): the sharp edges are "
+               "found from dihedral angles (<i>Crease angle</i>) and the energy at any surface point grows with "
+               "its distance d to the nearest crease of its face, 1 - exp(-(d/w)^2), with w = (1 + smoothing "
+               "steps) % of the bounding box diagonal; the vertex quality gets its values at the vertices.";
+    }
+    static ParamDef CreaseAngleDef()
+    {
+        return D::MakeReal("CreaseAngle", "crease-angle", "Crease angle", DefaultCreaseAngle(), 1,
+            179,
+            "For the crease energy: an edge whose two faces' normals differ by more than this angle (degrees) "
+            "is a crease. The default keeps the edges of blocks, bores and pockets and leaves out the facets "
+            "of cylinders tessellated with 16 or more segments.");
+    }
+    static ParamDef MergeDuplicatesDef()
+    {
+        return D::MakeBool("MergeDuplicateVertices", "merge-duplicates", "Merge duplicate vertices", false,
+            "If the mesh is a triangle soup (its faces do not share vertices, as in STL files), merge the "
+            "vertices at identical positions first (like Filters > Cleaning and Repairing > Merge Close "
+            "Vertices with distance 0; vertex indices change). Off: a soup is refused with a message.");
+    }
+    static ParamDef SeedPointsDef()
+    {
+        return D::MakeText("SeedPoints", "seed-points", "Seed points", "",
+            "Seeds as 3D points, used when <i>Seed vertices</i> is empty: <code>x y z; x y z; ...</code> (the "
+            "mesh's own coordinates). Each is moved to the closest point of the surface; the curve starts and "
+            "ends exactly there, inside a face if need be. Points farther from the surface than 10% of the "
+            "bounding box diagonal are refused.");
+    }
+    static ParamDef SeedFileDef()
+    {
+        return D::MakeText("SeedFile", "pp", "Seed file (.pp)", "",
+            "Seeds from a MeshLab <i>Pick Points</i> file (.pp, saved by Edit > PickPoints), in the file's "
+            "order, used when <i>Seed vertices</i> and <i>Seed points</i> are empty; points left unplaced "
+            "(inactive) are skipped. Snapped onto the surface like <i>Seed points</i>.");
     }
 
     /// Compute Geometric Snake Feature Energy / `geometric-snake energy`.
     static const std::vector<ParamDef> &FeatureEnergy()
     {
         static const std::vector<ParamDef> d = {
-            D::MakeEnum("EnergyType", "type", "Energy type", 0, EnergyChoices(),
-                "How features are measured at each vertex. <b>Normal variation</b> (paper): how much the "
-                "normals of the faces around the vertex differ. <b>Curvature norm</b>: the norm of the "
-                "principal curvatures. <b>Quadric error</b>: the distance error of the vertex's "
-                "face-plane quadric. In every case the result is normalised to [0,1], 0 = feature."),
+            D::MakeEnum("EnergyType", "type", "Energy type", 0, EnergyChoices(), EnergyTypeHelp()),
             D::MakeInt("SmoothingSteps", "smoothing", "Smoothing steps", DefaultSmoothingSteps(), 0,
                 MaxSmoothingSteps(),
                 "Number of Laplacian smoothing passes over the per-vertex energy before normalisation "
                 "(0 = none). A little smoothing removes noise and widens the basin of attraction of "
-                "features."),
+                "features. For the crease energy it widens the basin by distance: w = (1 + steps) % of the "
+                "bounding box diagonal."),
+            CreaseAngleDef(),
+            MergeDuplicatesDef(),
             D::MakeBool("Colorize", "colorize", "Colorize by energy", true,
                 "Also colour the vertices by the energy with MeshLab's quality colour ramp over [0,1] "
                 "(red = feature, blue = flat). Adds per-vertex colour to the mesh."),
@@ -305,6 +348,8 @@ public:
                 "Comma-separated 0-based vertex indices, in file order (the order of the vertices in the "
                 "loaded file), e.g. <code>0, 57, 112</code>. At least two; the path visits them in "
                 "this order."),
+            SeedPointsDef(),
+            SeedFileDef(),
             D::MakeBool("Closed", "closed", "Closed path", false,
                 "Also join the last seed back to the first one (a closed snake)."),
             D::MakeEnum("Cost", "cost", "Path cost", 0, {{"length", "Length"}, {"feature", "Feature"}},
@@ -312,6 +357,7 @@ public:
                 "vertex quality (the feature energy, expected in [0,1]) so the path prefers features; "
                 "if the mesh has no vertex quality, the normal-variation energy is computed first and "
                 "stored in the vertex quality."),
+            MergeDuplicatesDef(),
             D::MakeBool("NewLayer", "", "Add path as new layer", true,
                 "Also add the path as a new layer named \"Seed path\" made of its vertices and edges. "
                 "The current layer stays the input mesh."),
@@ -327,8 +373,14 @@ public:
             D::MakeText("Seeds", "seeds", "Seed vertices", "",
                 "Comma-separated 0-based vertex indices, in file order, near the feature to capture, in "
                 "the order the curve visits them (at least 2; 3 for a closed snake)."),
+            SeedPointsDef(),
+            SeedFileDef(),
             D::MakeBool("Closed", "closed", "Closed snake", false,
                 "Join the last seed back to the first: a closed curve."),
+            D::MakeEnum("EnergyType", "energy", "Energy type", 0, EnergyChoices(),
+                EnergyTypeHelp() + " Computed with 2 smoothing steps and stored in the vertex quality; "
+                "<i>Use vertex quality</i> overrides it."),
+            CreaseAngleDef(),
             D::MakeReal("Alpha", "alpha", "Alpha (tension)", p.alpha, 0, 1e4,
                 "Weight of the first-derivative (tension) term of the spline energy, Eq. 2. Scale-free "
                 "(positions are measured in mean edge lengths)."),
@@ -353,7 +405,8 @@ public:
                 "comparison."),
             D::MakeBool("UseQuality", "use-quality", "Use vertex quality", false,
                 "Take the feature energy from the current vertex quality (low = feature; any range, it "
-                "is normalized) instead of computing the normal-variation energy."),
+                "is normalized) instead of computing the energy of <i>Energy type</i>."),
+            MergeDuplicatesDef(),
             D::MakeText("OutputFile", "", "Output file", "",
                 "Where to write the final curve; the extension chooses the format: .json (samples, "
                 "initial and final curve, timings), .obj (l records) or .ply (edges). Empty: no file."),

@@ -49,6 +49,26 @@ struct SurfacePoint
                vcg::Point3d::Construct(f.cV(2)->cP()) * bary[2];
     }
 
+    /// The same point expressed in face `f`, which must hold every vertex the point depends
+    /// on (a point on an edge or at a vertex lies in several faces). False if it does not.
+    template <class MeshType>
+    bool InFace(const MeshType &m, int f, SurfacePoint &out) const
+    {
+        const auto &src = m.face[face];
+        const auto &dst = m.face[f];
+        vcg::Point3d b(0, 0, 0);
+        for (int k = 0; k < 3; ++k) {
+            if (!(bary[k] > 1e-12)) continue;
+            int j = 0;
+            while (j < 3 && dst.cV(j) != src.cV(k)) ++j;
+            if (j == 3) return false;
+            b[j] += bary[k];
+        }
+        out = SurfacePoint(f, b);
+        out.Normalize();
+        return true;
+    }
+
     /// Clamp tiny negative round-off and renormalize so the coordinates sum to 1.
     void Normalize()
     {

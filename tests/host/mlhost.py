@@ -27,9 +27,9 @@ FILTER_EXPORT = "Export Geometric Snake Curves"
 SELECTED = 0x0020  # vcg vertex BitFlags::SELECTED, saved as the PLY "flags" property
 
 # ---------------------------------------------------------------------------- .mlx
-STRINGS = {"Seeds", "OutputFile"}
+STRINGS = {"Seeds", "SeedPoints", "SeedFile", "OutputFile"}
 ENUMS = {
-    "EnergyType": ["Normal variation", "Curvature norm", "Quadric error"],
+    "EnergyType": ["Normal variation", "Curvature norm", "Quadric error", "Crease distance (CAD)"],
     "Cost": ["Length", "Feature"],
     "Method": ["Local embedding (paper)", "3D update + projection"],
     "Which": ["All snakes", "Selected snake"],
@@ -54,12 +54,25 @@ def param_xml(name, value):
     return '<Param type="RichString" name="%s" value=%s/>' % (name, quoteattr(str(value)))
 
 
+# Defaults of the parameters added after the first scripts were written: meshlabserver 2020.09
+# aborts on a script that omits any parameter of a filter, so write_mlx fills these in.
+DEFAULTS = {
+    FILTER_ENERGY: {"CreaseAngle": 30.0, "MergeDuplicateVertices": False},
+    FILTER_SEED_PATH: {"SeedPoints": "", "SeedFile": "", "MergeDuplicateVertices": False},
+    FILTER_SNAKE: {"SeedPoints": "", "SeedFile": "", "EnergyType": 0, "CreaseAngle": 30.0,
+                   "MergeDuplicateVertices": False},
+}
+
+
 def write_mlx(path, filters):
-    """filters: list of (filter name, {param: value})."""
+    """filters: list of (filter name, {param: value}); parameters not given get DEFAULTS."""
     lines = ["<!DOCTYPE FilterScript>", "<FilterScript>"]
     for name, params in filters:
         lines.append(" <filter name=%s>" % quoteattr(name))
-        for k, v in params.items():
+        full = dict(params)
+        for k, v in DEFAULTS.get(name, {}).items():
+            full.setdefault(k, v)
+        for k, v in full.items():
             lines.append("  " + param_xml(k, v))
         lines.append(" </filter>")
     lines.append("</FilterScript>")

@@ -1,0 +1,345 @@
+// CAD tessellations (issue 10): generated parts whose faces are fans and strips of slivers
+// with no interior vertex, seeds given as points a few units off an edge, and the crease
+// energy, which is defined at every surface point.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include <common/ml_mesh_type.h>
+
+#include "cad_meshes.h"
+#include "snake_test_util.h"
+#include "vcg_ext/crease_energy.h"
+#include "vcg_ext/feature_energy.h"
+#include "vcg_ext/geometric_snake.h"
+#include "vcg_ext/mesh_validation.h"
+#include "vcg_ext/seed_points.h"
+#include "vcg_ext/snake_controller.h"
+#include "vcg_ext/triangle_soup.h"
+
+namespace {
+
+using vcg::Point3d;
+using vcg::tri::FeatureEnergyType;
+using vcg::tri::SurfacePoint;
+typedef vcg::tri::CreaseEnergy<CMeshO> Crease;
+typedef gs_test::CadBlock B;
+
+SurfacePoint SnapOne(CMeshO &m, const Point3d &p)
+{
+    return vcg::tri::SeedPointSnap<CMeshO>::Snap(m, {p, p + Point3d(1e-3, 1e-3, 0)}, 1).points[0];
+}
+
+TEST(CadMeshes, BlockAndCylinderAreClosedManifoldWithoutInteriorVertices)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    auto r = vcg::tri::MeshValidation<CMeshO>::Inspect(m);
+    EXPECT_EQ(r.borderEdges, 0);
+    EXPECT_EQ(r.nonManifoldEdges, 0);
+    EXPECT_EQ(r.nonManifoldVertices, 0);
+    EXPECT_EQ(r.degenerateFaces, 0);
+    EXPECT_EQ(r.components, 1);
+    EXPECT_EQ(m.vn, 12 + 2 * 64 + 8);
+    // Volume by the divergence theorem: the faces are oriented outwards.
+    double vol = 0;
+    for (auto &f : m.face)
+        vol += (Point3d::Construct(f.cP(0)) * (Point3d::Construct(f.cP(1)) ^ Point3d::Construct(f.cP(2)))) / 6.0;
+    const double bore = 0.5 * 64 * B::BoreR * B::BoreR * std::sin(2 * M_PI / 64) * B::Z;
+    const double pocket = (B::PX1 - B::PX0) * (B::PY1 - B::PY0) * (B::Z - B::PocketFloor);
+    EXPECT_NEAR(vol, B::X * B::Y * B::Z - bore - pocket, 1e-6 * B::X * B::Y * B::Z);
+
+    CMeshO c;
+    gs_test::MakeCadCylinder(c, 48);
+    r = vcg::tri::MeshValidation<CMeshO>::Inspect(c);
+    EXPECT_EQ(r.borderEdges, 0);
+    EXPECT_EQ(r.nonManifoldEdges, 0);
+    EXPECT_EQ(c.vn, 96);
+    // Written to data/ for the host tests and the README (GS_WRITE_DATA=1).
+    if (std::getenv("GS_WRITE_DATA")) {
+        EXPECT_TRUE(gs_test::SaveMesh(m, GS_DATA_DIR "/cad_block.ply"));
+        EXPECT_TRUE(gs_test::SaveMesh(c, GS_DATA_DIR "/cad_cylinder.ply"));
+    }
+}
+
+TEST(CreaseEnergy, FindsTheCreasesAndHasAValleyAlongEachInsideSlivers)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    Crease ce;
+    const double w = 2.0;
+    ce.Build(m, Crease::DefaultAngle(), 3 * w);
+    // 12 block edges (4 of them split in two at x = SplitX) + 2 x 64 bore rims + 8 pocket rims + 4 pocket floor
+    EXPECT_EQ(ce.CreaseCount(), 12 + 4 + 2 * 64 + 4 + 4 + 4);
+    // On the top face, 1 unit from the front edge and far from anything else: E = 1 - e^-(1/w)^2,
+    // whichever sliver the point falls in.
+    for (double x : {5.0, 22.0, 40.0, 57.0}) {
+        SCOPED_TRACE(x);
+        SurfacePoint p = SnapOne(m, Point3d(x, 1.0, B::Z));
+        EXPECT_NEAR(ce.Distance(p), 1.0, 1e-5);
+        Point3d g = ce.Gradient(p, w);
+        EXPECT_GT(g[1], 0); // downhill is towards y = 0
+        EXPECT_NEAR(g[2], 0, 1e-9);
+    }
+    // Flat inside: the middle of the top face's left half, away from every crease.
+    SurfacePoint mid = SnapOne(m, Point3d(3 * w + 0.5 + 0, B::BoreY + B::BoreR + 3 * w + 1.0, B::Z));
+    EXPECT_NEAR(ce.Value(mid, w), 1.0, 1e-3);
+    // On the crease: zero.
+    SurfacePoint on = SnapOne(m, Point3d(20, 0, B::Z));
+    EXPECT_NEAR(ce.Value(on, w), 0.0, 1e-9);
+    // The pocket's floor: its nearest creases are its own rim (8 away), not the walls' tops.
+    SurfacePoint floor = SnapOne(m, Point3d(44, 20, B::PocketFloor));
+    EXPECT_NEAR(ce.Distance(floor), 8.0, 1e-6); // to the floor's edges at y = 12 / 28 ... x = 36 / 52
+}
+
+TEST(CreaseEnergy, ThresholdDecidesWhatIsACrease)
+{
+    CMeshO c;
+    gs_test::MakeCadCylinder(c, 48); // facets meet at 7.5 degrees, rims at 90
+    Crease ce;
+    ce.Build(c, 30, 6);
+    EXPECT_EQ(ce.CreaseCount(), 2 * 48);
+    ce.Build(c, 5, 6);
+    EXPECT_EQ(ce.CreaseCount(), 2 * 48 + 48);
+    EXPECT_THROW(ce.Build(c, 0, 6), vcg::tri::SnakeError);
+    EXPECT_THROW(ce.Build(c, 200, 6), vcg::tri::SnakeError);
+}
+
+TEST(CreaseEnergy, FeatureEnergyStoresVertexValues)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 32);
+    auto st = vcg::tri::FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::Crease, 2);
+    EXPECT_EQ(st.creases, 12 + 4 + 2 * 32 + 12);
+    for (auto &v : m.vert) EXPECT_NEAR(v.cQ(), 0.0, 1e-6); // every vertex of a CAD part is on a crease
+    CMeshO g;
+    gs_test::MakeFlatGrid(g, 10);
+    vcg::tri::FeatureEnergy<CMeshO>::Compute(g, FeatureEnergyType::Crease, 2);
+    for (auto &v : g.vert) EXPECT_EQ(v.cQ(), 1.0f); // no crease at all: flat everywhere
+}
+
+// ------------------------------------------------------------------ triangle soups
+
+TEST(TriangleSoup, DetectedAndMergedOnlyOnRequest)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 32);
+    const int vn = m.vn, fn = m.fn;
+    typedef vcg::tri::TriangleSoup<CMeshO> Soup;
+    EXPECT_FALSE(Soup::Inspect(m).soup);
+    EXPECT_EQ(Soup::Inspect(m).duplicates, 0);
+    // The same part as an STL file stores it: three vertices of its own per face.
+    std::vector<Point3d> pts;
+    std::vector<std::array<int, 3>> tris;
+    for (auto &f : m.face) {
+        std::array<int, 3> t;
+        for (int k = 0; k < 3; ++k) {
+            t[k] = int(pts.size());
+            pts.push_back(Point3d::Construct(f.cP(k)));
+        }
+        tris.push_back(t);
+    }
+    CMeshO soup;
+    gs_test::MakeFromArrays(soup, pts, tris);
+    auto r = Soup::Inspect(soup);
+    EXPECT_TRUE(r.soup);
+    EXPECT_EQ(r.vertices, 3 * fn);
+    EXPECT_EQ(r.duplicates, 3 * fn - vn);
+    EXPECT_NE(Soup::Message(r).find("Merge Close Vertices"), std::string::npos);
+    EXPECT_EQ(Soup::Merge(soup), 3 * fn - vn);
+    EXPECT_EQ(soup.vn, vn);
+    EXPECT_EQ(soup.fn, fn);
+    auto rep = vcg::tri::MeshValidation<CMeshO>::Inspect(soup);
+    EXPECT_EQ(rep.borderEdges, 0);
+    EXPECT_EQ(rep.components, 1);
+    // A few duplicates (a seam) are not a soup.
+    CMeshO seam;
+    gs_test::MakeFlatGrid(seam, 10);
+    seam.vert[0].P() = seam.vert[1].P();
+    EXPECT_FALSE(Soup::Inspect(seam).soup);
+}
+
+// ------------------------------------------------------------------ seeds as surface points
+
+TEST(SeedPathFromPoints, StartsAndEndsExactlyAtTheSeedsThroughSharedFaces)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    gs_test::EnableSnakeAdjacency(m);
+    const std::vector<Point3d> q{{6, 3, B::Z}, {30, 2.5, B::Z}, {54, 3, B::Z}};
+    auto snap = vcg::tri::SeedPointSnap<CMeshO>::Snap(m, q, 2);
+    for (bool closed : {false, true}) {
+        SCOPED_TRACE(closed);
+        auto r = vcg::tri::SeedPath<CMeshO>::ComputeFromPoints(m, snap.points, closed);
+        ASSERT_EQ(r.seedPositions.size(), 3u);
+        for (int i = 0; i < 3; ++i) EXPECT_LT((r.points[r.seedPositions[i]].Pd(m) - q[i]).Norm(), 1e-5);
+        EXPECT_EQ(r.seedPositions[0], 0);
+        if (!closed) EXPECT_EQ(r.seedPositions[2], int(r.points.size()) - 1);
+        double straight = (q[1] - q[0]).Norm() + (q[2] - q[1]).Norm() + (closed ? (q[0] - q[2]).Norm() : 0.0);
+        EXPECT_GE(r.length, straight - 1e-6);
+        // the snake built on it starts and ends exactly at the seed points
+        auto surf = std::make_shared<vcg::tri::SnakeSurface<CMeshO>>(m);
+        vcg::tri::GeometricSnake<CMeshO> s(surf);
+        s.InitFromSeedPoints(snap.points, closed);
+        ASSERT_EQ(s.SeedPoints().size(), 3u);
+        EXPECT_LT((s.Samples().front().p.Pd(m) - q[0]).Norm(), 1e-5);
+        if (!closed) EXPECT_LT((s.Samples().back().p.Pd(m) - q[2]).Norm(), 1e-5);
+        // every sample lies on the initial path (consecutive path points share a face)
+        std::vector<Point3d> pl;
+        for (auto &p : r.points) pl.push_back(p.Pd(m));
+        for (auto &smp : s.Samples()) EXPECT_LT(gs_test::DistToPolyline(smp.p.Pd(m), pl, closed), 1e-5);
+    }
+    // two seeds in one face are joined straight
+    auto one = vcg::tri::SeedPointSnap<CMeshO>::Snap(m, {{20, 1, B::Z}, {20.5, 1.2, B::Z}}, 2);
+    if (one.points[0].face == one.points[1].face) {
+        auto r = vcg::tri::SeedPath<CMeshO>::ComputeFromPoints(m, one.points, false);
+        EXPECT_EQ(r.points.size(), 2u);
+        EXPECT_TRUE(r.vertices.empty());
+    }
+}
+
+// ------------------------------------------------------------------ capture on CAD parts
+
+struct CadCapture
+{
+    double p95 = 0, coverage = 0, tol = 0;
+    int operations = 0;
+    bool converged = false;
+};
+
+/// Runs a snake from seed points with the given energy and measures it against the exact
+/// feature: p95 of the curve's distance to it, and the fraction of the seeded span that the
+/// curve covers within tolerance (`param` maps a point to its position along the feature,
+/// in [0, spanLength); `spanFrom`..`spanTo` is the seeded span, closed = the whole feature).
+template <class Dist, class Param>
+CadCapture Capture(CMeshO &m, FeatureEnergyType type, const std::vector<Point3d> &seeds, bool closed, double tol,
+                   Dist dist, Param param, double spanFrom, double spanTo)
+{
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::SnakeController<CMeshO> ctl(m);
+    ctl.SetEnergySettings(type, 2);
+    auto snap = vcg::tri::SeedPointSnap<CMeshO>::Snap(m, seeds, closed ? 3 : 2, closed);
+    ctl.CreateSnakeFromSeedPoints(snap.points, closed);
+    auto &s = ctl.Get(0);
+    s.Run(600);
+    CadCapture c;
+    c.tol = tol;
+    c.operations = s.Stats().operations;
+    c.converged = s.Converged();
+    std::vector<Point3d> pl = s.PolylinePositions();
+    std::vector<double> d;
+    for (auto &p : pl) d.push_back(dist(p));
+    std::vector<double> sd = d;
+    std::sort(sd.begin(), sd.end());
+    c.p95 = sd[std::min(sd.size() - 1, size_t(0.95 * (sd.size() - 1) + 0.5))];
+    // coverage: bins of the span hit by a polyline piece whose both ends are within tol
+    const int bins = 400;
+    std::vector<char> hit(bins, 0);
+    const double len = spanTo - spanFrom;
+    const size_t n = pl.size();
+    for (size_t i = 0; i + (closed ? 0 : 1) < n; ++i) {
+        const size_t j = (i + 1) % n;
+        if (d[i] > tol || d[j] > tol) continue;
+        double a = param(pl[i]) - spanFrom, b = param(pl[j]) - spanFrom;
+        if (closed && std::abs(b - a) > len / 2) (a < b ? a : b) += len; // wraps around
+        if (a > b) std::swap(a, b);
+        for (int k = 0; k < bins; ++k) {
+            double x = (k + 0.5) * len / bins;
+            if ((x >= a && x <= b) || (closed && x + len >= a && x + len <= b)) hit[k] = 1;
+        }
+    }
+    c.coverage = std::count(hit.begin(), hit.end(), 1) / double(bins);
+    return c;
+}
+
+const char *Name(FeatureEnergyType t) { return vcg::tri::FeatureEnergyName(t); }
+
+void Report(const char *what, FeatureEnergyType t, const CadCapture &c)
+{
+    std::printf("[cad] %-40s %-17s p95 %.4f (tol %.3f)  coverage %5.1f%%  ops %d%s\n", what, Name(t), c.p95, c.tol,
+                100 * c.coverage, c.operations, c.converged ? "" : " (not converged)");
+}
+
+/// Every case runs with the crease energy (asserted) and with normal variation (reported,
+/// for docs/evaluation.md: on these parts it has no valley along the creases).
+class CadCaptureTest : public ::testing::TestWithParam<FeatureEnergyType> {};
+
+TEST_P(CadCaptureTest, OpenSnakeOnTopFaceCapturesTheFrontEdge)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    const std::vector<Point3d> seeds{{6, 3, B::Z}, {20, 2, B::Z}, {35, 4, B::Z}, {54, 3, B::Z}};
+    auto c = Capture(m, GetParam(), seeds, false, 0.01 * B::X, gs_test::DistToBlockTopFrontEdge,
+                     [](const Point3d &p) { return p[0]; }, 6, 54);
+    Report("open, top face, 2-4 off the front edge", GetParam(), c);
+    if (GetParam() != FeatureEnergyType::Crease) return;
+    EXPECT_LE(c.p95, c.tol);
+    EXPECT_GE(c.coverage, 0.95);
+}
+
+TEST_P(CadCaptureTest, OpenSnakeOnFrontFaceCapturesTheTopEdge)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    const std::vector<Point3d> seeds{{8, 0, B::Z - 3}, {30, 0, B::Z - 3.5}, {52, 0, B::Z - 2.5}};
+    auto c = Capture(m, GetParam(), seeds, false, 0.01 * B::X, gs_test::DistToBlockTopFrontEdge,
+                     [](const Point3d &p) { return p[0]; }, 8, 52);
+    Report("open, front face, 2.5-3.5 below the edge", GetParam(), c);
+    if (GetParam() != FeatureEnergyType::Crease) return;
+    EXPECT_LE(c.p95, c.tol);
+    EXPECT_GE(c.coverage, 0.95);
+}
+
+TEST_P(CadCaptureTest, ClosedSnakeCapturesTheBoreRim)
+{
+    CMeshO m;
+    const int n = 64;
+    gs_test::MakeCadBlock(m, n);
+    std::vector<Point3d> seeds;
+    for (int i = 0; i < 4; ++i) {
+        const double a = 2 * M_PI * i / 4 + 0.3, r = B::BoreR + 2 + i % 2 * 1.5; // 2 - 3.5 off the rim
+        seeds.push_back(Point3d(B::BoreX + r * std::cos(a), B::BoreY + r * std::sin(a), B::Z));
+    }
+    const auto rim = gs_test::CirclePolygon(B::BoreX, B::BoreY, B::BoreR, B::Z, n);
+    const double rimLength = 2 * n * B::BoreR * std::sin(M_PI / n);
+    const double sliver = 2 * M_PI * B::BoreR / n; // the bore's strips
+    auto c = Capture(m, GetParam(), seeds, true, std::max(0.1 * sliver, 0.01 * rimLength),
+                     [&](const Point3d &p) { return gs_test::DistToClosedPolygon(p, rim); },
+                     [&](const Point3d &p) { return std::atan2(p[1] - B::BoreY, p[0] - B::BoreX) + M_PI; }, 0, 2 * M_PI);
+    Report("closed, top face, 2-3.5 off the bore rim", GetParam(), c);
+    if (GetParam() != FeatureEnergyType::Crease) return;
+    EXPECT_LE(c.p95, c.tol);
+    EXPECT_GE(c.coverage, 0.95);
+}
+
+TEST_P(CadCaptureTest, ClosedSnakeOnStripsCapturesTheCylinderRim)
+{
+    CMeshO m;
+    const int n = 48;
+    const double r = 10, h = 40;
+    gs_test::MakeCadCylinder(m, n, r, h);
+    std::vector<Point3d> seeds;
+    for (int i = 0; i < 5; ++i) {
+        const double a = 2 * M_PI * i / 5 + 0.1;
+        seeds.push_back(Point3d(r * std::cos(a), r * std::sin(a), h - 2 - (i % 3)));
+    }
+    const auto rim = gs_test::CirclePolygon(0, 0, r, h, n);
+    const double rimLength = 2 * n * r * std::sin(M_PI / n);
+    auto c = Capture(m, GetParam(), seeds, true, std::max(0.1 * 2 * M_PI * r / n, 0.01 * rimLength),
+                     [&](const Point3d &p) { return gs_test::DistToClosedPolygon(p, rim); },
+                     [&](const Point3d &p) { return std::atan2(p[1], p[0]) + M_PI; }, 0, 2 * M_PI);
+    Report("closed, side strips, 2-4 below the top rim", GetParam(), c);
+    if (GetParam() != FeatureEnergyType::Crease) return;
+    EXPECT_LE(c.p95, c.tol);
+    EXPECT_GE(c.coverage, 0.95);
+}
+
+INSTANTIATE_TEST_SUITE_P(Energies, CadCaptureTest,
+                         ::testing::Values(FeatureEnergyType::NormalVariation),
+                         [](const ::testing::TestParamInfo<FeatureEnergyType> &i) {
+                             return i.param == FeatureEnergyType::Crease ? std::string("Crease") : std::string("NormalVariation");
+                         });
+
+} // namespace
