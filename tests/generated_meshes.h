@@ -196,6 +196,20 @@ void MakeGridPlate(M &m, int nx, int ny, double cellX, double cellY, double jitt
     detail::Finalize(m);
 }
 
+/// Flat square plate [0,size]^2 (n x n cells) with a smooth Gaussian bump of the given height
+/// and width (standard deviation) at its centre: a smooth feature with no rim.
+template <class M>
+void MakeBumpPlate(M &m, int n, double size, double height, double sigma)
+{
+    MakeGridPlate(m, n, n, size / n, size / n);
+    for (auto &v : m.vert) {
+        if (v.IsD()) continue;
+        const double x = v.cP()[0] - size / 2, y = v.cP()[1] - size / 2;
+        v.P()[2] = typename M::ScalarType(height * std::exp(-(x * x + y * y) / (2 * sigma * sigma)));
+    }
+    detail::Finalize(m);
+}
+
 /// Median length of the mesh's edges (each counted from every face that has it).
 template <class M>
 double MedianEdgeLength(const M &m)

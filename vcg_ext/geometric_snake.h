@@ -82,7 +82,7 @@ public:
         // set of parameters fits meshes whose edge lengths vary by 10-100x.
         std::vector<double> pathEdges;
         for (size_t i = 1; i < pv.size(); ++i) pathEdges.push_back(cum[i] - cum[i - 1]);
-        const double unit = surf->MeanEdge(); // TODO(h9): medianPositive(pathEdges)
+        const double unit = medianPositive(pathEdges);
         double d = st.params.spacing * unit;
         if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
@@ -219,7 +219,7 @@ public:
                 for (int k = 0; k < 3; ++k)
                     l.push_back(vcg::Distance(vcg::Point3d::Construct(m.face[s.p.face].cP(k)),
                                               vcg::Point3d::Construct(m.face[s.p.face].cP((k + 1) % 3))));
-            lengthScale = surf->MeanEdge(); // TODO(h9): medianPositive(l)
+            lengthScale = medianPositive(l);
         }
         pushUndo();
         st.samples = samples;
@@ -516,9 +516,9 @@ private:
     }
 
     /// A closed snake that shrinks where no feature holds it would end as a point and report
-    /// convergence: stop it instead and say so. Collapsing: it lost three quarters of its
-    /// length since the run started, is still shrinking and its samples are not on a feature
-    /// (mean energy above 0.5), or it is less than 2 length units long.
+    /// convergence: stop it instead and say so. Collapsing: still shrinking (or settled) after
+    /// losing three quarters of its length since the run started, or less than 2 length units
+    /// long. Its samples then sit on top of each other, whatever the energy there.
     void checkCollapse(const std::vector<vcg::Point3d> &pos)
     {
         if (!st.closed || pos.size() < 3) return;
@@ -530,7 +530,7 @@ private:
         for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
         e /= double(st.samples.size());
         bool tiny = L < 2 * st.unit;
-        if (!(tiny || (shrinking && L < 0.25 * runLength && e > 0.5))) return;
+        if (!(tiny || ((shrinking || stats.converged) && L < 0.25 * runLength))) return;
         stats.stopped = true;
         stats.converged = false;
         char msg[300];

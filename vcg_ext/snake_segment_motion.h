@@ -13,6 +13,7 @@
 
 #include <Eigen/Dense>
 
+#include <vcg_ext/conformal_param.h>
 #include <vcg_ext/face_path.h>
 #include <vcg_ext/local_region.h>
 #include <vcg_ext/region_walk.h>
@@ -40,6 +41,8 @@ public:
     typedef SnakeSurface<MeshType> Surface;
 
     explicit SnakeSegmentMotion(std::shared_ptr<Surface> s) : surf(std::move(s)) {}
+
+    int conformalFallbacks = 0; ///< embeddings that fell back to the virtual boundary
 
     /// Forget the factored spline systems (parameters or samples changed).
     void ClearCache() { splines.clear(); }
@@ -72,8 +75,7 @@ public:
         // ... plus their vertex neighbours, holes filled (LocalRegion), then Sec. 5.3.
         VirtualBoundaryParam::Result emb;
         bool ok = region.Build(*surf, core);
-        if (ok) ok = VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, unit,
-                                                 st.params.virtualLayers, emb);
+        if (ok) ok = embed(st.params, unit, emb);
         if (!ok) {
             if (k >= 8 && depth < 6) { // split the segment (Sec. 5.1) and try the halves
                 SnakeSegment a, b;
@@ -164,8 +166,8 @@ public:
                         Eigen::Vector2d t = (X.row(j == 0 ? 1 : k - 2) - X.row(j)).transpose();
                         if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
                     }
-                    double cap = st.params.maxStep * st.samples[seg.idx[j]].trust * localEdge(emb, lf[j]);
                     double len = d.norm();
+                    double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(emb, lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
                     if (len == 0) continue;
                     RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
@@ -263,7 +265,8 @@ public:
                     Eigen::Vector3d t = (X.row(i == 0 ? 1 : n - 2) - X.row(i)).transpose();
                     if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
                 }
-                double len = d.norm(), cap = st.params.maxStep * st.samples[i].trust * faceEdge(st.samples[i].p.face) / h;
+                double len = d.norm();
+                double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
                 if (len > cap) d *= cap / len;
                 Eigen::Vector3d q = X.row(i).transpose() + d;
                 vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
@@ -293,11 +296,28 @@ private:
     {
         return toPlane(emb, region.tri[t], b);
     }
-    double localEdge(const VirtualBoundaryParam::Result &emb, int t) const
+    /// The width of embedded triangle t in direction d (unit vector): a step cap from the
+    /// local triangle size where the sample goes, so that on long thin triangles a move across
+    /// them is capped by their short side, not by their mean edge.
+    double widthAlong(const VirtualBoundaryParam::Result &emb, int t, const Eigen::Vector2d &d) const
     {
         const auto &T = region.tri[t];
-        return ((emb.uv[T[1]] - emb.uv[T[0]]).norm() + (emb.uv[T[2]] - emb.uv[T[1]]).norm() +
-                (emb.uv[T[0]] - emb.uv[T[2]]).norm()) / 3.0;
+        double a = emb.uv[T[0]].dot(d), b = emb.uv[T[1]].dot(d), c = emb.uv[T[2]].dot(d);
+        return std::max({a, b, c}) - std::min({a, b, c});
+    }
+
+    /// The local embedding (Sec. 5.3): least-squares conformal first, which embeds developable
+    /// regions exactly; if it flips a triangle, the paper's convex combination with a virtual
+    /// boundary, which is injective whatever the geometry.
+    bool embed(const SnakeParams &params, double unit, VirtualBoundaryParam::Result &emb)
+    {
+        emb = VirtualBoundaryParam::Result();
+        std::string err;
+        if (ConformalParam::Embed(region.pos, region.tri, region.boundary, unit, emb.uv, err) &&
+            VirtualBoundaryParam::CountFlipped(emb.uv, region.tri) == 0)
+            return true;
+        ++conformalFallbacks;
+        return VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, unit, params.virtualLayers, emb);
     }
 
     SnakeSpline &splineFor(const SnakeParams &params, int k, bool closed, const std::vector<bool> &fixed)
@@ -309,12 +329,13 @@ private:
         return s;
     }
 
-    double faceEdge(int f) const
+    /// Width of mesh face f in direction d (unit vector, in space): the step cap's size.
+    double faceWidth(int f, const Eigen::Vector3d &d) const
     {
-        const FaceType &ff = surf->Mesh().face[f]; // in double: a float square over- or underflows at 1e30 / 1e-30
-        const vcg::Point3d p0 = vcg::Point3d::Construct(ff.cP(0)), p1 = vcg::Point3d::Construct(ff.cP(1)),
-                           p2 = vcg::Point3d::Construct(ff.cP(2));
-        return (vcg::Distance(p0, p1) + vcg::Distance(p1, p2) + vcg::Distance(p2, p0)) / 3.0;
+        const FaceType &ff = surf->Mesh().face[f];
+        double a[3];
+        for (int k = 0; k < 3; ++k) a[k] = d[0] * ff.cP(k)[0] + d[1] * ff.cP(k)[1] + d[2] * ff.cP(k)[2];
+        return std::max({a[0], a[1], a[2]}) - std::min({a[0], a[1], a[2]});
     }
 
     typedef std::chrono::steady_clock clock;
