@@ -40,7 +40,9 @@
 #include <vcg_ext/seed_path.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_io.h>
+#include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_param_defs.h>
+#include <vcg_ext/triangle_soup.h>
 
 using nlohmann::json;
 using namespace vcg::tri;
@@ -75,12 +77,13 @@ const std::vector<Command> &Commands()
          "Computes the feature energy (0 on features, 1 on flat regions) into the vertex quality and writes the "
          "mesh with it (filter \"Compute Geometric Snake Feature Energy\")."},
         {"snake", &SnakeParamDefs::Snake(), {"json", "obj", "ply"}, false,
-         "Runs a geometric snake from seed vertices onto the nearby feature and writes the curve: .json (the "
-         "JSON contract: samples, initial and final curve, stats), .obj (l records) or .ply (edges) (filter "
-         "\"Geometric Snake from Seed Vertices\")."},
+         "Runs a geometric snake from seeds (vertex indices, 3D points or a MeshLab Pick Points file) onto the "
+         "nearby feature and writes the curve: .json (the JSON contract: samples, initial and final curve, "
+         "stats), .obj (l records) or .ply (edges) (filter \"Geometric Snake from Seed Vertices\")."},
         {"path", &SnakeParamDefs::SeedPath(), {"ply", "obj", "json"}, true,
-         "Joins the seed vertices by shortest paths along mesh edges (the snake's initial curve) and writes "
-         "the path as vertices and edges (filter \"Geometric Snake Seed Path\")."},
+         "Joins the seeds (vertex indices, 3D points or a Pick Points file) by shortest paths along mesh edges "
+         "(the snake's initial curve) and writes the path as vertices and edges (filter \"Geometric Snake Seed "
+         "Path\")."},
     };
     return c;
 }
@@ -302,15 +305,54 @@ std::string Fmt(const char *f, ...)
 }
 
 /// The seed checks of the filters (after compaction, which a freshly read mesh never needs).
-std::vector<int> Seeds(const ParamValues &v, const CMeshO &m)
+void CheckSeeds(const std::vector<int> &seeds, const CMeshO &m)
 {
-    const std::vector<int> seeds = SeedPath<CMeshO>::ParseSeeds(v.Text("Seeds"));
-    if (seeds.empty()) throw SnakeError("No seeds: give --seeds \"i, j, ...\" (0-based vertex indices).");
     for (int s : seeds)
         if (s < 0 || s >= m.vn)
             throw SnakeError("Seed vertex " + std::to_string(s) + " does not exist: the mesh has " +
                              std::to_string(m.vn) + " vertices (valid indices 0.." + std::to_string(m.vn - 1) + ").");
-    return seeds;
+}
+
+/// Seeds as points (--seed-points, else the --pp file) when there are no seed vertices, as the
+/// filters' seedPointsWanted. `source` names where they came from.
+std::vector<vcg::Point3d> SeedPointsWanted(const Job &job, const std::vector<int> &seeds, std::string &source)
+{
+    const ParamValues &v = *job.values;
+    if (!seeds.empty()) {
+        if (v.Text("SeedPoints").find_first_not_of(" \t\r\n") != std::string::npos ||
+            v.Text("SeedFile").find_first_not_of(" \t\r\n") != std::string::npos)
+            Info(job, "warning: seed vertices are given (--seeds), so --seed-points and --pp are ignored.");
+        return {};
+    }
+    std::vector<vcg::Point3d> pts = SeedPointsParser::FromTextOrFile(v.Text("SeedPoints"), v.Text("SeedFile"), source);
+    if (pts.empty())
+        throw SnakeError("No seeds given: give --seeds \"i, j, ...\" (0-based vertex indices), --seed-points "
+                         "\"x y z; x y z; ...\" or --pp FILE.pp (a MeshLab Pick Points file).");
+    return pts;
+}
+
+/// Seed points moved onto the surface, said as the filters' Log says it.
+SeedPointSnap<CMeshO>::Result Snap(const Job &job, CMeshO &m, const std::vector<vcg::Point3d> &pts, bool closed,
+                                   const std::string &source)
+{
+    const auto snap = SeedPointSnap<CMeshO>::Snap(m, pts, closed ? 3 : 2, closed);
+    double worst = 0;
+    for (double d : snap.distances) worst = std::max(worst, d);
+    Info(job, Fmt("%d seed points from %s, moved onto the surface by at most %g (%.2g%% of the bounding box "
+                  "diagonal).", int(snap.points.size()), source.c_str(), worst,
+                  100.0 * worst / std::max(snap.bboxDiagonal, 1e-300)));
+    return snap;
+}
+
+/// A triangle soup is refused, or merged with --merge-duplicates (the filters' handleSoup).
+void HandleSoup(const Job &job, CMeshO &m)
+{
+    const int vn = m.vn;
+    const int merged = TriangleSoup<CMeshO>::Handle(m, job.values->Bool("MergeDuplicateVertices"));
+    if (merged < 0) return;
+    UpdateBounding<CMeshO>::Box(m);
+    Info(job, Fmt("The mesh was a triangle soup: merged %d duplicate vertices (%d -> %d vertices, %d faces); vertex "
+                  "indices now refer to the merged mesh.", merged, vn, m.vn, m.fn));
 }
 
 json RunEnergy(Job &job, CMeshO &m, int mask, json r)
@@ -318,8 +360,10 @@ json RunEnergy(Job &job, CMeshO &m, int mask, json r)
     const ParamValues &v = *job.values;
     const int type = v.Enum("EnergyType"), steps = v.Int("SmoothingSteps");
     const bool colorize = v.Bool("Colorize");
+    const double creaseAngle = v.Real("CreaseAngle");
     MeshValidation<CMeshO>::RequireSurface(m);
-    const auto st = FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType(type), steps);
+    HandleSoup(job, m);
+    const auto st = FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType(type), steps, creaseAngle);
     if (colorize) UpdateColor<CMeshO>::PerVertexQualityRamp(m, 0.0f, 1.0f);
     namespace io = vcg::tri::io;
     const int keep = io::Mask::IOM_VERTCOLOR | io::Mask::IOM_FACECOLOR | io::Mask::IOM_VERTTEXCOORD |
@@ -332,9 +376,12 @@ json RunEnergy(Job &job, CMeshO &m, int mask, json r)
     r["seconds_energy"] = st.seconds;
     r["non_manifold_vertices"] = st.nonManifoldVertices;
     r["degenerate_faces"] = st.degenerateFaces;
+    if (type == int(FeatureEnergyType::Crease)) r["creases"] = st.creases;
     Info(job, Fmt("Feature energy (%s, %d smoothing steps) on %d vertices: raw range [%g, %g], %.2f ms. Wrote %s.",
                   SnakeParamDefs::EnergyChoices()[type].label.c_str(), steps, m.vn, double(st.rawMin),
                   double(st.rawMax), st.seconds * 1e3, job.output.c_str()));
+    if (type == int(FeatureEnergyType::Crease))
+        Info(job, Fmt("Crease energy: %d sharp edges (dihedral angle above %g degrees).", st.creases, creaseAngle));
     if (st.nonManifoldVertices > 0 || st.degenerateFaces > 0)
         Info(job, Fmt("warning: %d non-manifold vertices, %d degenerate faces (handled, but the energy may be "
                       "unreliable there).", st.nonManifoldVertices, st.degenerateFaces));
@@ -346,17 +393,34 @@ json RunPath(Job &job, CMeshO &m, int mask, json r)
     const ParamValues &v = *job.values;
     const bool closed = v.Bool("Closed");
     const int cost = v.Enum("Cost");
-    SeedPath<CMeshO>::ParseSeeds(v.Text("Seeds")); // as the filter: a bad list is reported first
+    const std::vector<int> seeds = SeedPath<CMeshO>::ParseSeeds(v.Text("Seeds"));
+    std::string source;
+    const std::vector<vcg::Point3d> seedPts = SeedPointsWanted(job, seeds, source);
     MeshValidation<CMeshO>::RequireSurface(m);
-    const std::vector<int> seeds = Seeds(v, m);
+    HandleSoup(job, m);
+    CheckSeeds(seeds, m);
     if (cost == int(SeedPathCost::Feature) && !(mask & vcg::tri::io::Mask::IOM_VERTQUALITY)) {
         FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, SnakeParamDefs::DefaultSmoothingSteps());
         Info(job, "The mesh has no vertex quality: computed the normal-variation feature energy for the feature cost.");
     }
-    const auto path = SeedPath<CMeshO>::Compute(m, seeds, closed, SeedPathCost(cost));
-    if (path.vertices.empty()) throw SnakeError("No path was found between the seeds.");
+    // Through seed vertices, or from surface point to surface point (starting and ending at the seeds).
+    typename SeedPath<CMeshO>::PointResult path;
+    if (seedPts.empty()) {
+        const auto vp = SeedPath<CMeshO>::Compute(m, seeds, closed, SeedPathCost(cost));
+        path.vertices = vp.vertices;
+        path.closed = vp.closed;
+        path.length = vp.length;
+    } else {
+        path = SeedPath<CMeshO>::ComputeFromPoints(m, Snap(job, m, seedPts, closed, source).points, closed,
+                                                   SeedPathCost(cost));
+    }
     std::vector<vcg::Point3d> pts;
-    for (int vi : path.vertices) pts.push_back(vcg::Point3d::Construct(m.vert[vi].cP()));
+    if (seedPts.empty())
+        for (int vi : path.vertices) pts.push_back(vcg::Point3d::Construct(m.vert[vi].cP()));
+    else
+        for (const auto &sp : path.points) pts.push_back(sp.Pd(m));
+    if (pts.empty()) throw SnakeError("No path was found between the seeds.");
+    const size_t nSeeds = seedPts.empty() ? seeds.size() : seedPts.size();
     if (Extension(job.output) == "json") {
         json j = {{"closed", path.closed}, {"seeds", seeds}, {"vertices", path.vertices}, {"length", path.length}};
         json pl = json::array();
@@ -375,8 +439,9 @@ json RunPath(Job &job, CMeshO &m, int mask, json r)
     r["cost"] = v.Def("Cost").choices[cost].key;
     r["path_vertices"] = path.vertices.size();
     r["length"] = path.length;
-    Info(job, Fmt("Seed path (%s, %s cost) through %d seeds: %d vertices, length %g. Wrote %s.",
-                  closed ? "closed" : "open", cost == 0 ? "length" : "feature", int(seeds.size()),
+    r["path_points"] = pts.size();
+    Info(job, Fmt("Seed path (%s, %s cost) through %d seeds: %d points, %d vertices, length %g. Wrote %s.",
+                  closed ? "closed" : "open", cost == 0 ? "length" : "feature", int(nSeeds), int(pts.size()),
                   int(path.vertices.size()), path.length, job.output.c_str()));
     return r;
 }
@@ -385,14 +450,18 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
 {
     typedef SnakeController<CMeshO> Controller;
     const ParamValues &v = *job.values;
-    SeedPath<CMeshO>::ParseSeeds(v.Text("Seeds")); // as the filter: a bad list is reported first
+    const std::vector<int> seeds = SeedPath<CMeshO>::ParseSeeds(v.Text("Seeds")); // as the filter: first
     const bool closed = v.Bool("Closed");
     const SnakeParams p = SnakeParamDefs::ToSnakeParams(v);
     const int maxOps = v.Int("MaxOperations");
     const bool useQuality = v.Bool("UseQuality");
+    const int energyType = v.Enum("EnergyType");
+    std::string source;
+    const std::vector<vcg::Point3d> seedPts = SeedPointsWanted(job, seeds, source);
 
     MeshValidation<CMeshO>::RequireSurface(m);
-    const std::vector<int> seeds = Seeds(v, m);
+    HandleSoup(job, m);
+    CheckSeeds(seeds, m);
     if (useQuality && !(mask & vcg::tri::io::Mask::IOM_VERTQUALITY))
         throw SnakeError("--use-quality is on, but the mesh has no vertex quality. Compute one first (e.g. "
                          "geometric-snake energy), or leave --use-quality off.");
@@ -406,10 +475,19 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
 
     const auto t0 = Clock::now();
     Controller ctl(m);
-    if (useQuality) ctl.UseQualityAsEnergy();
+    if (useQuality) {
+        ctl.UseQualityAsEnergy();
+    } else {
+        ctl.SetCreaseAngle(v.Real("CreaseAngle"));
+        ctl.SetEnergySettings(FeatureEnergyType(energyType), SnakeParamDefs::DefaultSmoothingSteps());
+    }
     ctl.SetParams(p);
-    ctl.SetSeeds(seeds);
-    ctl.CloseSeeds(closed);
+    if (seedPts.empty()) {
+        ctl.SetSeeds(seeds);
+        ctl.CloseSeeds(closed);
+    } else {
+        ctl.CreateSnakeFromSeedPoints(Snap(job, m, seedPts, closed, source).points, closed);
+    }
     json warnings = json::array();
     for (const auto &w : ctl.EnsureSurface().Warnings()) warnings.push_back(w);
     GeometricSnake<CMeshO> &snake = ctl.Get(0);
@@ -440,6 +518,7 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
 
     r["closed"] = closed;
     r["method"] = v.Def("Method").choices[int(p.method)].key;
+    r["energy"] = useQuality ? std::string("quality") : SnakeParamDefs::EnergyChoices()[size_t(energyType)].key;
     r["samples"] = snake.SampleCount();
     r["operations"] = st.operations;
     r["updates"] = st.updates;
@@ -564,7 +643,8 @@ void CaseToJob(const std::string &line, const std::string &dir, Job &job)
         if (key == "command") continue;
         const std::string val = JsonToText(it.value());
         if (key == "mesh") job.mesh = Resolve(dir, val);
-        else if (key == "output" || key == "o" || key == "mesh-out") SetOption(job, key, Resolve(dir, val), true);
+        else if (key == "output" || key == "o" || key == "mesh-out" || key == "pp")
+            SetOption(job, key, Resolve(dir, val), true);
         else SetOption(job, key, val, true);
     }
     CheckJob(job);

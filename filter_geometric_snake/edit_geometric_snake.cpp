@@ -11,14 +11,20 @@
 #include <cmath>
 #include <fstream>
 
+#include <QAbstractSpinBox>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeyEvent>
+#include <QLineEdit>
+#include <QMainWindow>
 #include <QMouseEvent>
+#include <QPlainTextEdit>
 #include <QRegularExpression>
+#include <QTextEdit>
 #include <QTextStream>
 
 #include <meshlab/glarea.h>
@@ -35,7 +41,7 @@ namespace {
 // Colours: bright over a dark outline, readable on any background; magenta does not occur
 // in MeshLab's quality ramp (red-yellow-green-cyan-blue).
 const GLubyte kSelected[3] = {255, 0, 255};
-const GLubyte kOther[3] = {150, 90, 255};
+const GLubyte kOther[3] = {255, 150, 0}; // orange: stands out on MeshLab's blue-grey background and grey meshes
 const GLubyte kOutline[3] = {20, 20, 20};
 const GLubyte kSample[3] = {255, 255, 255};
 const GLubyte kPinned[3] = {255, 40, 40};
@@ -83,6 +89,7 @@ EditGeometricSnakePlugin::EditGeometricSnakePlugin()
 
 EditGeometricSnakePlugin::~EditGeometricSnakePlugin()
 {
+    ownKeys(false);
     runTimer.stop();
     if (ctl && modelAlive()) stop(true);
     delete dock.data();
@@ -115,12 +122,36 @@ bool EditGeometricSnakePlugin::StartEdit(MeshModel &m, GLArea *gla, MLSceneGLSha
 bool EditGeometricSnakePlugin::startOn(MeshModel &m)
 {
     if (ctl) stop(true);
+    QMainWindow *mw = glArea ? qobject_cast<QMainWindow *>(glArea->window()) : nullptr;
     if (!dock) {
-        dock = new SnakeDock(glArea ? glArea->window() : nullptr);
+        dock = new SnakeDock(mw ? static_cast<QWidget *>(mw) : glArea);
         connectDock();
     }
+    {
+        // docked on the right, stacked under MeshLab's layer dialog (which holds the Log)
+        QDockWidget *layers = nullptr;
+        if (mw)
+            for (QDockWidget *d : mw->findChildren<QDockWidget *>())
+                if (d != dock && d->inherits("LayerDialog")) layers = d;
+        // a layer switch ends and restarts the tool: the panel stays where it is then (it
+        // does not jump over the layer dialog the user is clicking in)
+        hidePending = false;
+        const bool first = !dock->isVisible();
+        if (first) dock->dockInto(mw, layers);
+        if (first && mw) {
+            // where the panel is, for the user and for the GUI test that checks it is docked
+            QPointer<SnakeDock> d(dock);
+            QTimer::singleShot(400, this, [this, d, mw] {
+                if (!d || !d->isVisible()) return;
+                QRect r(d->mapToGlobal(QPoint(0, 0)), d->size());
+                Log(GLLogStream::SYSTEM, "Geometric snake: panel %s in MeshLab's main window at %d,%d size %dx%d",
+                    d->isFloating() ? "floating" : "docked", r.x(), r.y(), r.width(), r.height());
+            });
+        }
+    }
+    ownKeys(true);
+    refreshDock();
     if (m.cm.fn < 1) {
-        dock->show();
         report("Geometric snake: the current layer has no faces; select a triangle mesh layer.", true);
         return true; // keep the panel, the user may switch layers
     }
@@ -129,7 +160,6 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         vcg::tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
         vcg::tri::MeshValidation<CMeshO>::RequireAdjacencySafe(m.cm);
     } catch (const std::exception &e) {
-        dock->show();
         report(QString("Geometric snake: %1").arg(e.what()), true);
         return true; // keep the panel: the user can clean the mesh and restart the tool
     }
@@ -149,6 +179,7 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
     if (!m.fullName().isEmpty()) sidecar = Controller::SidecarPath(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
 
     QString restored;
+    bool restoredFromFile = false;
     try {
         ctl->SetEnergySettings(vcg::tri::FeatureEnergyType(dock->energyType->currentIndex()), dock->smoothing->value());
     } catch (const SnakeError &) {
@@ -163,7 +194,10 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         }
     } else if (!sidecar.empty() && QFileInfo::exists(QString::fromStdString(sidecar))) {
         try {
-            if (ctl->Load(sidecar)) restored = QString("Restored %1.").arg(QString::fromStdString(sidecar));
+            if (ctl->Load(sidecar)) {
+                restored = QString("Restored %1.").arg(QString::fromStdString(sidecar));
+                restoredFromFile = true;
+            }
         } catch (const std::exception &e) {
             // keep the unusable file: it is not overwritten by the autosave
             QString bak = QString::fromStdString(sidecar) + ".bak";
@@ -182,11 +216,11 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         dock->seedMode->setChecked(true);
         try { ctl->SetParams(paramsFromDock()); } catch (const SnakeError &) {}
     }
-    dock->show();
     refreshDock();
     if (!restored.isEmpty()) report(restored, false);
     else report(QString("Click on %1 to place seeds, then press Enter (open) or Shift+Enter (closed).").arg(m.label()), false);
-    if (restored.size()) Log(GLLogStream::FILTER, "Geometric snake: %s", restored.toStdString().c_str());
+    // the snakes kept on the mesh come back silently on every layer switch; a file is news
+    if (restoredFromFile) Log(GLLogStream::FILTER, "Geometric snake: %s", restored.toStdString().c_str());
     if (glArea) glArea->update();
     return true;
 }
@@ -211,21 +245,36 @@ void EditGeometricSnakePlugin::stop(bool save)
     }
     ctl.reset();
     model = nullptr;
+    currentSample = -1;
     pressed = stroking = false;
     dragSample = -1;
     stroke.clear();
+    refreshDock(); // nothing stays enabled that would act on a mesh the tool left
 }
 
 void EditGeometricSnakePlugin::EndEdit(MeshModel &, GLArea *, MLSceneGLSharedDataContext *)
 {
     stop(true);
-    if (dock) dock->hide();
+    ownKeys(false);
+    hideDockLater();
 }
 
 void EditGeometricSnakePlugin::EndEdit(MeshDocument &, GLArea *, MLSceneGLSharedDataContext *)
 {
     stop(true);
-    if (dock) dock->hide();
+    ownKeys(false);
+    hideDockLater();
+}
+
+/// Hides the panel once control returns to the event loop, unless the tool started again
+/// meanwhile (MeshLab's layer switch is EndEdit + StartEdit).
+void EditGeometricSnakePlugin::hideDockLater()
+{
+    hidePending = true;
+    QTimer::singleShot(0, this, [this] {
+        if (hidePending && dock) dock->hide();
+        hidePending = false;
+    });
 }
 
 // ====================================================================== helpers
@@ -300,15 +349,19 @@ void EditGeometricSnakePlugin::refreshDock()
                                                         dock->deleteSnake, dock->insert, dock->remove, dock->pin})
         w->setEnabled(s != nullptr);
     dock->exportAll->setEnabled(has && ctl->SnakeCount() > 0);
-    dock->undo->setEnabled(s && s->CanUndo());
-    dock->redo->setEnabled(s && s->CanRedo());
+    dock->undo->setEnabled(has && ctl->CanUndo());
+    dock->redo->setEnabled(has && ctl->CanRedo());
+    dock->undo->setToolTip(has && ctl->CanUndo() ? QString("Undo %1 (Ctrl+Z)").arg(QString::fromStdString(ctl->UndoLabel()))
+                                                 : QString("Nothing to undo (Ctrl+Z)"));
+    dock->redo->setToolTip(has && ctl->CanRedo() ? QString("Redo %1 (Ctrl+Y)").arg(QString::fromStdString(ctl->RedoLabel()))
+                                                 : QString("Nothing to redo (Ctrl+Y)"));
     {
         QSignalBlocker b(dock->snakeList);
         dock->snakeList->clear();
         if (has)
             for (int i = 0; i < ctl->SnakeCount(); ++i) {
                 auto &x = ctl->Get(i);
-                dock->snakeList->addItem(QString("Snake %1 (%2, %3 samples)")
+                dock->snakeList->addItem(QString("%1: %2, %3 samples")
                                              .arg(i + 1)
                                              .arg(x.Closed() ? "closed" : "open")
                                              .arg(x.SampleCount()));
@@ -317,7 +370,7 @@ void EditGeometricSnakePlugin::refreshDock()
     }
     if (s && currentSample >= s->SampleCount()) currentSample = -1;
     dock->setConvergence(!s ? 0 : runTimer.isActive() ? 3 : s->Converged() ? 2 : 1);
-    if (s && dock->status->styleSheet().isEmpty()) {
+    if (s && dock->status->styleSheet().isEmpty() && !running()) {
         const auto &st = s->Stats();
         int pins = 0;
         for (auto &x : s->Samples()) pins += x.fixed;
@@ -383,24 +436,16 @@ void EditGeometricSnakePlugin::connectDock()
         connect(s, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double) { applyParams(); });
     clicked(d->step, [this] { stepOnce(); });
     connect(d->run, &QPushButton::toggled, this, [this](bool on) { setRunning(on); });
-    clicked(d->pin, [this] {
-        if (currentSample < 0) { report("Select a sample first (Edit samples mode, click on it).", true); return; }
-        if (guarded("pin", [&] { ctl->TogglePin(currentSample); })) afterChange();
-    });
-    clicked(d->insert, [this] {
-        if (currentSample < 0) { report("Select a sample first (Edit samples mode, click on it).", true); return; }
-        if (guarded("insert", [&] { currentSample = ctl->InsertSampleAfter(currentSample); })) afterChange();
-    });
+    clicked(d->pin, [this] { editCurrent("pin", [this] { ctl->TogglePin(currentSample); }); });
+    clicked(d->insert, [this] { editCurrent("insert", [this] { currentSample = ctl->InsertSampleAfter(currentSample); }); });
     clicked(d->remove, [this] {
-        if (currentSample < 0) { report("Select a sample first (Edit samples mode, click on it).", true); return; }
-        if (guarded("delete", [&] { ctl->DeleteSample(currentSample); currentSample = -1; })) afterChange();
+        editCurrent("delete", [this] {
+            ctl->DeleteSample(currentSample);
+            currentSample = -1;
+        });
     });
-    clicked(d->undo, [this] {
-        if (guarded("undo", [&] { setRunning(false); ctl->Undo(); })) afterChange();
-    });
-    clicked(d->redo, [this] {
-        if (guarded("redo", [&] { setRunning(false); ctl->Redo(); })) afterChange();
-    });
+    clicked(d->undo, [this] { undoRedo(false); });
+    clicked(d->redo, [this] { undoRedo(true); });
     connect(d->snakeList, QOverload<int>::of(&QComboBox::activated), this, [this](int i) {
         if (guarded("select", [&] { setRunning(false); ctl->Select(i); currentSample = -1; })) {
             if (ctl->SelectedSnake()) paramsToDock(ctl->SelectedSnake()->Params());
@@ -434,11 +479,11 @@ void EditGeometricSnakePlugin::buildSnake(bool closed)
 {
     setRunning(false);
     if (guarded("build snake", [&] {
-            ctl->SetParams(paramsFromDock());
+            ctl->SetNewSnakeParams(paramsFromDock()); // the other snakes stay as they are (converged)
             auto t0 = std::chrono::steady_clock::now();
             ctl->CloseSeeds(closed);
             double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-            Log(GLLogStream::FILTER, "Geometric snake: built a %s snake with %d samples in %.1f ms", closed ? "closed" : "open",
+            Log(GLLogStream::FILTER, "Geometric snake: built %s snake with %d samples in %.1f ms", closed ? "a closed" : "an open",
                 ctl->SelectedSnake()->SampleCount(), ms);
         })) {
         currentSample = -1;
@@ -459,43 +504,111 @@ void EditGeometricSnakePlugin::stepOnce()
 
 void EditGeometricSnakePlugin::setRunning(bool on)
 {
-    if (on && (!ctl || !ctl->SelectedSnake())) on = false;
-    if (on && ctl->SelectedSnake()->Converged()) {
+    if (on && (!ctl || !modelAlive() || !ctl->SelectedSnake())) on = false;
+    if (on && !running()) {
+        // the whole Run is one undo step, however it ends (converged, Stop, Esc, an error)
+        ctl->BeginAction("run");
+        runClock.start();
+        runCompute0 = ctl->ComputeMs();
+        runOps0 = ctl->SelectedSnake()->Stats().operations;
+        sliceMs = 30;
+        sliceEnd = -1;
         // a converged snake restarts (e.g. after new parameters, it may move again)
-        if (!guarded("run", [&] { ctl->Step(); })) on = false;
-    }
-    if (on) runTimer.start();
-    else if (runTimer.isActive()) {
+        if (ctl->SelectedSnake()->Converged() && !guarded("run", [&] { ctl->Step(); })) {
+            ctl->EndAction();
+            on = false;
+        } else {
+            runTimer.start();
+            runProgress("Running");
+        }
+    } else if (!on && running()) {
         runTimer.stop();
-        if (ctl && modelAlive()) afterChange(true);
+        if (ctl) ctl->EndAction();
+        if (ctl && modelAlive() && ctl->SelectedSnake()) {
+            const auto *s = ctl->SelectedSnake();
+            const double compute = (ctl->ComputeMs() - runCompute0) / 1000.0, wall = runClock.elapsed() / 1000.0;
+            // the Log line the wall-time GUI test reads: compute time vs wall time of the Run
+            Log(GLLogStream::FILTER,
+                "Geometric snake: Run %s after %d operations: compute %.3f s, wall %.3f s (median %.2f ms per operation)",
+                s->Converged() ? "converged" : "stopped", s->Stats().operations - runOps0, compute, wall,
+                vcg::tri::SnakeStats::Median(s->Stats().msOperation));
+            if (dock && dock->status->styleSheet().isEmpty()) // keep an error on show
+                runProgress(s->Converged() ? "Converged" : "Stopped (Ctrl+Z undoes the Run)");
+            afterChange(true);
+        }
     }
     if (dock) {
         QSignalBlocker b(dock->run);
-        dock->run->setChecked(on);
-        dock->run->setText(on ? "Pause" : "Run");
+        dock->run->setChecked(running());
+        dock->run->setText(running() ? "Stop" : "Run");
     }
     refreshDock();
 }
 
+void EditGeometricSnakePlugin::runProgress(const char *state)
+{
+    if (!dock || !ctl || !ctl->SelectedSnake()) return;
+    const auto *s = ctl->SelectedSnake();
+    dock->setStatus(QString("%1: %2 operations, largest move %3 h, %4 energy | %5 s (compute %6 s)")
+                        .arg(state)
+                        .arg(s->Stats().operations - runOps0)
+                        .arg(s->Stats().lastMaxMove, 0, 'f', 3)
+                        .arg(s->EnergyStage() == 1 ? "coarse" : "precise")
+                        .arg(runClock.elapsed() / 1000.0, 0, 'f', 1)
+                        .arg((ctl->ComputeMs() - runCompute0) / 1000.0, 0, 'f', 2),
+                    false);
+}
+
+/// One time slice of a Run: operations for `sliceMs`, then one redraw. The slice is at
+/// least 30 ms (at most ~30 redraws per second) and twice what the last redraw and event
+/// handling took, so the wall time stays within ~1.5x the compute time even when drawing is
+/// slow (software OpenGL); MeshLab handles its events between slices.
 void EditGeometricSnakePlugin::runTick()
 {
     if (!ctl || !modelAlive() || !ctl->SelectedSnake()) {
         setRunning(false);
         return;
     }
-    if (!guarded("run", [&] { ctl->Step(); })) {
+    const qint64 start = runClock.elapsed();
+    if (sliceEnd >= 0) sliceMs = std::min(300.0, std::max(30.0, 2.0 * double(start - sliceEnd)));
+    bool ok = true, converged = false;
+    do {
+        ok = guarded("run", [&] { ctl->Step(); });
+        converged = ok && ctl->SelectedSnake()->Converged();
+    } while (ok && !converged && runClock.elapsed() - start < sliceMs);
+    if (!ok || converged) {
         setRunning(false);
         return;
     }
-    if (dock) dock->setStatus("", false);
-    if (ctl->SelectedSnake()->Converged()) {
-        setRunning(false);
-        const auto &st = ctl->SelectedSnake()->Stats();
-        Log(GLLogStream::FILTER, "Geometric snake: converged after %d operations (median %.1f ms per operation)",
-            st.operations, vcg::tri::SnakeStats::Median(st.msOperation));
-        return;
-    }
+    runProgress("Running");
     afterChange();
+    sliceEnd = runClock.elapsed();
+}
+
+void EditGeometricSnakePlugin::editCurrent(const QString &what, const std::function<void()> &f)
+{
+    if (!ctl) return;
+    if (currentSample < 0) {
+        report("Select a sample first (Edit samples mode, click on it).", true);
+        return;
+    }
+    setRunning(false);
+    if (guarded(what, f)) afterChange();
+}
+
+void EditGeometricSnakePlugin::undoRedo(bool redo)
+{
+    if (!ctl) return;
+    setRunning(false);
+    std::string label = redo ? ctl->RedoLabel() : ctl->UndoLabel();
+    bool done = false;
+    if (guarded(redo ? "redo" : "undo", [&] { done = redo ? ctl->Redo() : ctl->Undo(); })) {
+        if (ctl->SelectedSnake()) paramsToDock(ctl->SelectedSnake()->Params());
+        afterChange();
+        report(done ? QString("%1 %2.").arg(redo ? "Redid" : "Undid", QString::fromStdString(label))
+                    : QString(redo ? "Nothing to redo." : "Nothing to undo."),
+               false);
+    }
 }
 
 void EditGeometricSnakePlugin::applyParams()
@@ -664,6 +777,47 @@ QPointF EditGeometricSnakePlugin::glPos(QMouseEvent *e, GLArea *gla) const
     return QPointF(p[0], p[1]);
 }
 
+bool EditGeometricSnakePlugin::unproject(const vcg::Point3d &s, vcg::Point3d &p) const
+{
+    Eigen::Vector4d c = apply(Minv, Eigen::Vector4d(2.0 * (s[0] - viewport[0]) / viewport[2] - 1.0,
+                                                    2.0 * (s[1] - viewport[1]) / viewport[3] - 1.0, 2.0 * s[2] - 1.0, 1.0));
+    if (c[3] == 0 || !c.allFinite()) return false;
+    p = vcg::Point3d(c[0] / c[3], c[1] / c[3], c[2] / c[3]);
+    return true;
+}
+
+/// The dragged sample follows the surface point under the cursor, but moves at most twice
+/// the surface distance the cursor covers on a view facing the surface: on a grazing view a
+/// few pixels span many edge lengths, and an unbounded jump would make the next Run tangle.
+/// A bounded step is taken in space, then brought back to the nearest point of the mesh.
+bool EditGeometricSnakePlugin::boundedDragTarget(const QPointF &g, const SurfacePoint &hit, SurfacePoint &target)
+{
+    CMeshO &m = model->cm;
+    const vcg::Point3d from = dragTarget.Pd(m), to = hit.Pd(m);
+    vcg::Point3d sf, a, b;
+    if (!project(from, sf) || !unproject(sf, a) || !unproject(sf + vcg::Point3d(1, 0, 0), b)) {
+        target = hit;
+        return true;
+    }
+    const double pixelSize = (b - a).Norm(); // the size of a pixel at the sample's depth
+    const double pixels = std::hypot(g.x() - dragLastPos.x(), g.y() - dragLastPos.y()) + 2.0;
+    const double maxStep = 2.0 * pixels * pixelSize, d = (to - from).Norm();
+    if (!(d > maxStep) || !pickGrid) {
+        target = hit;
+        return true;
+    }
+    const vcg::Point3d q = from + (to - from) * (maxStep / d);
+    Scalarm dist = 0;
+    Point3m closest;
+    CFaceO *f = vcg::tri::GetClosestFaceBase(m, *pickGrid, Point3m::Construct(q), Scalarm(2 * maxStep), dist, closest);
+    if (!f || f->IsD()) return false;
+    Point3m bary;
+    if (!vcg::InterpolationParameters(vcg::Triangle3<Scalarm>(f->cP(0), f->cP(1), f->cP(2)), closest, bary)) return false;
+    target = SurfacePoint(int(vcg::tri::Index(m, f)), vcg::Point3d::Construct(bary));
+    target.Normalize();
+    return true;
+}
+
 bool EditGeometricSnakePlugin::project(const vcg::Point3d &p, vcg::Point3d &s) const
 {
     Eigen::Vector4d c = apply(M, Eigen::Vector4d(p[0], p[1], p[2], 1.0));
@@ -761,6 +915,8 @@ void EditGeometricSnakePlugin::mousePressEvent(QMouseEvent *e, MeshModel &m, GLA
             paramsToDock(ctl->SelectedSnake()->Params());
         }
         currentSample = i;
+        dragTarget = ctl->SelectedSnake()->Samples()[i].p;
+        dragLastPos = g;
         if (e->modifiers() & Qt::ShiftModifier) {
             pressed = false;
             setRunning(false);
@@ -782,9 +938,11 @@ void EditGeometricSnakePlugin::mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLAr
     vcg::Point3d x;
     if (dock->editMode->isChecked()) {
         if (dragSample < 0 || !far) return;
-        if (pick(g, sp, x)) {
-            dragTarget = sp;
+        SurfacePoint t;
+        if (pick(g, sp, x) && boundedDragTarget(g, sp, t)) {
+            dragTarget = t;
             dragMoved = true;
+            dragLastPos = g;
         }
     } else if (!(e->modifiers() & Qt::ControlModifier)) {
         if (!stroking && far) {
@@ -845,39 +1003,122 @@ void EditGeometricSnakePlugin::mouseReleaseEvent(QMouseEvent *e, MeshModel &m, G
 
 void EditGeometricSnakePlugin::keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla)
 {
+    // the owned keys arrive through eventFilter; here the mode keys, when the view has focus
     if (!ctl || &m != model) return;
-    bool ctrl = e->modifiers() & Qt::ControlModifier, shift = e->modifiers() & Qt::ShiftModifier;
+    if (e->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier)) return;
+    if (e->key() == Qt::Key_S) dock->seedMode->setChecked(true);
+    else if (e->key() == Qt::Key_E) dock->editMode->setChecked(true);
+    else if (!handleKey(e)) return;
+    e->accept();
+    gla->update();
+}
+
+// ====================================================================== owned keys
+void EditGeometricSnakePlugin::ownKeys(bool on)
+{
+    if (on == keysOwned) return;
+    keysOwned = on;
+    if (on) qApp->installEventFilter(this);
+    else qApp->removeEventFilter(this);
+}
+
+bool EditGeometricSnakePlugin::ownsKey(const QKeyEvent *e) const
+{
+    const Qt::KeyboardModifiers mods = e->modifiers() & ~Qt::KeypadModifier;
+    const bool ctrl = mods & Qt::ControlModifier, other = mods & (Qt::AltModifier | Qt::MetaModifier);
+    switch (e->key()) {
+    case Qt::Key_Delete: return true; // with any modifier: Ctrl+Del and Shift+Del delete mesh elements too
+    case Qt::Key_Backspace:
+    case Qt::Key_I:
+    case Qt::Key_P:
+    case Qt::Key_R:
+    case Qt::Key_Space:
+    case Qt::Key_Return:
+    case Qt::Key_Enter: return !ctrl && !other;
+    case Qt::Key_Z:
+    case Qt::Key_Y: return ctrl && !other;
+    case Qt::Key_Escape: return running(); // otherwise Esc suspends the tool, as in MeshLab
+    default: return false;
+    }
+}
+
+/// Keys typed into a text field (a spin box of the panel, a layer name) stay there.
+static bool isTextEntry(QWidget *w)
+{
+    if (auto *l = qobject_cast<QLineEdit *>(w)) return !l->isReadOnly();
+    if (auto *b = qobject_cast<QAbstractSpinBox *>(w)) return !b->isReadOnly();
+    if (auto *t = qobject_cast<QTextEdit *>(w)) return !t->isReadOnly();
+    if (auto *t = qobject_cast<QPlainTextEdit *>(w)) return !t->isReadOnly();
+    if (auto *c = qobject_cast<QComboBox *>(w)) return c->isEditable();
+    return false;
+}
+
+/// While the tool is active its keys go to it wherever the focus is in MeshLab's main window
+/// (the 3D view, the layer list, a button of the panel), except text fields: MeshLab's
+/// shortcuts for them are overridden (ShortcutOverride accepted), then the key press is
+/// handled here. Dialogs and other windows are left alone.
+bool EditGeometricSnakePlugin::eventFilter(QObject *o, QEvent *e)
+{
+    if (!keysOwned || (e->type() != QEvent::ShortcutOverride && e->type() != QEvent::KeyPress)) return false;
+    QWidget *w = qobject_cast<QWidget *>(o);
+    if (!w) return false; // the QWindow passes it on to its focus widget
+    QKeyEvent *k = static_cast<QKeyEvent *>(e);
+    if (!ownsKey(k)) return false;
+    QWidget *win = w->window();
+    QWidget *main = glArea ? glArea->window() : nullptr;
+    if (win != main && win != dock.data()) return false;
+    if (isTextEntry(w)) return false;
+    if (e->type() == QEvent::KeyPress) {
+        handleKey(k);
+        if (glArea) glArea->update();
+    }
+    e->accept();
+    return true;
+}
+
+bool EditGeometricSnakePlugin::handleKey(const QKeyEvent *e)
+{
+    const bool shift = e->modifiers() & Qt::ShiftModifier, ctrl = e->modifiers() & Qt::ControlModifier;
+    if (!ctl) {
+        report("Geometric snake: no mesh (select a mesh layer and start the tool again).", true);
+        return true;
+    }
     switch (e->key()) {
     case Qt::Key_Return:
     case Qt::Key_Enter: buildSnake(shift); break;
     case Qt::Key_Backspace:
-        if (guarded("remove seed", [&] { ctl->RemoveLastSeed(); })) afterChange();
+        // removes the last seed while placing seeds, else the selected sample
+        if (!ctl->Seeds().empty() && (dock->seedMode->isChecked() || currentSample < 0)) {
+            setRunning(false);
+            if (guarded("remove seed", [&] { ctl->RemoveLastSeed(); })) afterChange();
+        } else
+            editCurrent("delete", [this] {
+                ctl->DeleteSample(currentSample);
+                currentSample = -1;
+            });
+        break;
+    case Qt::Key_Delete:
+        editCurrent("delete", [this] {
+            ctl->DeleteSample(currentSample);
+            currentSample = -1;
+        });
         break;
     case Qt::Key_Space: stepOnce(); break;
-    case Qt::Key_R: setRunning(!runTimer.isActive()); break;
-    case Qt::Key_P: dock->pin->click(); break;
-    case Qt::Key_I: dock->insert->click(); break;
-    case Qt::Key_Delete: dock->remove->click(); break;
+    case Qt::Key_R: setRunning(!running()); break;
+    case Qt::Key_Escape: setRunning(false); break;
+    case Qt::Key_P: editCurrent("pin", [this] { ctl->TogglePin(currentSample); }); break;
+    case Qt::Key_I: editCurrent("insert", [this] { currentSample = ctl->InsertSampleAfter(currentSample); }); break;
     case Qt::Key_Z:
-        if (!ctrl) return;
-        if (shift) dock->redo->click();
-        else dock->undo->click();
+        if (!ctrl) return false;
+        undoRedo(shift);
         break;
     case Qt::Key_Y:
-        if (!ctrl) return;
-        dock->redo->click();
+        if (!ctrl) return false;
+        undoRedo(true);
         break;
-    case Qt::Key_S:
-        if (!ctrl) dock->seedMode->setChecked(true);
-        else return;
-        break;
-    case Qt::Key_E:
-        dock->editMode->setChecked(true);
-        break;
-    default: return;
+    default: return false;
     }
-    e->accept();
-    gla->update();
+    return true;
 }
 
 // ====================================================================== drawing
@@ -979,14 +1220,25 @@ void EditGeometricSnakePlugin::drawAll(MeshModel &m)
         if (sel) {
             std::vector<vcg::Point3d> free, pinned, cur;
             const auto &smp = s.Samples();
+            double screenLength = 0;
+            vcg::Point3d prev;
+            bool hasPrev = false;
             for (int i = 0; i < int(smp.size()); ++i) {
-                vcg::Point3d p = lifted(smp[i].p);
+                vcg::Point3d p = lifted(smp[i].p), sp;
                 (smp[i].fixed ? pinned : free).push_back(p);
                 if (i == currentSample) cur.push_back(p);
+                if (project(p, sp)) {
+                    if (hasPrev) screenLength += std::hypot(sp[0] - prev[0], sp[1] - prev[1]);
+                    prev = sp;
+                    hasPrev = true;
+                }
             }
-            points(free, 4.f, kSample);
-            points(pinned, 9.f, kPinned);
-            points(cur, 6.f, kCurrent);
+            // the current sample is a yellow ring around its own colour (red if pinned);
+            // free samples closer than ~8 px on screen would hide the curve: not drawn then
+            points(cur, 13.f, kCurrent);
+            if (smp.size() < 2 || screenLength / double(smp.size() - 1) > 8.0 * dpr) points(free, 4.f, kSample);
+            points(pinned, 8.f, kPinned);
+            if (!cur.empty() && !smp[currentSample].fixed) points(cur, 4.f, kSample);
         }
     }
     // seeds

@@ -4,23 +4,30 @@
 // MeshLab edit tool "Geometric Snake": interactive geometric snakes (Lee & Lee 2002,
 // Sec. 5.5 and 7) on the current layer. Thin Qt/GL glue over vcg_ext/snake_controller.h.
 //
+// While active, the tool owns its keys (Delete, Backspace, I, P, R, Space, Enter, Ctrl+Z,
+// Ctrl+Y; Esc during a Run): an application event filter overrides MeshLab's shortcuts for
+// them (Delete is MeshLab's "Delete Selected Faces"), so they never reach the mesh.
+// A Run computes operations in time slices and redraws at most ~30 times per second.
+//
 // Environment hook for scripted GUI tests: GS_SNAKE_AUTOEXPORT=<file.json> makes the tool
 // write all its snakes (vcg_ext/snake_io.h JSON) to that file after every change.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
 
 #include <common/interfaces.h>
 #include <vcg/space/index/grid_static_ptr.h>
-#include <memory>
 #include <vcg_ext/snake_controller.h>
 
+class QKeyEvent;
 class SnakeDock;
 
 class EditGeometricSnakePlugin : public QObject, public MeshEditInterface
@@ -46,6 +53,9 @@ public:
     void mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla) override;
 
+protected:
+    bool eventFilter(QObject *o, QEvent *e) override;
+
 private slots:
     void runTick();
 
@@ -58,6 +68,13 @@ private:
     MLSceneGLSharedDataContext *shared = nullptr;
     QPointer<SnakeDock> dock;
     QTimer runTimer;
+    // the Run in progress (time slices): its clocks and counters for the progress and the Log
+    QElapsedTimer runClock;
+    double runCompute0 = 0, sliceMs = 30;
+    qint64 sliceEnd = -1;
+    int runOps0 = 0;
+    bool keysOwned = false;
+    bool hidePending = false;
     long exportedRevision = -1;
     long storedRevision = -1;
     int currentSample = -1;
@@ -77,12 +94,17 @@ private:
     int dragSample = -1;
     bool dragMoved = false;
     vcg::tri::SurfacePoint dragTarget;
+    QPointF dragLastPos; // GL coordinates of the last accepted drag event
 
     bool startOn(MeshModel &m);
     void stop(bool save);
     bool modelAlive() const;
     void connectDock();
     void refreshDock();
+    void ownKeys(bool on);
+    void hideDockLater();
+    bool ownsKey(const QKeyEvent *e) const;
+    bool handleKey(const QKeyEvent *e);
     void afterChange(bool forceSave = false);
     void report(const QString &msg, bool error);
     template <class F> bool guarded(const QString &what, F f);
@@ -93,6 +115,8 @@ private:
     size_t pickGridFaces = 0;
     const CMeshO *pickGridMesh = nullptr;
     bool project(const vcg::Point3d &p, vcg::Point3d &screen) const;
+    bool unproject(const vcg::Point3d &screen, vcg::Point3d &p) const;
+    bool boundedDragTarget(const QPointF &glPos, const vcg::tri::SurfacePoint &hit, vcg::tri::SurfacePoint &target);
     int nearestSampleOnScreen(const QPointF &glPos, int &snake, double radiusPx);
     int nearestSeedOnScreen(const QPointF &glPos, double radiusPx);
     QPointF glPos(QMouseEvent *e, GLArea *gla) const;
@@ -101,6 +125,10 @@ private:
     void buildSnake(bool closed);
     void stepOnce();
     void setRunning(bool on);
+    bool running() const { return runTimer.isActive(); }
+    void runProgress(const char *state);
+    void editCurrent(const QString &what, const std::function<void()> &f);
+    void undoRedo(bool redo);
     void applyParams();
     void computeEnergy(bool show);
     void exportCurves(bool all);

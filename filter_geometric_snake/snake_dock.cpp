@@ -8,6 +8,10 @@
 #include <QHBoxLayout>
 #include <QScrollArea>
 #include <QVBoxLayout>
+#include <QPointer>
+#include <QTimer>
+#include <QToolButton>
+#include <QWheelEvent>
 
 namespace {
 QDoubleSpinBox *spin(double lo, double hi, double step, int dec, double val, const QString &tip)
@@ -33,44 +37,68 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
 {
     setWindowTitle("Geometric Snake");
     setObjectName("GeometricSnakeDock");
-    QWidget *w = new QWidget;
-    QVBoxLayout *v = new QVBoxLayout(w);
-    v->setContentsMargins(4, 4, 4, 4);
-    v->setSpacing(4);
+    QWidget *outer = new QWidget;
+    QVBoxLayout *top = new QVBoxLayout(outer);
+    top->setContentsMargins(4, 4, 4, 4);
+    top->setSpacing(4);
 
-    // --- mode
-    QGroupBox *gm = new QGroupBox("Mouse (left button)");
-    QHBoxLayout *hm = new QHBoxLayout(gm);
+    // ---- always visible: mode, status line, main buttons
+    QHBoxLayout *hm = new QHBoxLayout;
     seedMode = new QRadioButton("Place seeds");
     seedMode->setToolTip("Click on the surface to add a seed (the nearest vertex of the clicked triangle);\n"
                          "drag to paint a stroke of seeds; Ctrl+click removes the nearest seed.\n"
-                         "Enter builds an open snake, Shift+Enter a closed one; Backspace removes the last seed.\n"
-                         "Esc suspends the tool to rotate the view.");
+                         "Enter builds an open snake, Shift+Enter a closed one; Backspace removes the last seed (S).\n"
+                         "Esc suspends the tool to rotate the view (Esc again resumes).");
     editMode = new QRadioButton("Edit samples");
     editMode->setToolTip("Drag a sample along the surface (point editing); click selects a sample,\n"
-                         "Shift+click pins/unpins it. Keys: P pin, I insert, Del delete, Space step, R run/pause,\n"
-                         "Ctrl+Z undo, Ctrl+Y redo.");
+                         "Shift+click pins/unpins it (E). Keys: P pin, I insert, Delete/Backspace delete, Space step,\n"
+                         "R run/stop, Esc stops a run, Ctrl+Z undo, Ctrl+Y redo.");
     seedMode->setChecked(true);
+    hm->addWidget(new QLabel("Mouse:"));
     hm->addWidget(seedMode);
     hm->addWidget(editMode);
-    v->addWidget(gm);
+    hm->addStretch(1);
+    convergence = new QLabel;
+    convergence->setToolTip("Convergence indicator of the selected snake");
+    hm->addWidget(convergence);
+    top->addLayout(hm);
     status = new QLabel;
     status->setWordWrap(true);
-    status->setMinimumHeight(36);
+    status->setMinimumHeight(40);
+    status->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     status->setFrameStyle(QFrame::StyledPanel | QFrame::Sunken);
-    status->setToolTip("Status: samples, last operation and its time; errors in red (also in MeshLab's Log)");
-    v->addWidget(status);
+    status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    status->setToolTip("Status: samples, the running operation count, largest move and energy stage;\n"
+                       "errors in red (also in MeshLab's Log)");
+    top->addWidget(status);
+    QHBoxLayout *hb = new QHBoxLayout;
+    run = button("Run", "Run operations until the snake converges; click again (or Esc) to stop.\n"
+                        "A whole Run is one undo step (R)");
+    run->setCheckable(true);
+    step = button("Step", "One snake operation (Space)");
+    undo = button("Undo", "Undo the last action: a whole Run, drag, Build, edit or seed (Ctrl+Z)");
+    redo = button("Redo", "Redo (Ctrl+Y or Ctrl+Shift+Z)");
+    hb->addWidget(run);
+    hb->addWidget(step);
+    hb->addWidget(undo);
+    hb->addWidget(redo);
+    top->addLayout(hb);
+
+    QWidget *w = new QWidget;
+    QVBoxLayout *v = new QVBoxLayout(w);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->setSpacing(2);
 
     // --- seeds
-    QGroupBox *gs = new QGroupBox("Seeds");
+    QWidget *gs = section(v, "Seeds", true);
     QGridLayout *ls = new QGridLayout(gs);
     seedLabel = new QLabel("0 seeds");
-    buildOpen = button("Build open snake", "Close the seed list: join the seeds with shortest paths and build an open snake (Enter)");
-    buildClosed = button("Build closed snake", "Close the seed list into a loop and build a closed snake (Shift+Enter)");
+    buildOpen = button("Build open", "Close the seed list: join the seeds with shortest paths and build an open snake (Enter)");
+    buildClosed = button("Build closed", "Close the seed list into a loop and build a closed snake (Shift+Enter)");
     removeLastSeed = button("Remove last", "Remove the last seed (Backspace)");
     clearSeeds = button("Clear", "Remove all seeds");
-    useSelection = button("Use selected vertices", "Use the selected vertices as seeds (ordered into a chain)");
-    usePickPoints = button("Use Pick Points", "Use the points placed with MeshLab's Pick Points tool (saved as <mesh>.pp) as seeds");
+    useSelection = button("Selected vertices", "Use the selected vertices as seeds (ordered into a chain)");
+    usePickPoints = button("Pick Points file", "Use the points placed with MeshLab's Pick Points tool (saved as <mesh>.pp) as seeds");
     seedCost = new QComboBox;
     seedCost->addItem("Shortest path");
     seedCost->addItem("Feature-weighted path");
@@ -83,10 +111,48 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     ls->addWidget(clearSeeds, 2, 1);
     ls->addWidget(useSelection, 3, 0);
     ls->addWidget(usePickPoints, 3, 1);
-    v->addWidget(gs);
+
+    // --- editing
+    QWidget *gd = section(v, "Editing (selected sample)", true);
+    QGridLayout *ld = new QGridLayout(gd);
+    pinDragged = new QCheckBox("Pin dragged samples");
+    pinDragged->setChecked(true);
+    pinDragged->setToolTip("A sample dragged to a new place stays there (fixed) while the snake slithers");
+    pin = button("Pin / unpin", "Fix or release the selected sample (P)");
+    insert = button("Insert", "Insert a sample after the selected one (I)");
+    remove = button("Delete", "Delete the selected sample (Delete or Backspace). The mesh is never touched.");
+    ld->addWidget(pinDragged, 0, 0, 1, 3);
+    ld->addWidget(pin, 1, 0);
+    ld->addWidget(insert, 1, 1);
+    ld->addWidget(remove, 1, 2);
+
+    // --- snakes
+    QWidget *gn = section(v, "Snakes", true);
+    QGridLayout *ln = new QGridLayout(gn);
+    snakeList = new QComboBox;
+    snakeList->setToolTip("The selected snake (drawn in magenta; the others in orange)");
+    snakeList->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    snakeList->setMinimumContentsLength(18);
+    newSnake = button("New", "Place seeds for another snake");
+    deleteSnake = button("Delete snake", "Delete the selected snake (undoable)");
+    ln->addWidget(snakeList, 0, 0, 1, 2);
+    ln->addWidget(newSnake, 1, 0);
+    ln->addWidget(deleteSnake, 1, 1);
+
+    // --- output
+    QWidget *go = section(v, "Output", true);
+    QGridLayout *lo = new QGridLayout(go);
+    exportSelected = button("Export selected...", "Write the selected snake to JSON, OBJ or PLY");
+    exportAll = button("Export all...", "Write all snakes to JSON, OBJ or PLY");
+    addLayer = button("Add as layer", "Add the selected snake's curve to the document as an edge layer");
+    saveSession = button("Save session", "Save snakes, pins and parameters to <mesh>.snakes.json now (also saved automatically)");
+    lo->addWidget(exportSelected, 0, 0);
+    lo->addWidget(exportAll, 0, 1);
+    lo->addWidget(addLayer, 1, 0);
+    lo->addWidget(saveSession, 1, 1);
 
     // --- energy
-    QGroupBox *ge = new QGroupBox("Feature energy");
+    QWidget *ge = section(v, "Feature energy", false);
     QGridLayout *le = new QGridLayout(ge);
     energyType = new QComboBox;
     energyType->addItem("Normal variation (Eq. 6)");
@@ -105,10 +171,9 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     le->addWidget(smoothing, 1, 1);
     le->addWidget(computeEnergy, 2, 0);
     le->addWidget(showEnergy, 2, 1);
-    v->addWidget(ge);
 
     // --- parameters
-    QGroupBox *gp = new QGroupBox("Parameters");
+    QWidget *gp = section(v, "Parameters", false);
     QFormLayout *lp = new QFormLayout(gp);
     alpha = spin(0, 10000, 0.01, 3, 0.05, "Alpha: tension (Eq. 2). Larger = shorter, tauter snake. Range [0, 10000].");
     beta = spin(0, 10000, 0.05, 3, 0.5, "Beta: rigidity (Eq. 2). Larger = smoother, straighter snake. Range [0, 10000].");
@@ -120,82 +185,102 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     lp->addRow("Gamma (1/step)", gamma);
     lp->addRow("External weight", external);
     lp->addRow("Spacing (edges)", spacing);
-    v->addWidget(gp);
-
-    // --- slithering
-    QGroupBox *gr = new QGroupBox("Slithering");
-    QHBoxLayout *lr = new QHBoxLayout(gr);
-    step = button("Step", "One snake operation (Space)");
-    run = button("Run", "Run operations live until converged; click again to pause (R)");
-    run->setCheckable(true);
-    convergence = new QLabel;
-    convergence->setMinimumWidth(90);
-    convergence->setToolTip("Convergence indicator");
-    lr->addWidget(step);
-    lr->addWidget(run);
-    lr->addWidget(convergence);
-    v->addWidget(gr);
-
-    // --- editing
-    QGroupBox *gd = new QGroupBox("Editing (selected sample)");
-    QGridLayout *ld = new QGridLayout(gd);
-    pinDragged = new QCheckBox("Pin dragged samples");
-    pinDragged->setChecked(true);
-    pinDragged->setToolTip("A sample dragged to a new place stays there (fixed) while the snake slithers");
-    pin = button("Pin / unpin", "Fix or release the selected sample (P)");
-    insert = button("Insert", "Insert a sample after the selected one (I)");
-    remove = button("Delete", "Delete the selected sample (Del)");
-    undo = button("Undo", "Undo the last change of the selected snake (Ctrl+Z)");
-    redo = button("Redo", "Redo (Ctrl+Y)");
-    ld->addWidget(pinDragged, 0, 0, 1, 3);
-    ld->addWidget(pin, 1, 0);
-    ld->addWidget(insert, 1, 1);
-    ld->addWidget(remove, 1, 2);
-    ld->addWidget(undo, 2, 0);
-    ld->addWidget(redo, 2, 1);
-    v->addWidget(gd);
-
-    // --- snakes
-    QGroupBox *gn = new QGroupBox("Snakes");
-    QHBoxLayout *ln = new QHBoxLayout(gn);
-    snakeList = new QComboBox;
-    snakeList->setToolTip("The selected snake (drawn in magenta)");
-    newSnake = button("New", "Place seeds for another snake");
-    deleteSnake = button("Delete", "Delete the selected snake");
-    ln->addWidget(snakeList, 1);
-    ln->addWidget(newSnake);
-    ln->addWidget(deleteSnake);
-    v->addWidget(gn);
-
-    // --- output
-    QGroupBox *go = new QGroupBox("Output");
-    QGridLayout *lo = new QGridLayout(go);
-    exportSelected = button("Export selected...", "Write the selected snake to JSON, OBJ or PLY");
-    exportAll = button("Export all...", "Write all snakes to JSON, OBJ or PLY");
-    addLayer = button("Add as layer", "Add the selected snake's curve to the document as an edge layer");
-    saveSession = button("Save session", "Save snakes, pins and parameters to <mesh>.snakes.json now (also saved automatically)");
-    lo->addWidget(exportSelected, 0, 0);
-    lo->addWidget(exportAll, 0, 1);
-    lo->addWidget(addLayer, 1, 0);
-    lo->addWidget(saveSession, 1, 1);
-    v->addWidget(go);
 
     v->addStretch(1);
+
+    // the wheel edits a spin or combo box only when it has the focus (clicked or tabbed to);
+    // otherwise it scrolls the panel
+    for (QWidget *x : w->findChildren<QWidget *>())
+        if (qobject_cast<QAbstractSpinBox *>(x) || qobject_cast<QComboBox *>(x)) {
+            x->setFocusPolicy(Qt::StrongFocus);
+            x->installEventFilter(this);
+        }
 
     QScrollArea *sa = new QScrollArea;
     sa->setWidget(w);
     sa->setWidgetResizable(true);
+    sa->setFrameShape(QFrame::NoFrame);
     sa->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    setWidget(sa);
-    setFeatures(QDockWidget::AllDockWidgetFeatures);
+    top->addWidget(sa, 1);
+    setWidget(outer);
+    setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
     setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
-    setFloating(true);
-    if (parent) {
-        QPoint p = parent->mapToGlobal(QPoint(0, 0));
-        int wd = 400, ht = std::min(900, std::max(500, parent->height() - 80));
-        setGeometry(p.x() + parent->width() - wd - 10, p.y() + 60, wd, ht);
-    }
     setConvergence(0);
+}
+
+QWidget *SnakeDock::section(QVBoxLayout *into, const QString &title, bool open)
+{
+    // a collapsible section: a flat header button with an arrow, and its body
+    QToolButton *head = new QToolButton;
+    head->setText(title);
+    head->setCheckable(true);
+    head->setChecked(open);
+    head->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    head->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+    head->setAutoRaise(true);
+    head->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    QFont f = head->font();
+    f.setBold(true);
+    head->setFont(f);
+    QFrame *body = new QFrame;
+    body->setFrameShape(QFrame::StyledPanel);
+    body->setVisible(open);
+    connect(head, &QToolButton::toggled, body, [head, body](bool on) {
+        body->setVisible(on);
+        head->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+    });
+    into->addWidget(head);
+    into->addWidget(body);
+    return body;
+}
+
+void SnakeDock::dockInto(QMainWindow *mw, QDockWidget *beside)
+{
+    if (!mw) {
+        show();
+        return;
+    }
+    if (mw->dockWidgetArea(this) == Qt::NoDockWidgetArea || isFloating()) {
+        setFloating(false);
+        if (beside && !beside->isFloating() && mw->dockWidgetArea(beside) != Qt::NoDockWidgetArea) {
+            mw->addDockWidget(mw->dockWidgetArea(beside), this);
+            mw->splitDockWidget(beside, this, Qt::Vertical); // stacked under the layer dialog
+            show();
+            beside->show();
+            // the panel gets most of the height; the layers and the Log keep a third (once
+            // the main window has laid the new dock out)
+            QPointer<SnakeDock> self(this);
+            QPointer<QDockWidget> other(beside);
+            QTimer::singleShot(0, mw, [mw, self, other] {
+                if (!self || !other) return;
+                int h = self->height() + other->height();
+                mw->resizeDocks({other.data(), self.data()}, {h * 3 / 10, h - h * 3 / 10}, Qt::Vertical);
+                // the layer dialog does not shrink below its contents: on a short screen
+                // the panel would be cramped, so it becomes a tab beside the layer dialog
+                if (self->height() < 420) {
+                    mw->tabifyDockWidget(other.data(), self.data());
+                    self->show();
+                    self->raise();
+                }
+            });
+        } else {
+            mw->addDockWidget(Qt::RightDockWidgetArea, this);
+        }
+    }
+    show();
+    raise();
+}
+
+bool SnakeDock::eventFilter(QObject *o, QEvent *e)
+{
+    if (e->type() == QEvent::Wheel) {
+        QWidget *w = qobject_cast<QWidget *>(o);
+        if (w && !w->hasFocus()) {
+            e->ignore(); // not for this box: the scroll area scrolls
+            return true;
+        }
+    }
+    return QDockWidget::eventFilter(o, e);
 }
 
 void SnakeDock::setStatus(const QString &text, bool error)

@@ -1,23 +1,32 @@
 #ifndef GS_SNAKE_DOCK_H
 #define GS_SNAKE_DOCK_H
 
-// The panel of the Geometric Snake edit tool (a floating dock like MeshLab's own edit
-// tools). Widgets only: EditGeometricSnakePlugin connects them to the controller.
+// The panel of the Geometric Snake edit tool: a dock of MeshLab's main window (stacked under
+// the layer dialog on the right, or a tab beside it when the screen is short). The status line and the main buttons sit above a scroll
+// area of collapsible sections, so they stay visible. Spin and combo boxes take the mouse
+// wheel only when focused (scrolling the panel never edits a parameter). Widgets only:
+// EditGeometricSnakePlugin connects them to the controller.
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QMainWindow>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSpinBox>
+#include <QVBoxLayout>
 
 class SnakeDock : public QDockWidget
 {
     Q_OBJECT
 public:
     explicit SnakeDock(QWidget *parent);
+
+    /// Docks the panel in `mainWindow`'s right area, below `beside` (MeshLab's layer
+    /// dialog; a tab beside it if there is too little height) if given, else alone.
+    void dockInto(QMainWindow *mainWindow, QDockWidget *beside);
 
     // mode
     QRadioButton *seedMode, *editMode;
@@ -32,7 +41,7 @@ public:
     // parameters
     QDoubleSpinBox *alpha, *beta, *gamma, *external, *spacing;
     // slithering
-    QPushButton *step, *run;
+    QPushButton *step, *run; // run is checkable: Run / Stop
     QLabel *convergence;
     // editing
     QCheckBox *pinDragged;
@@ -47,6 +56,10 @@ public:
 
     void setStatus(const QString &text, bool error = false);
     void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running
+
+protected:
+    QWidget *section(QVBoxLayout *into, const QString &title, bool open);
+    bool eventFilter(QObject *o, QEvent *e) override;
 };
 
 #endif

@@ -3,7 +3,7 @@
 # data/fandisk.ply with the Geometric Snake tool started (GS_SNAKE_AUTOSTART, as run.sh
 # does), four clicks beside the curved crease, Enter builds the snake, R runs it; after 15 s
 # a screenshot goes to docs/img/fandisk_crease.png and MeshLab's Log lines are printed
-# (the snake's samples, operations, time per operation). Needs the plugins installed.
+# (the snake's samples, the Run's operations, compute and wall time). Needs the plugins installed.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
@@ -15,7 +15,7 @@ GS_SNAKE_AUTOSTART=1 LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x900x
   for i in $(seq 60); do grep -q "Started Mode Geometric Snake" "$0/meshlab.log" 2>/dev/null && break; sleep 0.5; done
   sleep 2
   t0=$(date +%s.%N)
-  for p in "285 372" "320 335" "360 312" "400 300"; do xdotool mousemove $p click 1; sleep 0.5; done
+  for p in "310 443" "343 401" "377 376" "415 359"; do xdotool mousemove $p click 1; sleep 0.5; done
   xdotool key Return; sleep 0.5; xdotool key r
   for i in $(seq 60); do grep -q "converged after" "$0/meshlab.log" && break; sleep 0.5; done
   t1=$(date +%s.%N)

@@ -16,6 +16,7 @@ pkgs=(meshlab cmake g++ make pkg-config dpkg-dev
       qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libqt5svg5-dev
       libglew-dev libglu1-mesa-dev libeigen3-dev nlohmann-json3-dev
       googletest libgtest-dev libbenchmark-dev
+      clang libclang-rt-14-dev
       xvfb xauth xdotool imagemagick x11-utils python3)
 missing=()
 for p in "${pkgs[@]}"; do

@@ -14,6 +14,7 @@
 #include "vcg_ext/crease_energy.h"
 #include "vcg_ext/feature_energy.h"
 #include "vcg_ext/geometric_snake.h"
+#include "vcg_ext/local_region.h"
 #include "vcg_ext/mesh_validation.h"
 #include "vcg_ext/seed_points.h"
 #include "vcg_ext/snake_controller.h"
@@ -161,6 +162,41 @@ TEST(TriangleSoup, DetectedAndMergedOnlyOnRequest)
     EXPECT_FALSE(Soup::Inspect(seam).soup);
 }
 
+// ------------------------------------------------------------------ regions that are not disks
+
+TEST(LocalRegionTrimming, SliverStarsAroundABoreAreTrimmedNotRefused)
+{
+    // The faces a segment along the bore's top rim crosses: their vertex stars (the paper's
+    // region) are the bore's full-height strips and the top face's slivers fanning to the block's
+    // corners, which close around the bore: not a disk. The trimmed region is.
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::SnakeSurface<CMeshO> surf(m);
+    int trimmed = 0, refused = 0, tried = 0;
+    for (double a0 = 0; a0 < 2 * M_PI; a0 += M_PI / 6) {
+        std::vector<Point3d> arc;
+        for (int i = 0; i <= 12; ++i) {
+            const double a = a0 + i * (M_PI / 2) / 12; // a quarter of the rim, 0.3 off it on the top face
+            arc.push_back(Point3d(B::BoreX + (B::BoreR + 0.3) * std::cos(a), B::BoreY + (B::BoreR + 0.3) * std::sin(a), B::Z));
+        }
+        auto snap = vcg::tri::SeedPointSnap<CMeshO>::Snap(m, arc, 2);
+        std::vector<int> core;
+        for (auto &p : snap.points) core.push_back(p.face);
+        vcg::tri::LocalRegion<CMeshO> r;
+        ++tried;
+        if (!r.Build(surf, core)) {
+            ++refused;
+            continue;
+        }
+        if (r.trimLevel > 0) ++trimmed;
+        for (int f : core) EXPECT_GE(r.LocalFace(surf, f), 0); // the crossed faces are always kept
+    }
+    std::printf("[cad] bore-rim regions: %d tried, %d trimmed, %d refused\n", tried, trimmed, refused);
+    EXPECT_EQ(refused, 0);
+    EXPECT_GT(trimmed, 0); // the situation that used to freeze the snake does occur here
+}
+
 // ------------------------------------------------------------------ seeds as surface points
 
 TEST(SeedPathFromPoints, StartsAndEndsExactlyAtTheSeedsThroughSharedFaces)
@@ -223,10 +259,21 @@ CadCapture Capture(CMeshO &m, FeatureEnergyType type, const std::vector<Point3d>
     auto snap = vcg::tri::SeedPointSnap<CMeshO>::Snap(m, seeds, closed ? 3 : 2, closed);
     ctl.CreateSnakeFromSeedPoints(snap.points, closed);
     auto &s = ctl.Get(0);
+    if (std::getenv("GS_CAD_VERBOSE"))
+        for (auto &p : s.InitialPolyline()) {
+            Point3d x = p.Pd(m);
+            std::printf("  init %.3f %.3f %.3f\n", x[0], x[1], x[2]);
+        }
     s.Run(600);
     CadCapture c;
     c.tol = tol;
     c.operations = s.Stats().operations;
+    if (std::getenv("GS_CAD_VERBOSE")) {
+        std::printf("  samples %d, region failures %d, embeddings %d\n", s.SampleCount(), s.Stats().regionFailures,
+                    s.Stats().embeddings);
+        for (auto &w : s.Stats().warnings) std::printf("  warning: %s\n", w.c_str());
+        for (auto &p : s.PolylinePositions()) std::printf("  %.3f %.3f %.3f\n", p[0], p[1], p[2]);
+    }
     c.converged = s.Converged();
     std::vector<Point3d> pl = s.PolylinePositions();
     std::vector<double> d;

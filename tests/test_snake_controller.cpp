@@ -185,12 +185,101 @@ TEST(SnakeController, PinHoldsExactlyAndUndoRedoRestore)
     ASSERT_TRUE(c.Undo());
     EXPECT_EQ(s.SampleCount(), n + 1);
 
-    // Undo never goes back to before the snake existed.
-    while (c.Undo()) {}
-    EXPECT_GT(s.SampleCount(), 1);
+    // Undo goes back to the seeds before the Build, redo builds the snake again.
+    std::vector<int> seeds = EdgeSeeds(m, 2.0);
+    while (c.SnakeCount() > 0 && c.Undo()) {}
+    EXPECT_EQ(c.SnakeCount(), 0);
+    EXPECT_EQ(c.Seeds(), seeds);
+    EXPECT_EQ(c.UndoLabel(), "seeds");
+    while (c.Redo()) {}
+    ASSERT_EQ(c.SnakeCount(), 1);
+    EXPECT_EQ(c.Get(0).SampleCount(), n);
     EXPECT_NO_THROW(c.Step());
     (void)beforeStep;
     (void)p1;
+}
+
+// Undo in the units a user thinks in: Build, Run (to convergence), drag (several moves grouped
+// into one action) and a second Run are four steps; three undos return to the converged state
+// before the drag, exactly (curve, pins, counters, convergence), and redo replays them.
+TEST(SnakeController, UndoTakesBackWholeRunsAndDrags)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 2.0));
+    c.CloseSeeds(false);
+    const int built = int(c.UndoSteps()); // the seeds, the Build
+    EXPECT_EQ(built, 2);
+    int ops = c.Run(2000);
+    ASSERT_TRUE(c.Converged()) << ops << " operations";
+    EXPECT_GT(ops, 3);
+    EXPECT_EQ(int(c.UndoSteps()), built + 1) << "a whole Run is one undo step";
+    EXPECT_EQ(c.UndoLabel(), "run");
+    const std::string converged = c.ToJson().dump();
+    const int convergedOps = c.Get(0).Stats().operations;
+
+    // a drag: several moves of one sample, one undo step
+    Controller::Snake &s = c.Get(0);
+    int k = s.SampleCount() / 2;
+    c.BeginAction("drag");
+    SurfacePoint p = s.Samples()[k].p;
+    for (double w : {0.2, 0.4, 0.6}) {
+        p.bary = vcg::Point3d(w, (1 - w) / 2, (1 - w) / 2);
+        c.MoveSample(k, p, true);
+    }
+    c.EndAction();
+    EXPECT_EQ(int(c.UndoSteps()), built + 2);
+    EXPECT_EQ(c.UndoLabel(), "drag");
+    c.Run(2000);
+    EXPECT_EQ(int(c.UndoSteps()), built + 3);
+    const std::string rerun = c.ToJson().dump();
+
+    ASSERT_TRUE(c.Undo()); // the second Run
+    ASSERT_TRUE(c.Undo()); // the drag
+    EXPECT_EQ(c.ToJson().dump(), converged) << "back to the converged snake before the drag";
+    EXPECT_EQ(c.Get(0).Stats().operations, convergedOps);
+    EXPECT_TRUE(c.Converged());
+    ASSERT_TRUE(c.Undo()); // the first Run
+    EXPECT_EQ(c.Get(0).Stats().operations, 0);
+    EXPECT_FALSE(c.Converged());
+    ASSERT_TRUE(c.Redo());
+    ASSERT_TRUE(c.Redo());
+    ASSERT_TRUE(c.Redo());
+    EXPECT_EQ(c.ToJson().dump(), rerun);
+    EXPECT_FALSE(c.CanRedo());
+
+    // an action that changes nothing leaves no step; a new action drops the redo branch
+    c.Undo();
+    c.BeginAction("nothing");
+    c.EndAction();
+    EXPECT_TRUE(c.CanRedo());
+    c.TogglePin(0);
+    EXPECT_FALSE(c.CanRedo());
+}
+
+// The history is bounded by memory, not by a count: with a small limit old steps go,
+// the newest stays.
+TEST(SnakeController, UndoHistoryIsBoundedByMemory)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 2.0));
+    c.CloseSeeds(false);
+    for (int i = 0; i < 300; ++i) c.Step();
+    EXPECT_EQ(c.UndoSteps(), 302u) << "more than 200 steps are kept under the default 100 MB";
+    EXPECT_LT(c.UndoBytes(), size_t(100) << 20);
+    const size_t perStep = c.UndoBytes() / c.UndoSteps();
+    c.SetUndoLimit(20 * perStep);
+    c.Step();
+    EXPECT_LE(c.UndoBytes(), 20 * perStep + perStep);
+    EXPECT_GE(c.UndoSteps(), 10u);
+    EXPECT_LE(c.UndoSteps(), 22u);
+    int undone = 0;
+    while (c.Undo()) ++undone;
+    EXPECT_GE(undone, 10);
+    EXPECT_EQ(c.SnakeCount(), 1) << "the oldest steps (seeds, build) were dropped";
 }
 
 TEST(SnakeController, SaveLoadRoundTripKeepsSnakesPinsAndParams)
@@ -417,4 +506,25 @@ TEST(SnakeController, BoundaryAndSeveralComponents)
         for (auto &p : c.Get(0).positions())
             for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(p[k]));
     }
+}
+
+// Building a second snake leaves the first one as it was, converged included.
+TEST(SnakeController, BuildingASecondSnakeKeepsTheFirstConverged)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 2.0));
+    c.CloseSeeds(false);
+    c.Run(2000);
+    ASSERT_TRUE(c.Get(0).Converged());
+    SnakeParams p = c.Params();
+    p.alpha = 0.2;
+    c.SetNewSnakeParams(p);
+    std::vector<vcg::Point3d> ring{{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+    c.SetSeeds(gs_test::NearestVertices(m, ring));
+    c.CloseSeeds(true);
+    EXPECT_TRUE(c.Get(0).Converged());
+    EXPECT_DOUBLE_EQ(c.Get(1).Params().alpha, 0.2);
+    EXPECT_DOUBLE_EQ(c.Get(0).Params().alpha, SnakeParams().alpha);
 }

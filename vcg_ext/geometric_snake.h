@@ -450,6 +450,43 @@ private:
     std::deque<double> moveHistory, travelHistory;
     std::deque<std::vector<vcg::Point3d>> posHistory;
 
+public:
+    /// Everything a user sees of the snake (curve, pins, parameters, counters, convergence),
+    /// for an undo history kept outside the snake (vcg_ext/snake_undo.h, SnakeController).
+    struct Memento
+    {
+        decltype(st) curve;
+        SnakeStats stats;
+        bool coarseStage = true;
+        decltype(moveHistory) moves, travels;
+        decltype(posHistory) positions;
+        std::vector<int> seeds;
+        std::vector<SurfacePoint> seedPoints;
+        std::vector<SnakeSample> initialSamples;
+        std::vector<SurfacePoint> initialPolyline;
+    };
+    Memento Save() const
+    {
+        return Memento{st, stats, coarseStage, moveHistory, travelHistory, posHistory, seedVertices, seedPoints,
+                       initialSamples, initialPolyline};
+    }
+    void Restore(const Memento &m)
+    {
+        st = m.curve;
+        stats = m.stats;
+        coarseStage = m.coarseStage;
+        moveHistory = m.moves;
+        travelHistory = m.travels;
+        posHistory = m.positions;
+        seedVertices = m.seeds;
+        seedPoints = m.seedPoints;
+        initialSamples = m.initialSamples;
+        initialPolyline = m.initialPolyline;
+        splines.clear();
+    }
+
+private:
+
     static double msSince(clock::time_point t0)
     {
         return std::chrono::duration<double, std::milli>(clock::now() - t0).count();

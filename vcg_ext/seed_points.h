@@ -339,11 +339,15 @@ public:
             ScalarType dist = searchMax;
             CoordType closest(0, 0, 0);
             DistanceFunctor fn;
-            FaceType *f = grid.GetClosest(fn, marker, q, searchMax, dist, closest);
+            // A point beyond the limit from the bounding box never reaches the grid: vcglib's
+            // grid turns coordinates into int cell indices, undefined far outside (fuzz_seed_points).
+            const double boxDist = BoxDistance(box, pts[i]);
+            FaceType *f = boxDist <= maxD ? grid.GetClosest(fn, marker, q, searchMax, dist, closest) : nullptr;
             const std::string who = "Seed point " + std::to_string(i + 1) + " (" + Fmt(pts[i][0]) + " " +
                                     Fmt(pts[i][1]) + " " + Fmt(pts[i][2]) + ")";
             if (f == nullptr || !(double(dist) <= maxD))
-                throw SnakeError(who + " is " + (f == nullptr ? "more than " + Fmt(4 * maxD) : Fmt(double(dist))) +
+                throw SnakeError(who + " is " +
+                                 (f == nullptr ? "more than " + Fmt(std::max(boxDist, 4 * maxD)) : Fmt(double(dist))) +
                                  " away from the surface, farther than 10% of the bounding box diagonal (" +
                                  Fmt(maxD) + "). Give points on or near the mesh, in the mesh's own coordinates.");
             const int fi = int(f - &*m.face.begin());
@@ -362,13 +366,28 @@ public:
         return r;
     }
 
+    /// Distance from p to the box (0 inside).
+    static double BoxDistance(const vcg::Box3d &b, const vcg::Point3d &p)
+    {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double e = std::max(0.0, std::max(b.min[k] - p[k], p[k] - b.max[k]));
+            d2 += e * e;
+        }
+        return std::sqrt(d2);
+    }
+
     /// Barycentric coordinates of a point of face f (clamped into the triangle).
     static vcg::Point3d Bary(const FaceType &f, const vcg::Point3d &p)
     {
         vcg::Triangle3<double> t(vcg::Point3d::Construct(f.cV(0)->cP()), vcg::Point3d::Construct(f.cV(1)->cP()),
                                  vcg::Point3d::Construct(f.cV(2)->cP()));
         vcg::Point3d b;
-        if (!vcg::InterpolationParameters(t, p, b)) { // degenerate face: the nearest corner
+        // (vcglib's "false" also means "a hair outside", which a closest point on an edge can be)
+        vcg::InterpolationParameters(t, p, b);
+        if (!std::isfinite(b[0]) || !std::isfinite(b[1]) || !std::isfinite(b[2]) ||
+            !((t.cP(0) * b[0] + t.cP(1) * b[1] + t.cP(2) * b[2] - p).Norm() <= 1e-6 * std::max(1.0, p.Norm())) ||
+            MeshValidation<MeshType>::IsDegenerate(f)) { // degenerate face: the nearest corner
             int best = 0;
             for (int k = 1; k < 3; ++k)
                 if ((t.cP(k) - p).SquaredNorm() < (t.cP(best) - p).SquaredNorm()) best = k;

@@ -7,9 +7,15 @@
 // parameters, energy settings) saved to / restored from JSON, e.g. the sidecar file
 // <mesh>.snakes.json next to the mesh, with a throttled autosave.
 //
+// Undo works in the units a user thinks in: every user action is one step of a history of
+// whole-session snapshots (vcg_ext/snake_undo.h, bounded by memory). A Run, a drag (moves
+// grouped with BeginAction/EndAction), a Build, a seed click are each one step; the
+// snapshots share the snakes an action did not touch.
+//
 // Every user input is validated: bad input throws vcg::tri::SnakeError with a message
 // for the user, and leaves the controller unchanged.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -28,6 +34,7 @@
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_surface.h>
+#include <vcg_ext/snake_undo.h>
 #include <vcg_ext/surface_point.h>
 
 namespace vcg {
@@ -67,6 +74,7 @@ public:
             surface->SetEnergyFromQuality();
             for (auto &s : snakes) s->EnergyChanged();
         }
+        saved.assign(snakes.size(), nullptr);
         touch("energy");
     }
     /// Any quality field can drive a snake: take the current vertex quality as the energy
@@ -79,6 +87,7 @@ public:
             surface->SetEnergyFromQuality();
             for (auto &s : snakes) s->EnergyChanged();
         }
+        saved.assign(snakes.size(), nullptr);
         touch("energy");
     }
     bool EnergyFromQuality() const { return energyFromQuality; }
@@ -151,6 +160,7 @@ public:
     {
         checkVertex(v);
         if (!seeds.empty() && seeds.back() == v) return -1;
+        record("seed");
         seeds.push_back(v);
         touch("seed");
         return v;
@@ -181,6 +191,7 @@ public:
             kept.push_back(v);
             last = v;
         }
+        if (!kept.empty()) record("stroke");
         for (int v : kept) seeds.push_back(v);
         if (!kept.empty()) touch("stroke");
         return int(kept.size());
@@ -217,6 +228,7 @@ public:
             used[bi] = 1;
             order.push_back(sel[bi]);
         }
+        record("selection seeds");
         seeds = order;
         touch("selection seeds");
         return int(seeds.size());
@@ -226,6 +238,7 @@ public:
     void SetSeeds(const std::vector<int> &s)
     {
         for (int v : s) checkVertex(v);
+        record("seeds");
         seeds = s;
         touch("seeds");
     }
@@ -233,18 +246,22 @@ public:
     void RemoveSeed(int i)
     {
         if (i < 0 || i >= int(seeds.size())) throw SnakeError("Geometric snake: no seed " + std::to_string(i) + ".");
+        record("remove seed");
         seeds.erase(seeds.begin() + i);
         touch("remove seed");
     }
     bool RemoveLastSeed()
     {
         if (seeds.empty()) return false;
+        record("remove seed");
         seeds.pop_back();
         touch("remove seed");
         return true;
     }
     void ClearSeeds()
     {
+        if (seeds.empty()) return;
+        record("clear seeds");
         seeds.clear();
         touch("clear seeds");
     }
@@ -276,7 +293,9 @@ public:
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(surface, params));
         sn->InitFromSeeds(s, closed, seedCost);
+        record("build");
         snakes.push_back(std::move(sn));
+        saved.push_back(nullptr);
         selected = int(snakes.size()) - 1;
         seeds.clear();
         touch("create snake");
@@ -291,7 +310,9 @@ public:
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(surface, params));
         sn->InitFromSeedPoints(pts, closed, seedCost);
+        record("build");
         snakes.push_back(std::move(sn));
+        saved.push_back(nullptr);
         selected = int(snakes.size()) - 1;
         touch("create snake");
         return selected;
@@ -315,13 +336,18 @@ public:
     void DeleteSnake(int i)
     {
         checkSnake(i);
+        record("delete snake");
         snakes.erase(snakes.begin() + i);
+        saved.erase(saved.begin() + i);
         if (selected >= int(snakes.size())) selected = int(snakes.size()) - 1;
         touch("delete snake");
     }
     void DeleteAllSnakes()
     {
+        if (snakes.empty()) return;
+        record("delete all snakes");
         snakes.clear();
+        saved.clear();
         selected = -1;
         touch("delete all snakes");
     }
@@ -331,13 +357,22 @@ public:
     {
         Snake &s = sel();
         checkMesh();
+        const bool pushed = record("step");
         auto t0 = std::chrono::steady_clock::now();
-        double mv = s.Step();
+        double mv;
+        try {
+            mv = s.Step();
+        } catch (...) {
+            if (pushed) history.DropLast();
+            throw;
+        }
         lastOpMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        computeMs += lastOpMs;
         for (const auto &x : s.Samples()) {
             vcg::Point3d p = x.p.Pd(mesh);
             if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) || !std::isfinite(mv)) {
-                s.Undo();
+                s.Undo(); // the engine's own one-operation step back
+                if (pushed) history.DropLast();
                 throw SnakeError("Geometric snake: the operation produced invalid coordinates and was undone.");
             }
         }
@@ -348,6 +383,7 @@ public:
     int Run(int maxOps)
     {
         if (maxOps < 0 || maxOps > 1000000) throw SnakeError("Geometric snake: the operation limit must be in [0, 1000000].");
+        Action run(*this, "run");
         int ops = 0;
         while (ops < maxOps && !sel().Converged()) {
             Step();
@@ -378,12 +414,18 @@ public:
     void MoveSample(int i, const SurfacePoint &p, bool pin)
     {
         checkSurfacePoint(p);
-        sel().MoveSample(i, p, pin);
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        record("move sample");
+        s.MoveSample(i, p, pin);
         touch("move sample");
     }
     void SetFixed(int i, bool fixed)
     {
-        sel().SetFixed(i, fixed);
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        record(fixed ? "pin" : "unpin");
+        s.SetFixed(i, fixed);
         touch(fixed ? "pin" : "unpin");
     }
     bool TogglePin(int i)
@@ -400,47 +442,98 @@ public:
         Snake &s = sel();
         if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
         int gap = (!s.Closed() && i == s.SampleCount() - 1) ? i - 1 : i;
-        int r = s.InsertSample(gap);
+        const bool pushed = record("insert sample");
+        int r;
+        try { r = s.InsertSample(gap); }
+        catch (...) { if (pushed) history.DropLast(); throw; }
         touch("insert sample");
         return r;
     }
     void DeleteSample(int i)
     {
-        sel().DeleteSample(i);
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        if (s.SampleCount() <= (s.Closed() ? 3 : 2))
+            throw SnakeError("Geometric snake: cannot delete, the snake would have too few samples.");
+        record("delete sample");
+        s.DeleteSample(i);
         touch("delete sample");
     }
 
-    bool CanUndo() { return SelectedSnake() && SelectedSnake()->CanUndo(); }
-    bool CanRedo() { return SelectedSnake() && SelectedSnake()->CanRedo(); }
+    // --- undo / redo of whole user actions
+    /// Groups every change until the matching EndAction into one undo step (a Run, a drag);
+    /// groups nest. An action that changes nothing leaves no step.
+    void BeginAction(const std::string &label)
+    {
+        if (actionDepth++ == 0) {
+            actionLabel = label;
+            actionRecorded = false;
+        }
+    }
+    void EndAction()
+    {
+        if (actionDepth > 0) --actionDepth;
+    }
+    bool InAction() const { return actionDepth > 0; }
+    /// BeginAction / EndAction for a scope.
+    struct Action
+    {
+        SnakeController &c;
+        Action(SnakeController &ctl, const std::string &label) : c(ctl) { c.BeginAction(label); }
+        ~Action() { c.EndAction(); }
+    };
+
+    bool CanUndo() const { return history.CanUndo(); }
+    bool CanRedo() const { return history.CanRedo(); }
+    /// The action Undo / Redo would take back / do again, e.g. "run" ("" if none).
+    std::string UndoLabel() const { return history.UndoLabel(); }
+    std::string RedoLabel() const { return history.RedoLabel(); }
+    /// Returns to the session as it was before the last action (all snakes, seeds, selection).
     bool Undo()
     {
-        Snake *s = SelectedSnake();
-        if (!s || !s->CanUndo()) return false;
-        s->Undo();
-        if (s->SampleCount() == 0) { // the state before the snake existed: not an undo step
-            s->Redo();
-            return false;
-        }
+        Session cur = snapshot();
+        size_t b = sessionBytes(cur);
+        if (!history.Undo(cur, b)) return false;
+        restore(cur);
         touch("undo");
         return true;
     }
     bool Redo()
     {
-        Snake *s = SelectedSnake();
-        if (!s || !s->Redo()) return false;
+        Session cur = snapshot();
+        size_t b = sessionBytes(cur);
+        if (!history.Redo(cur, b)) return false;
+        restore(cur);
         touch("redo");
         return true;
     }
+    /// Memory bound of the history (default 100 MB) and its current estimate.
+    void SetUndoLimit(size_t bytes) { history.SetLimit(bytes); }
+    size_t UndoBytes() const { return history.Bytes(); }
+    size_t UndoSteps() const { return history.UndoCount(); }
+    /// Compute time of all operations so far (ms): a Run's wall time is compared to it.
+    double ComputeMs() const { return computeMs; }
 
     /// Parameters of new snakes; also applied to the selected snake.
     void SetParams(const SnakeParams &p)
     {
         p.Validate();
-        if (Snake *s = SelectedSnake()) s->SetParams(p);
+        Snake *s = SelectedSnake();
+        const bool same = IO::ParamsJson(p) == IO::ParamsJson(params) && (!s || IO::ParamsJson(s->Params()) == IO::ParamsJson(p));
+        if (same) return;
+        record("parameters");
+        if (s) s->SetParams(p);
         params = p;
         touch("parameters");
     }
     const SnakeParams &Params() const { return params; }
+    /// Parameters of the snakes built from now on only (the selected snake keeps its own,
+    /// and its convergence).
+    void SetNewSnakeParams(const SnakeParams &p)
+    {
+        p.Validate();
+        params = p;
+    }
     void SetSeedCost(SeedPathCost c)
     {
         if (int(c) < 0 || int(c) > 1) throw SnakeError("Geometric snake: unknown seed path cost.");
@@ -530,6 +623,8 @@ public:
             if (nsel < 0 && !nsn.empty()) nsel = 0;
 
             snakes = std::move(nsn);
+            saved.assign(snakes.size(), nullptr);
+            history.Clear();
             selected = nsel;
             params = np;
             seeds = ns;
@@ -629,6 +724,98 @@ private:
     std::string autosavePath;
     double autosaveInterval = 1.0;
     std::chrono::steady_clock::time_point lastAutosave;
+    double computeMs = 0;
+
+    // undo history: whole-session snapshots; a snake's memento is shared by all snapshots
+    // until the snake changes (saved[k] == nullptr: snake k changed since its last memento)
+    typedef std::shared_ptr<const typename Snake::Memento> MementoPtr;
+    struct Session
+    {
+        std::vector<MementoPtr> snakes;
+        int selected = -1;
+        std::vector<int> seeds;
+        SnakeParams params;
+    };
+    SnakeUndo<Session> history;
+    std::vector<MementoPtr> saved, lastPushed;
+    int actionDepth = 0;
+    bool actionRecorded = false;
+    std::string actionLabel;
+
+    Session snapshot()
+    {
+        saved.resize(snakes.size());
+        Session s;
+        for (size_t k = 0; k < snakes.size(); ++k) {
+            if (!saved[k]) saved[k] = std::make_shared<const typename Snake::Memento>(snakes[k]->Save());
+            s.snakes.push_back(saved[k]);
+        }
+        s.selected = selected;
+        s.seeds = seeds;
+        s.params = params;
+        return s;
+    }
+    /// Snakes are restored in place (references to them stay valid while they exist).
+    void restore(const Session &s)
+    {
+        if (!s.snakes.empty()) EnsureSurface();
+        snakes.resize(std::min(snakes.size(), s.snakes.size()));
+        saved.resize(snakes.size());
+        for (size_t k = 0; k < s.snakes.size(); ++k) {
+            if (k >= snakes.size()) {
+                snakes.emplace_back(new Snake(surface, s.params));
+                saved.push_back(nullptr);
+            }
+            if (saved[k] != s.snakes[k]) snakes[k]->Restore(*s.snakes[k]);
+            saved[k] = s.snakes[k];
+        }
+        selected = s.selected;
+        seeds = s.seeds;
+        params = s.params;
+    }
+    static size_t mementoBytes(const typename Snake::Memento &m)
+    {
+        size_t b = sizeof(m) + m.curve.samples.capacity() * sizeof(SnakeSample) +
+                   (m.initialSamples.capacity()) * sizeof(SnakeSample) +
+                   m.initialPolyline.capacity() * sizeof(SurfacePoint) + m.seeds.capacity() * sizeof(int);
+        for (const auto &g : m.curve.gaps)
+            b += sizeof(g) + g.faces.capacity() * sizeof(int) + g.crossings.capacity() * sizeof(SurfacePoint);
+        b += (m.stats.msEmbedding.capacity() + m.stats.msUpdate.capacity() + m.stats.msOperation.capacity()) * sizeof(double);
+        for (const auto &p : m.positions) b += p.capacity() * sizeof(vcg::Point3d);
+        return b;
+    }
+    /// The memory a snapshot adds: its snakes' mementos, except those it shares with
+    /// `previous` (the snakes the last action did not touch).
+    size_t sessionBytes(const Session &s, const std::vector<MementoPtr> *previous = nullptr) const
+    {
+        size_t b = sizeof(Session) + s.seeds.capacity() * sizeof(int);
+        for (const auto &m : s.snakes)
+            if (!previous || std::find(previous->begin(), previous->end(), m) == previous->end()) b += mementoBytes(*m);
+        return b;
+    }
+    /// Called before a change: the first change of an action records the session as it
+    /// was. Returns true if this call pushed an undo step.
+    bool record(const char *label)
+    {
+        if (actionDepth > 0) {
+            if (actionRecorded) {
+                markSelectedChanged();
+                return false;
+            }
+            actionRecorded = true;
+        }
+        Session s = snapshot();
+        history.Push(s, sessionBytes(s, &lastPushed), actionDepth > 0 ? actionLabel : std::string(label));
+        lastPushed = s.snakes;
+        markSelectedChanged();
+        return true;
+    }
+    /// Every change goes through the selected snake (or adds / removes snakes, which
+    /// resizes `saved`): its memento is outdated.
+    void markSelectedChanged()
+    {
+        if (selected >= 0 && selected < int(saved.size())) saved[selected] = nullptr;
+    }
 
     void touch(const char *op)
     {

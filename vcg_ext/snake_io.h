@@ -79,6 +79,9 @@ public:
     {
         const MeshType &m = s.GetSurface().Mesh();
         const SnakeStats &st = s.Stats();
+        // the polyline first: tracing untraced gaps may re-express the samples' barycentric
+        // coordinates, and the samples written must be those of the curve written
+        const std::vector<SurfacePoint> polyline = s.Polyline();
         json j;
         j["closed"] = s.Closed();
         j["seeds"] = s.SeedVertices();
@@ -86,7 +89,7 @@ public:
         for (const auto &p : s.SeedPoints()) j["seed_points"].push_back(PointJson(m, p));
         j["initial"] = {{"samples", SamplesJson(m, s.InitialSamples())}, {"polyline", PolylineJson(m, s.InitialPolyline())}};
         j["samples"] = SamplesJson(m, s.Samples());
-        j["polyline"] = PolylineJson(m, s.Polyline());
+        j["polyline"] = PolylineJson(m, polyline);
         j["params"] = ParamsJson(s.Params());
         j["stats"] = {{"operations", st.operations},
                       {"updates", st.updates},

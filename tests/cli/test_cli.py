@@ -256,6 +256,54 @@ class CliTests(unittest.TestCase):
         # Not a terminal: self.ok() checks there is no \r at all.
         self.ok(["snake", ICO, "--seeds", seeds, "-o", self.path("t.json")])
 
+    def test_seed_points_and_pick_points_file(self):
+        """--seed-points and --pp (MeshLab Pick Points): seeds snapped onto the surface; the path
+        starts exactly there, the snake lands on the icocube edge."""
+        _, h = ico_seeds(2.0)
+        targets = [(1.0, 1.0 - 2.0 * h, z) for z in (-0.6, -0.2, 0.2, 0.6)]
+        text = "; ".join("%r %r %r" % t for t in targets)
+        out, err = self.ok(["snake", ICO, "--seed-points", text, "-o", self.path("sp.json"), "--json-log"])
+        self.assertIn("4 seed points from the SeedPoints coordinates", err)
+        j = json.load(open(self.path("sp.json")))
+        final = sorted(math.hypot(1 - s["position"][0], 1 - s["position"][1]) / h for s in j["samples"])
+        self.assertLess(final[int(0.95 * (len(final) - 1))], 0.6, final)
+        with open(self.path("seeds.pp"), "w") as f:
+            f.write("<!DOCTYPE PickedPoints>\n<PickedPoints>\n")
+            for i, t in enumerate(targets):
+                f.write(' <point x="%r" y="%r" z="%r" active="1" name="%d"/>\n' % (t + (i,)))
+            f.write(' <point x="0" y="0" z="0" active="0" name="unplaced"/>\n</PickedPoints>\n')
+        self.ok(["path", ICO, "--pp", self.path("seeds.pp"), "-o", self.path("pp.json")])
+        pl = json.load(open(self.path("pp.json")))["polyline"]
+        self.assertLess(math.dist(pl[0], targets[0]), 0.05 * h)  # the icocube face holds the point
+        self.assertLess(math.dist(pl[-1], targets[-1]), 0.05 * h)
+        self.ok(["snake", ICO, "--pp", self.path("seeds.pp"), "-o", self.path("pp_snake.json")])
+        # Vertex seeds win over points, with a warning; both point sources at once is an error.
+        seeds, _ = ico_seeds(2.0)
+        out, err = self.ok(["path", ICO, "--seeds", seeds, "--seed-points", text, "-o", self.path("w.ply")])
+        self.assertIn("are ignored", err)
+        self.assert_error(["snake", ICO, "--seed-points", text, "--pp", self.path("seeds.pp"), "-o",
+                           self.path("never.json")], "Both SeedPoints and SeedFile")
+        self.assert_error(["snake", ICO, "--pp", self.path("missing.pp"), "-o", self.path("never.json")], "missing.pp")
+        self.assert_error(["snake", ICO, "-o", self.path("never.json")], "No seeds given")
+        self.assert_error(["snake", ICO, "--seed-points", "1 2", "-o", self.path("never.json")], "seed")
+
+    def test_soup_and_crease_energy(self):
+        """A triangle soup is refused unless --merge-duplicates; --type crease finds the cube's edges."""
+        soup_v, soup_f = [], []
+        for t in self.cube_faces:
+            soup_f.append(tuple(range(len(soup_v), len(soup_v) + 3)))
+            soup_v += [self.cube_verts[i] for i in t]
+        mlhost.write_ply(self.path("soup.ply"), soup_v, soup_f)
+        self.assert_error(["energy", self.path("soup.ply"), "-o", self.path("never.ply")], "triangle soup")
+        out, err = self.ok(["energy", self.path("soup.ply"), "--merge-duplicates", "-o", self.path("m.ply"),
+                            "--json-log"])
+        self.assertIn("merged", err)
+        self.assertEqual(len(mlhost.read_ply(self.path("m.ply")).vertices), len(self.cube_verts))
+        out, err = self.ok(["energy", self.cube, "--type", "crease", "-o", self.path("c.ply"), "--json-log"])
+        self.assertEqual(json.loads(out)["creases"], 12 * N)
+        self.assert_error(["energy", self.cube, "--type", "crease", "--crease-angle", "200", "-o",
+                           self.path("never.ply")], "--crease-angle must be in")
+
     # ------------------------------------------------------------------ errors (those of the host tests)
     def test_error_bad_seeds(self):
         out = self.path("never.ply")

@@ -51,12 +51,13 @@ class CliHostTests(unittest.TestCase):
     def path(self, name):
         return os.path.join(self.work, name)
 
-    def filter_snake(self, mesh, seeds, closed, out):
+    def filter_snake(self, mesh, seeds, closed, out, **extra):
         mlx = self.path("snake.mlx")
-        mlhost.write_mlx(mlx, [(FILTER_SNAKE, {
-            "Seeds": seeds, "Closed": closed, "Alpha": 0.05, "Beta": 0.5, "Gamma": 1.0, "ExternalWeight": 1.0,
-            "Spacing": 1.0, "MaxOperations": 500, "Method": 0, "UseQuality": False, "OutputFile": out,
-            "NewLayer": False})])
+        params = {"Seeds": seeds, "Closed": closed, "Alpha": 0.05, "Beta": 0.5, "Gamma": 1.0, "ExternalWeight": 1.0,
+                  "Spacing": 1.0, "MaxOperations": 500, "Method": 0, "UseQuality": False, "OutputFile": out,
+                  "NewLayer": False}
+        params.update(extra)
+        mlhost.write_mlx(mlx, [(FILTER_SNAKE, params)])  # write_mlx adds the newer parameters' defaults
         rc, log = mlhost.run_meshlabserver(["-i", mesh, "-s", mlx], cwd=self.work)
         self.assertEqual(rc, 0, log)
         self.assertNotIn("Geometric snake error", log)
@@ -74,7 +75,9 @@ class CliHostTests(unittest.TestCase):
         if closed:
             args.append("--closed")
         self.cli(args)
-        cl = json.load(open(self.path("cli.json")))
+        return self.assert_same(ml, json.load(open(self.path("cli.json"))), os.path.basename(mesh))
+
+    def assert_same(self, ml, cl, what):
         self.assertEqual(ml["params"], cl["params"])
         self.assertEqual(ml["closed"], cl["closed"])
         self.assertEqual(ml["stats"]["operations"], cl["stats"]["operations"])
@@ -89,7 +92,7 @@ class CliHostTests(unittest.TestCase):
             worst = max(worst, max(abs(x - y) for x, y in zip(a["position"], b["position"])))
             worst = max(worst, max(abs(x - y) for x, y in zip(a["bary"], b["bary"])))
         print("%s: %d samples, %d curve points, %d operations, largest difference %.3g"
-              % (os.path.basename(mesh), len(cl["samples"]), len(cl["polyline"]), cl["stats"]["operations"], worst))
+              % (what, len(cl["samples"]), len(cl["polyline"]), cl["stats"]["operations"], worst))
         self.assertLessEqual(worst, TOL)
         return cl
 
@@ -110,6 +113,15 @@ class CliHostTests(unittest.TestCase):
                  for a in (0.0, math.pi / 2, math.pi, 1.5 * math.pi)]
         j = self.assert_same_curve(mesh, ",".join(map(str, seeds)), True)
         self.assertTrue(j["closed"])
+
+    def test_same_curve_seed_points(self):
+        """Seeds as 3D points (SeedPoints / --seed-points), snapped onto the surface, beside the icocube edge."""
+        mesh = os.path.join(DATA, "icocube.ply")
+        _, h = mean_edge(mesh)
+        text = "; ".join("%r %r %r" % (1.0, 1.0 - 2.0 * h, z) for z in (-0.6, -0.2, 0.2, 0.6))
+        ml = self.filter_snake(mesh, "", False, self.path("filter.json"), SeedPoints=text)
+        self.cli(["snake", mesh, "--seed-points", text, "-o", self.path("cli.json"), "-q"])
+        self.assert_same(ml, json.load(open(self.path("cli.json"))), "icocube.ply (seed points)")
 
     def test_same_energy(self):
         mesh = os.path.join(DATA, "fandisk.ply")

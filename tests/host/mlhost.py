@@ -94,13 +94,18 @@ def meshlabserver_cmd(authfile):
     return [xvfb, "-a", "-f", authfile, "-s", "-screen 0 640x480x24", exe]
 
 
-def run_meshlabserver(args, timeout=300, cwd=None):
+def run_meshlabserver(args, timeout=300, cwd=None, reuse_display=False):
     """Runs `xvfb-run -a meshlabserver ARGS`; returns (returncode, combined output).
-    A negative returncode means meshlabserver was killed by a signal (a crash)."""
+    A negative returncode means meshlabserver was killed by a signal (a crash).
+    reuse_display: run on $DISPLAY when set (a script already under xvfb-run), no Xvfb per run."""
     env = dict(os.environ)
     env.setdefault("LIBGL_ALWAYS_SOFTWARE", "1")
     env.setdefault("XDG_RUNTIME_DIR", "/tmp/runtime-%d" % os.getuid())
     os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
+    if reuse_display and env.get("DISPLAY"):
+        p = subprocess.run([shutil.which("meshlabserver")] + list(args), stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, timeout=timeout, cwd=cwd, env=env)
+        return p.returncode, p.stdout.decode("utf-8", "replace")
     with tempfile.TemporaryDirectory(prefix="gs-xauth-", ignore_cleanup_errors=True) as auth:
         p = subprocess.run(meshlabserver_cmd(os.path.join(auth, "Xauthority")) + list(args),
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,

@@ -1,0 +1,1 @@
+<PickedPoints><point x="1" y="0.5" z="0.5" active="1"/><point x="1" y="-0.5" z="0.5"/><point x="1" y="0" z="-0.5" active="1"/></PickedPoints>

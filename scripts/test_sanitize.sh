@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The hardening stage of scripts/test.sh, in its own build folder build-asan/ (clang):
+#  - the unit tests built with AddressSanitizer + UndefinedBehaviorSanitizer and asserts on
+#    (GS_SANITIZE=ON): any report fails the test (-fno-sanitize-recover);
+#  - the libFuzzer targets of fuzz/ (GS_BUILD_FUZZ=ON), each run for GS_FUZZ_SECONDS (60 s)
+#    from its seed corpus fuzz/corpus/<target>/ (CTest label `fuzz`).
+# No plugins here: MeshLab itself is not built with ASan. Needs build/meshlab-src (setup.sh).
+#   usage: scripts/test_sanitize.sh [extra ctest args]      env: GS_FUZZ_SECONDS (default 60)
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+cd "$here"
+src=${MESHLAB_SOURCE_DIR:-$here/build/meshlab-src}
+[ -d "$src/vcglib" ] || bash scripts/setup.sh "$here/build"
+echo "[sanitize] configure + build (build-asan/, clang, ASan + UBSan, libFuzzer)"
+CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DGS_SANITIZE=ON -DGS_BUILD_FUZZ=ON -DGS_BUILD_PLUGINS=OFF -DGS_BUILD_BENCH=OFF -DGS_BUILD_CLI=OFF \
+  -DGS_FUZZ_SECONDS="${GS_FUZZ_SECONDS:-60}" -DMESHLAB_SOURCE_DIR="$src"
+cmake --build build-asan -j2
+echo "[sanitize] ctest -L 'unit|fuzz' (build-asan/)"
+cd build-asan
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
+ctest --output-on-failure -j2 -L 'unit|fuzz' "$@"
+echo "[sanitize] sanitizer unit tests and fuzzers clean"
