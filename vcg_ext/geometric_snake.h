@@ -464,11 +464,12 @@ public:
         std::vector<SurfacePoint> seedPoints;
         std::vector<SnakeSample> initialSamples;
         std::vector<SurfacePoint> initialPolyline;
+        double runLength = -1, lastLength = -1;
     };
     Memento Save() const
     {
         return Memento{st, stats, coarseStage, moveHistory, travelHistory, posHistory, seedVertices, seedPoints,
-                       initialSamples, initialPolyline};
+                       initialSamples, initialPolyline, runLength, lastLength};
     }
     void Restore(const Memento &m)
     {
@@ -482,7 +483,9 @@ public:
         seedPoints = m.seedPoints;
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
-        splines.clear();
+        runLength = m.runLength;
+        lastLength = m.lastLength;
+        motion.ClearCache();
     }
 
 private:
