@@ -607,7 +607,10 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	for (size_t i = 1; i < curve.size(); ++i) len += (curve[i] - curve[i - 1]).Norm();
 	Log("Geometric snake (%s, %s): %d samples, %d operations, %s, curve of %d points and length %g.",
 	    closed ? "closed" : "open", method == 0 ? "local embedding" : "3D update + projection", snake.SampleCount(),
-	    st.operations, st.converged ? "converged" : "NOT converged (raise MaxOperations?)", int(curve.size()), len);
+	    st.operations, st.converged ? "converged" : st.stopped ? "STOPPED (see the warning)" : "NOT converged (raise MaxOperations?)",
+	    int(curve.size()), len);
+	Log("Geometric snake length scale: %g (median edge length along the seed path; spacing, step caps and tolerances "
+	    "are measured in it; the mesh's mean edge length is %g).", snake.LengthScale(), ctl.EnsureSurface().MeanEdge());
 	Log("Geometric snake timing: %.1f ms total, median %.3f ms per operation, %.3f ms per embedding, %.4f ms per "
 	    "update (%d embeddings, %d updates).", timer.nsecsElapsed() * 1e-6,
 	    tri::SnakeStats::Median(st.msOperation), tri::SnakeStats::Median(st.msEmbedding),

@@ -156,6 +156,74 @@ void MakeFlatGrid(M &m, int n, double size = 1.0)
     detail::Finalize(m);
 }
 
+/// Flat plate in the z = 0 plane: nx x ny cells of cellX x cellY (anisotropic when they
+/// differ), each split in two triangles. With jitter > 0 every vertex moves randomly by up to
+/// jitter * min(cellX, cellY) in x and y (in x only on row `straightRow`, which stays a
+/// straight mesh line) and each cell takes a random diagonal: an irregular triangulation.
+template <class M>
+void MakeGridPlate(M &m, int nx, int ny, double cellX, double cellY, double jitter = 0, unsigned seed = 1,
+                   int straightRow = -1)
+{
+    typedef typename M::CoordType C;
+    m.Clear();
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> U(-1, 1);
+    const double amp = jitter * std::min(cellX, cellY);
+    vcg::tri::Allocator<M>::AddVertices(m, (nx + 1) * (ny + 1));
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+            double x = cellX * i, y = cellY * j;
+            if (amp > 0) {
+                if (i > 0 && i < nx) x += amp * U(rng);
+                if (j > 0 && j < ny && j != straightRow) y += amp * U(rng);
+            }
+            m.vert[j * (nx + 1) + i].P() = C(x, y, 0);
+        }
+    vcg::tri::Allocator<M>::AddFaces(m, 2 * nx * ny);
+    int f = 0;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            auto *a = &m.vert[j * (nx + 1) + i], *b = &m.vert[j * (nx + 1) + i + 1];
+            auto *c = &m.vert[(j + 1) * (nx + 1) + i + 1], *d = &m.vert[(j + 1) * (nx + 1) + i];
+            if (amp > 0 && U(rng) < 0) { // the other diagonal
+                m.face[f].V(0) = a, m.face[f].V(1) = b, m.face[f].V(2) = d, ++f;
+                m.face[f].V(0) = b, m.face[f].V(1) = c, m.face[f].V(2) = d, ++f;
+            } else {
+                m.face[f].V(0) = a, m.face[f].V(1) = b, m.face[f].V(2) = c, ++f;
+                m.face[f].V(0) = a, m.face[f].V(1) = c, m.face[f].V(2) = d, ++f;
+            }
+        }
+    detail::Finalize(m);
+}
+
+/// Flat square plate [0,size]^2 (n x n cells) with a smooth Gaussian bump of the given height
+/// and width (standard deviation) at its centre: a smooth feature with no rim.
+template <class M>
+void MakeBumpPlate(M &m, int n, double size, double height, double sigma)
+{
+    MakeGridPlate(m, n, n, size / n, size / n);
+    for (auto &v : m.vert) {
+        if (v.IsD()) continue;
+        const double x = v.cP()[0] - size / 2, y = v.cP()[1] - size / 2;
+        v.P()[2] = typename M::ScalarType(height * std::exp(-(x * x + y * y) / (2 * sigma * sigma)));
+    }
+    detail::Finalize(m);
+}
+
+/// Median length of the mesh's edges (each counted from every face that has it).
+template <class M>
+double MedianEdgeLength(const M &m)
+{
+    std::vector<double> l;
+    for (const auto &f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k)
+                l.push_back(vcg::Distance(vcg::Point3d::Construct(f.cP(k)), vcg::Point3d::Construct(f.cP((k + 1) % 3))));
+    if (l.empty()) return 0;
+    std::nth_element(l.begin(), l.begin() + l.size() / 2, l.end());
+    return l[l.size() / 2];
+}
+
 /// Moves every vertex by fractionOfMeanEdge * (mean edge length) along a random direction
 /// (deterministic for a given seed).
 template <class M>

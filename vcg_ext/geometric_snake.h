@@ -17,90 +17,18 @@
 #include <Eigen/Dense>
 
 #include <vcg_ext/face_path.h>
-#include <vcg_ext/local_region.h>
-#include <vcg_ext/region_walk.h>
 #include <vcg_ext/seed_path.h>
-#include <vcg_ext/snake_partition.h>
+#include <vcg_ext/snake_curve.h>
 #include <vcg_ext/snake_error.h>
-#include <vcg_ext/snake_spline.h>
+#include <vcg_ext/snake_history.h>
+#include <vcg_ext/snake_partition.h>
+#include <vcg_ext/snake_segment_motion.h>
 #include <vcg_ext/snake_surface.h>
 #include <vcg_ext/surface_point.h>
 #include <vcg_ext/surface_projection.h>
-#include <vcg_ext/virtual_boundary_param.h>
 
 namespace vcg {
 namespace tri {
-
-/// How the snake is kept on the surface.
-enum class SnakeMethod {
-    LocalEmbedding = 0, ///< the paper's method: Eq. 4 in the plane of a local embedding (Sec. 4.2, 5)
-    Projection3D = 1    ///< the naive method the paper rejected: Eq. 4 in space, then project (Sec. 4.2)
-};
-
-/// Snake parameters. Positions are measured in units of the mesh's mean edge length and
-/// the energy lies in [0,1], so every parameter is scale-free: the same values work on any mesh.
-struct SnakeParams
-{
-    double alpha = 0.05;         ///< tension, Eq. 2
-    double beta = 0.5;           ///< rigidity, Eq. 2
-    double gamma = 1.0;          ///< inverse time step of Eq. 4 (larger = smaller, stabler steps)
-    double externalWeight = 1.0; ///< weight of the feature force f_x
-    double spacing = 1.0;        ///< sample spacing, in mean edge lengths
-    int updatesPerOperation = 5; ///< Eq. 4 updates per embedding (Sec. 7)
-    int segmentSamples = 64;     ///< partition size (Sec. 5.1)
-    int virtualLayers = 3;       ///< rings of virtual vertices of the embedding (Sec. 5.3)
-    double maxStep = 0.5;        ///< cap on one update's move, in local edge lengths
-    double convergenceTol = 0.02;///< converged: largest move per operation below this (edge lengths) ...
-    int convergenceWindow = 3;   ///< ... for this many operations in a row
-    SnakeMethod method = SnakeMethod::LocalEmbedding;
-
-    /// Refuses absurd values with a message for the user.
-    void Validate() const
-    {
-        auto bad = [](const std::string &what) { throw SnakeError("Geometric snake: " + what); };
-        auto finite = [](double v) { return std::isfinite(v); };
-        if (!finite(alpha) || alpha < 0 || alpha > 1e4) bad("Alpha must be in [0, 10000].");
-        if (!finite(beta) || beta < 0 || beta > 1e4) bad("Beta must be in [0, 10000].");
-        if (!finite(gamma) || gamma <= 0 || gamma > 1e6) bad("Gamma must be in (0, 1e6].");
-        if (!finite(externalWeight) || externalWeight < 0 || externalWeight > 1e4)
-            bad("ExternalWeight must be in [0, 10000].");
-        if (!finite(spacing) || spacing < 0.05 || spacing > 1000) bad("Spacing must be in [0.05, 1000] edge lengths.");
-        if (updatesPerOperation < 1 || updatesPerOperation > 1000) bad("Updates per operation must be in [1, 1000].");
-        if (segmentSamples < 6 || segmentSamples > 100000) bad("Segment size must be in [6, 100000] samples.");
-        if (virtualLayers < 1 || virtualLayers > 10) bad("Virtual layers must be in [1, 10].");
-        if (!finite(maxStep) || maxStep <= 0 || maxStep > 10) bad("Max step must be in (0, 10] edge lengths.");
-        if (!finite(convergenceTol) || convergenceTol <= 0 || convergenceTol > 10)
-            bad("Convergence tolerance must be in (0, 10] edge lengths.");
-        if (convergenceWindow < 1 || convergenceWindow > 1000) bad("Convergence window must be in [1, 1000].");
-    }
-};
-
-struct SnakeSample
-{
-    SurfacePoint p;
-    bool fixed = false;
-    /// Step control (not saved): the move cap of this sample shrinks when an update raised
-    /// its energy and grows back while it goes downhill, so samples settle in wells.
-    double trust = 1.0;
-};
-
-/// Timings and counters, for the Log, the JSON output and the benchmarks.
-struct SnakeStats
-{
-    int operations = 0, updates = 0, embeddings = 0, regionFailures = 0;
-    bool converged = false;
-    double secondsTotal = 0;
-    double lastMaxMove = 0; ///< in mean edge lengths
-    std::vector<double> msEmbedding, msUpdate, msOperation;
-    std::vector<std::string> warnings;
-
-    static double Median(std::vector<double> v)
-    {
-        if (v.empty()) return 0;
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        return v[v.size() / 2];
-    }
-};
 
 /// A geometric snake on a triangle mesh (Lee & Lee 2002), with the session API used by the
 /// batch filter and by the edit tool: create, step, run, edit points, pin, insert, delete,
@@ -114,17 +42,10 @@ public:
     typedef typename MeshType::VertexType VertexType;
     typedef SnakeSurface<MeshType> Surface;
 
-    /// The polyline between sample i and i+1 (Sec. 4.1): the faces it crosses and the
-    /// edge-crossing points, both valid after a trace.
-    struct Gap
-    {
-        std::vector<int> faces;
-        std::vector<SurfacePoint> crossings;
-        bool traced = false;
-    };
+    typedef SnakeGap Gap;
 
     GeometricSnake(std::shared_ptr<Surface> surface, const SnakeParams &params = SnakeParams())
-        : surf(std::move(surface))
+        : surf(std::move(surface)), motion(surf)
     {
         if (!surf) throw SnakeError("Geometric snake: no surface.");
         params.Validate();
@@ -157,17 +78,23 @@ public:
         std::vector<double> cum(pv.size(), 0.0);
         for (size_t i = 1; i < pv.size(); ++i) cum[i] = cum[i - 1] + dist(pv[i - 1], pv[i]);
         double L = cum.back();
-        double d = st.params.spacing * surf->MeanEdge();
+        // The snake's length unit: the median edge length along its seed path, so that one
+        // set of parameters fits meshes whose edge lengths vary by 10-100x.
+        std::vector<double> pathEdges;
+        for (size_t i = 1; i < pv.size(); ++i) pathEdges.push_back(cum[i] - cum[i - 1]);
+        const double unit = medianPositive(pathEdges);
+        double d = st.params.spacing * unit;
         if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
         n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError(tooManySamples(n, L, pv.size() - (closed ? 1 : 0)));
+        if (n > 200000) throw SnakeError(tooManySamples(n, L, unit, pv.size() - (closed ? 1 : 0)));
         double step = closed ? L / double(n) : L / double(n - 1);
 
         pushUndo();
         st.samples.clear();
         st.gaps.clear();
         st.closed = closed;
+        st.unit = unit;
         std::vector<double> sampleArc;
         size_t e = 0;
         for (long k = 0; k < n; ++k) {
@@ -237,17 +164,21 @@ public:
         std::vector<double> cum(pv.size(), 0.0);
         for (size_t i = 1; i < pv.size(); ++i) cum[i] = cum[i - 1] + (pv[i].Pd(m) - pv[i - 1].Pd(m)).Norm();
         const double L = cum.back();
-        const double d = st.params.spacing * surf->MeanEdge();
+        // The length unit: the median edge of the faces the path crosses (the pieces
+        // themselves can be far longer than any edge on a CAD face).
+        const double unit = medianPositive(faceEdges(pieceFace));
+        const double d = st.params.spacing * unit;
         if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
         n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError(tooManySamples(n, L, pv.size() - (closed ? 1 : 0)));
+        if (n > 200000) throw SnakeError(tooManySamples(n, L, unit, pv.size() - (closed ? 1 : 0)));
         const double step = closed ? L / double(n) : L / double(n - 1);
 
         pushUndo();
         st.samples.clear();
         st.gaps.clear();
         st.closed = closed;
+        st.unit = unit;
         std::vector<double> sampleArc;
         size_t e = 0;
         for (long k = 0; k < n; ++k) {
@@ -280,15 +211,23 @@ public:
     }
 
     /// Restores samples (e.g. from JSON). Gaps are re-projected on the next operation.
-    void InitFromSamples(const std::vector<SnakeSample> &samples, bool closed)
+    /// `lengthScale`: the snake's length unit (LengthScale()); 0 = the median edge length of
+    /// the samples' faces.
+    void InitFromSamples(const std::vector<SnakeSample> &samples, bool closed, double lengthScale = 0)
     {
         if (int(samples.size()) < (closed ? 3 : 2)) throw SnakeError("Geometric snake: too few samples.");
         if (samples.size() > 200000)
             throw SnakeError("Geometric snake: " + std::to_string(samples.size()) + " samples are too many (at most 200000).");
         for (const auto &s : samples) checkPoint(s.p);
+        if (!(lengthScale > 0) || !std::isfinite(lengthScale)) {
+            std::vector<int> faces;
+            for (const auto &s : samples) faces.push_back(s.p.face);
+            lengthScale = medianPositive(faceEdges(faces));
+        }
         pushUndo();
         st.samples = samples;
         st.closed = closed;
+        st.unit = lengthScale;
         st.gaps.assign(numGaps(), Gap());
         if (initialSamples.empty()) {
             initialSamples = st.samples;
@@ -301,7 +240,7 @@ public:
     /// One snake operation (Sec. 4.3, Fig. 1): partition, then for every segment build the
     /// local region, embed it, map samples and energy gradients into the plane, do up to
     /// `updatesPerOperation` updates of Eq. 4 and map back; then the overlapping segments
-    /// across the borders. Returns the largest sample move in mean edge lengths.
+    /// across the borders. Returns the largest sample move in local length units (LengthScale()).
     double Step()
     {
         if (st.samples.empty()) throw SnakeError("Geometric snake: the snake has no samples.");
@@ -309,16 +248,18 @@ public:
         pushUndo();
         auto t0 = clock::now();
         std::vector<vcg::Point3d> before = positions();
+        if (runLength < 0 && st.closed) runLength = lastLength = loopLength(before, true);
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
-        else stepProjection();
+        else motion.StepProjection(st, stats, frame());
         std::vector<vcg::Point3d> after = positions();
-        double maxMove = curveMove(before, after) / surf->MeanEdge();
+        double maxMove = curveMove(before, after) / st.unit;
         stats.lastMaxMove = maxMove;
         stats.operations++;
         double ms = msSince(t0);
         stats.msOperation.push_back(ms);
         stats.secondsTotal += ms / 1000.0;
         updateConvergence(maxMove, after);
+        checkCollapse(after);
         return maxMove;
     }
 
@@ -327,13 +268,12 @@ public:
     {
         if (maxOperations < 0 || maxOperations > 10000000) throw SnakeError("Geometric snake: absurd operation limit.");
         pushUndo();
-        bool keep = keepUndo;
-        keepUndo = false; // one undo step for the whole run
-        for (int op = 0; op < maxOperations && !stats.converged; ++op) {
+        bool keep = history.Suspend(true); // one undo step for the whole run
+        for (int op = 0; op < maxOperations && !stats.converged && !stats.stopped; ++op) {
             Step();
             if (progress && !progress(op)) break;
         }
-        keepUndo = keep;
+        history.Suspend(keep);
         return stats.converged;
     }
 
@@ -416,7 +356,7 @@ public:
         p.Validate();
         pushUndo();
         st.params = p;
-        splines.clear();
+        motion.ClearCache();
         resetRun();
     }
 
@@ -424,25 +364,19 @@ public:
     void EnergyChanged() { resetRun(); }
 
     // ----------------------------------------------------------------- undo / redo
-    bool CanUndo() const { return !undoStack.empty(); }
-    bool CanRedo() const { return !redoStack.empty(); }
+    bool CanUndo() const { return history.CanUndo(); }
+    bool CanRedo() const { return history.CanRedo(); }
     bool Undo()
     {
-        if (undoStack.empty()) return false;
-        redoStack.push_back(st);
-        st = undoStack.back();
-        undoStack.pop_back();
-        splines.clear();
+        if (!history.Undo(st)) return false;
+        motion.ClearCache();
         resetRun();
         return true;
     }
     bool Redo()
     {
-        if (redoStack.empty()) return false;
-        undoStack.push_back(st);
-        st = redoStack.back();
-        redoStack.pop_back();
-        splines.clear();
+        if (!history.Redo(st)) return false;
+        motion.ClearCache();
         resetRun();
         return true;
     }
@@ -452,6 +386,9 @@ public:
     int SampleCount() const { return int(st.samples.size()); }
     bool Closed() const { return st.closed; }
     const SnakeParams &Params() const { return st.params; }
+    /// The snake's length unit: spacing, step caps and tolerances are measured in it. The
+    /// median edge length of its seed path (a local scale: meshes mix sizes).
+    double LengthScale() const { return st.unit; }
     const SnakeStats &Stats() const { return stats; }
     bool Converged() const { return stats.converged; }
     /// 1 while capturing on the coarse (smoothed) energy, 0 while settling on the precise one.
@@ -500,29 +437,21 @@ public:
 
 private:
     typedef std::chrono::steady_clock clock;
-    struct State
-    {
-        std::vector<SnakeSample> samples;
-        std::vector<Gap> gaps;
-        bool closed = false;
-        SnakeParams params;
-    };
     typedef SnakeSegment Segment;
 
     std::shared_ptr<Surface> surf;
-    State st;
-    std::deque<State> undoStack, redoStack;
-    bool keepUndo = true;
+    SnakeSegmentMotion<MeshType> motion;
+    SnakeCurve st;
+    SnakeHistory<SnakeCurve> history;
     SnakeStats stats;
     std::vector<int> seedVertices;
     std::vector<SurfacePoint> seedPoints;
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
     bool coarseStage = true;
+    double runLength = -1, lastLength = -1; // closed snakes: length at the start of the run, after the last operation
     std::deque<double> moveHistory, travelHistory;
     std::deque<std::vector<vcg::Point3d>> posHistory;
-    std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
-    LocalRegion<MeshType> region;
 
 public:
     /// Everything a user sees of the snake (curve, pins, parameters, counters, convergence),
@@ -538,11 +467,12 @@ public:
         std::vector<SurfacePoint> seedPoints;
         std::vector<SnakeSample> initialSamples;
         std::vector<SurfacePoint> initialPolyline;
+        double runLength = -1, lastLength = -1;
     };
     Memento Save() const
     {
         return Memento{st, stats, coarseStage, moveHistory, travelHistory, posHistory, seedVertices, seedPoints,
-                       initialSamples, initialPolyline};
+                       initialSamples, initialPolyline, runLength, lastLength};
     }
     void Restore(const Memento &m)
     {
@@ -556,7 +486,9 @@ public:
         seedPoints = m.seedPoints;
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
-        splines.clear();
+        runLength = m.runLength;
+        lastLength = m.lastLength;
+        motion.ClearCache();
     }
 
 private:
@@ -566,9 +498,9 @@ private:
         return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
     }
     /// The "too many samples" message, blaming the spacing or the length of the path.
-    std::string tooManySamples(long n, double L, size_t pathPoints) const
+    std::string tooManySamples(long n, double L, double unit, size_t pathPoints) const
     {
-        const double edges = L / surf->MeanEdge();
+        const double edges = L / unit;
         char buf[320];
         if (st.params.spacing < 1.0 && edges <= 200000)
             std::snprintf(buf, sizeof buf, "Geometric snake: the sample spacing (%g edge lengths) is too small for "
@@ -576,14 +508,29 @@ private:
                           st.params.spacing, n);
         else
             std::snprintf(buf, sizeof buf, "Geometric snake: the seed path is too long for one snake: %zu points, "
-                          "%.0f mean edge lengths, %ld samples at spacing %g (at most 200000). Use fewer or "
+                          "%.0f local edge lengths, %ld samples at spacing %g (at most 200000). Use fewer or "
                           "closer seeds, or a larger spacing.", pathPoints, edges, n, st.params.spacing);
         return buf;
     }
-    int numGaps() const
+    int numGaps() const { return st.NumGaps(); }
+    /// The edge lengths of the given faces, in double.
+    std::vector<double> faceEdges(const std::vector<int> &faces) const
     {
-        int n = int(st.samples.size());
-        return st.closed ? n : std::max(0, n - 1);
+        const MeshType &m = surf->Mesh();
+        std::vector<double> l;
+        for (int f : faces)
+            for (int k = 0; k < 3; ++k)
+                l.push_back(vcg::Distance(vcg::Point3d::Construct(m.face[f].cP(k)),
+                                          vcg::Point3d::Construct(m.face[f].cP((k + 1) % 3))));
+        return l;
+    }
+    /// Median of the positive values (the mesh's mean edge length if there is none).
+    double medianPositive(std::vector<double> v) const
+    {
+        v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !(x > 0) || !std::isfinite(x); }), v.end());
+        if (v.empty()) return surf->MeanEdge();
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
     }
     double dist(int a, int b) const
     {
@@ -601,17 +548,67 @@ private:
         if (!p.IsValid() || !surf->FaceUsable(p.face))
             throw SnakeError("Geometric snake: the point is not on the mesh (face " + std::to_string(p.face) + ").");
     }
-    void pushUndo()
+    void pushUndo() { history.Push(st); }
+
+    SnakeMotionFrame frame() const
     {
-        if (!keepUndo) return;
-        undoStack.push_back(st);
-        if (undoStack.size() > 200) undoStack.pop_front();
-        redoStack.clear();
+        SnakeMotionFrame f;
+        f.level = energyLevel();
+        f.unit = st.unit;
+        if (st.closed && st.params.balloon != 0) f.outside = orientation();
+        return f;
     }
-    /// End condition of open snakes: with free ends the tension term would shrink the
-    /// snake towards its middle, so an end sample moves only across the curve (its
-    /// tangential component is removed); it still follows the feature force sideways.
-    bool isOpenEnd(int i) const { return !st.closed && (i == 0 || i == int(st.samples.size()) - 1); }
+
+    /// +1 when the closed curve runs counter-clockwise seen from the front of the surface it
+    /// encloses (its vector area agrees with the normals of the faces under it), else -1.
+    double orientation() const
+    {
+        const MeshType &m = surf->Mesh();
+        std::vector<vcg::Point3d> p = positions();
+        vcg::Point3d area(0, 0, 0), normal(0, 0, 0), c(0, 0, 0);
+        for (const auto &x : p) c += x;
+        c /= double(p.size());
+        for (size_t i = 0; i < p.size(); ++i) area += (p[i] - c) ^ (p[(i + 1) % p.size()] - c);
+        for (const auto &s : st.samples) {
+            const FaceType &f = m.face[s.p.face];
+            normal += vcg::Point3d::Construct((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0)));
+        }
+        return area * normal >= 0 ? 1.0 : -1.0;
+    }
+
+    /// Length of the sample polygon.
+    static double loopLength(const std::vector<vcg::Point3d> &p, bool closed)
+    {
+        double L = 0;
+        for (size_t i = 0; i + (closed ? 0 : 1) < p.size(); ++i) L += (p[(i + 1) % p.size()] - p[i]).Norm();
+        return L;
+    }
+
+    /// A closed snake that shrinks where no feature holds it would end as a point and report
+    /// convergence: stop it instead and say so. Collapsing: still shrinking (or settled) after
+    /// losing three quarters of its length since the run started, or less than 2 length units
+    /// long. Its samples then sit on top of each other, whatever the energy there.
+    void checkCollapse(const std::vector<vcg::Point3d> &pos)
+    {
+        if (!st.closed || pos.size() < 3) return;
+        double L = loopLength(pos, true);
+        if (runLength < 0) runLength = std::max(L, lastLength);
+        bool shrinking = lastLength > 0 && L < lastLength - 1e-6 * st.unit;
+        lastLength = L;
+        double e = 0;
+        for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
+        e /= double(st.samples.size());
+        bool tiny = L < 2 * st.unit;
+        if (!(tiny || ((shrinking || stats.converged) && L < 0.25 * runLength))) return;
+        stats.stopped = true;
+        stats.converged = false;
+        char msg[300];
+        std::snprintf(msg, sizeof msg,
+                      "the closed snake is collapsing where no feature holds it (length %.3g, %.0f %% of its length "
+                      "at the start, mean energy %.2f): stopped. Seed it closer to the feature, or inflate it with "
+                      "a positive Balloon.", L, 100.0 * L / std::max(runLength, 1e-300), e);
+        if (stats.warnings.size() < 20) stats.warnings.push_back(msg);
+    }
 
     int energyLevel() const { return (coarseStage && surf->Levels() > 1) ? 1 : 0; }
 
@@ -643,6 +640,8 @@ private:
         for (auto &smp : st.samples) smp.trust = 1.0;
         coarseStage = true;
         stats.converged = false;
+        stats.stopped = false;
+        runLength = -1;
         moveHistory.clear();
         travelHistory.clear();
         posHistory.clear();
@@ -712,7 +711,7 @@ private:
         const MeshType &m = surf->Mesh();
         vcg::Point3d pa = a.Pd(m), pb = b.Pd(m);
         vcg::Point3d q = pa * (1 - t) + pb * t;
-        return SurfaceProjection<MeshType>::Closest(*surf, a.face, q, 2 * (pb - pa).Norm() + surf->MeanEdge());
+        return SurfaceProjection<MeshType>::Closest(*surf, a.face, q, 2 * (pb - pa).Norm() + st.unit);
     }
 
     /// Points strictly inside gap i (edge crossings); falls back to the shared-edge
@@ -758,8 +757,8 @@ private:
     {
         std::vector<Segment> overlaps;
         std::vector<Segment> segs = partition(overlaps);
-        for (auto &s : segs) moveSegment(s, st.params.updatesPerOperation, 0);
-        for (auto &s : overlaps) moveSegment(s, st.params.updatesPerOperation, 0);
+        for (auto &s : segs) motion.Move(st, stats, s, st.params.updatesPerOperation, frame());
+        for (auto &s : overlaps) motion.Move(st, stats, s, st.params.updatesPerOperation, frame());
     }
 
     /// Retraces every gap (no motion): one embedding per segment.
@@ -767,284 +766,8 @@ private:
     {
         std::vector<Segment> overlaps;
         std::vector<Segment> segs = partition(overlaps);
-        for (auto &s : segs) moveSegment(s, 0, 0);
-        for (auto &s : overlaps) moveSegment(s, 0, 0);
-    }
-
-    int gapIndex(int a, int b) const
-    {
-        int n = int(st.samples.size());
-        if (b == (a + 1) % n && (st.closed || a + 1 < n)) return a;
-        return -1;
-    }
-
-    void moveSegment(const Segment &seg, int updates, int depth)
-    {
-        const int k = int(seg.idx.size());
-        if (k < 2) return;
-        const MeshType &m = surf->Mesh();
-        const int level = energyLevel();
-        auto t0 = clock::now();
-        // Sec. 5.2: the faces the segment crosses ...
-        std::vector<int> core;
-        for (int j = 0; j < k; ++j) core.push_back(st.samples[seg.idx[j]].p.face);
-        bool wholeClosed = st.closed && k == int(st.samples.size()) && seg.idx.front() == 0 && !seg.fixFirst;
-        int gapsInSeg = wholeClosed ? k : k - 1;
-        for (int j = 0; j < gapsInSeg; ++j) {
-            int g = gapIndex(seg.idx[j], seg.idx[(j + 1) % k]);
-            if (g < 0) continue;
-            Gap &gap = st.gaps[g];
-            if (gap.faces.empty())
-                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[j]].p.face, st.samples[seg.idx[(j + 1) % k]].p.face);
-            core.insert(core.end(), gap.faces.begin(), gap.faces.end());
-        }
-        // ... plus their vertex neighbours, holes filled (LocalRegion), then Sec. 5.3.
-        VirtualBoundaryParam::Result emb;
-        bool ok = region.Build(*surf, core);
-        if (ok) ok = VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, surf->MeanEdge(),
-                                                 st.params.virtualLayers, emb);
-        if (!ok) {
-            if (k >= 8 && depth < 6) { // split the segment (Sec. 5.1) and try the halves
-                Segment a, b;
-                int mid = k / 2;
-                a.idx.assign(seg.idx.begin(), seg.idx.begin() + mid + 1);
-                b.idx.assign(seg.idx.begin() + mid, seg.idx.end());
-                a.fixFirst = seg.fixFirst; a.fixLast = true;
-                b.fixFirst = true; b.fixLast = seg.fixLast;
-                moveSegment(a, updates, depth + 1);
-                moveSegment(b, updates, depth + 1);
-                return;
-            }
-            stats.regionFailures++;
-            std::string why = region.error.empty() ? emb.error : region.error;
-            if (stats.warnings.size() < 20) stats.warnings.push_back("a segment could not move: " + why);
-            return;
-        }
-        stats.embeddings++;
-        stats.msEmbedding.push_back(msSince(t0));
-
-        // Sec. 5.4: samples into the plane by barycentric coordinates.
-        std::vector<int> lf(k);
-        Eigen::MatrixXd X(k, 2);
-        for (int j = 0; j < k; ++j) {
-            const SurfacePoint &p = st.samples[seg.idx[j]].p;
-            lf[j] = region.LocalFace(*surf, p.face);
-            if (lf[j] < 0) { // cannot happen: sample faces are in the core
-                stats.regionFailures++;
-                return;
-            }
-            X.row(j) = toPlane(emb, lf[j], p.bary).transpose();
-        }
-        // Sec. 6.2: energy gradients of the embedded faces, computed once per embedding.
-        std::vector<Eigen::Vector2d> grad(region.RealFaces());
-        std::vector<char> gradDone(region.RealFaces(), 0);
-        auto gradient = [&](int t) -> const Eigen::Vector2d & {
-            if (!gradDone[t]) {
-                gradDone[t] = 1;
-                const auto &T = region.tri[t];
-                const FaceType &f = m.face[region.faces[t]];
-                Eigen::Matrix2d J;
-                J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
-                J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
-                double e0 = surf->EnergyAt(level, surf->Idx(f.cV(0))), e1 = surf->EnergyAt(level, surf->Idx(f.cV(1))),
-                       e2 = surf->EnergyAt(level, surf->Idx(f.cV(2)));
-                double det = J.determinant();
-                if (std::abs(det) > 1e-12) grad[t] = J.transpose().inverse() * Eigen::Vector2d(e1 - e0, e2 - e0);
-                else grad[t].setZero();
-            }
-            return grad[t];
-        };
-        std::vector<bool> fixed(k);
-        for (int j = 0; j < k; ++j)
-            fixed[j] = st.samples[seg.idx[j]].fixed || (j == 0 && seg.fixFirst) || (j == k - 1 && seg.fixLast);
-        Eigen::MatrixXd B(k, 3); // barycentric coordinates of each sample in its local face
-        for (int j = 0; j < k; ++j) {
-            const auto &b = st.samples[seg.idx[j]].p.bary;
-            B.row(j) << b[0], b[1], b[2];
-        }
-        if (updates > 0) {
-            SnakeSpline &spline = splineFor(k, wholeClosed, fixed);
-            Eigen::MatrixXd F(k, 2);
-            for (int u = 0; u < updates; ++u) {
-                auto tu = clock::now();
-                for (int j = 0; j < k; ++j) {
-                    // Only the feature force across the curve: along a feature valley the
-                    // energy still varies a little, and its tangential part would slide the
-                    // samples towards the strongest spots (corners) and bunch them there.
-                    Eigen::Vector2d f = st.params.externalWeight * gradient(lf[j]);
-                    Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
-                                         X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
-                    if (t.norm() > 0) { t.normalize(); f -= f.dot(t) * t; }
-                    F.row(j) = f.transpose();
-                }
-                Eigen::MatrixXd Xn = spline.Update(X, F);
-                bool left = false;
-                for (int j = 0; j < k; ++j) {
-                    if (fixed[j]) continue;
-                    Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
-                    if (!d.allFinite()) continue;
-                    if (isOpenEnd(seg.idx[j]) && k >= 2) { // open ends move across the curve only
-                        Eigen::Vector2d t = (X.row(j == 0 ? 1 : k - 2) - X.row(j)).transpose();
-                        if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
-                    }
-                    double cap = st.params.maxStep * st.samples[seg.idx[j]].trust * localEdge(emb, lf[j]);
-                    double len = d.norm();
-                    if (len > cap) d *= cap / len;
-                    if (len == 0) continue;
-                    RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
-                                                            X.row(j).transpose() + d, false);
-                    // The energy is piecewise linear, so its force does not vanish at the bottom
-                    // of a well and a sample would bounce across it by |f|/gamma: a move that
-                    // raised the sample's energy halves its step cap, a downhill one restores it.
-                    double eOld = surf->EnergyAt(level, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j))));
-                    double eNew = surf->EnergyAt(level, SurfacePoint(region.faces[w.face], toPoint(w.bary)));
-                    double &trust = st.samples[seg.idx[j]].trust;
-                    trust = eNew > eOld + 1e-9 ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
-                    lf[j] = w.face;
-                    B.row(j) = w.bary.transpose();
-                    X.row(j) = toPlane(emb, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
-                    left |= w.exited;
-                }
-                stats.updates++;
-                stats.msUpdate.push_back(msSince(tu));
-                if (left) break; // the curve reached the region border: re-embed (Sec. 5.4)
-            }
-        }
-        // Map back by barycentric coordinates.
-        for (int j = 0; j < k; ++j) {
-            SnakeSample &s = st.samples[seg.idx[j]];
-            if (fixed[j] && s.fixed) continue; // pinned samples are held exactly
-            s.p.face = region.faces[lf[j]];
-            s.p.bary = vcg::Point3d(B(j, 0), B(j, 1), B(j, 2));
-            s.p.Normalize();
-        }
-        // Trace the straight segments between samples across the embedded triangles (Sec. 4.1).
-        for (int j = 0; j < gapsInSeg; ++j) {
-            int a = j, b = (j + 1) % k;
-            int g = gapIndex(seg.idx[a], seg.idx[b]);
-            if (g < 0) continue;
-            RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(),
-                                                    X.row(b).transpose(), true);
-            Gap &gap = st.gaps[g];
-            gap = Gap();
-            if (w.exited) { // leaves the region (non-convex border): re-project next time
-                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[a]].p.face, st.samples[seg.idx[b]].p.face);
-                continue;
-            }
-            gap.faces.push_back(region.faces[lf[a]]);
-            for (const auto &c : w.crossings) {
-                gap.crossings.push_back(SurfacePoint(region.faces[c.face], vcg::Point3d(c.bary[0], c.bary[1], c.bary[2])));
-                gap.faces.push_back(region.faces[c.face]);
-            }
-            gap.faces.push_back(region.faces[w.face]);
-            gap.faces.push_back(region.faces[lf[b]]);
-            gap.traced = true;
-        }
-    }
-
-    template <class V>
-    static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
-
-    static Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, const std::array<int, 3> &T,
-                                   const vcg::Point3d &b)
-    {
-        return b[0] * emb.uv[T[0]] + b[1] * emb.uv[T[1]] + b[2] * emb.uv[T[2]];
-    }
-    Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, int t, const vcg::Point3d &b) const
-    {
-        return toPlane(emb, region.tri[t], b);
-    }
-    double localEdge(const VirtualBoundaryParam::Result &emb, int t) const
-    {
-        const auto &T = region.tri[t];
-        return ((emb.uv[T[1]] - emb.uv[T[0]]).norm() + (emb.uv[T[2]] - emb.uv[T[1]]).norm() +
-                (emb.uv[T[0]] - emb.uv[T[2]]).norm()) / 3.0;
-    }
-
-    SnakeSpline &splineFor(int k, bool closed, const std::vector<bool> &fixed)
-    {
-        auto key = std::make_tuple(k, closed, fixed);
-        if (splines.size() > 64) splines.clear();
-        SnakeSpline &s = splines[key];
-        s.Setup(k, closed, st.params.alpha, st.params.beta, st.params.gamma, fixed);
-        return s;
-    }
-
-    // ----- the naive method (Sec. 4.2): Eq. 4 in space, then projection onto the surface
-    void stepProjection()
-    {
-        const MeshType &m = surf->Mesh();
-        const int n = int(st.samples.size());
-        const double h = surf->MeanEdge();
-        std::vector<bool> fixed(n);
-        for (int i = 0; i < n; ++i) fixed[i] = st.samples[i].fixed;
-        SnakeSpline &spline = splineFor(n, st.closed, fixed);
-        Eigen::MatrixXd X(n, 3), F(n, 3);
-        for (int u = 0; u < st.params.updatesPerOperation; ++u) {
-            auto tu = clock::now();
-            for (int i = 0; i < n; ++i) {
-                vcg::Point3d p = st.samples[i].p.Pd(m) / h;
-                X.row(i) << p[0], p[1], p[2];
-                vcg::Point3d g = faceGradient3D(st.samples[i].p.face) * h; // per edge length
-                F.row(i) << st.params.externalWeight * g[0], st.params.externalWeight * g[1],
-                    st.params.externalWeight * g[2];
-            }
-            for (int i = 0; i < n; ++i) { // the feature force across the curve only (see moveSegment)
-                int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0), b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
-                Eigen::Vector3d t = (X.row(b) - X.row(a)).transpose();
-                if (t.norm() > 0) { t.normalize(); F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose(); }
-            }
-            Eigen::MatrixXd Xn = spline.Update(X, F);
-            for (int i = 0; i < n; ++i) {
-                if (fixed[i]) continue;
-                Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
-                if (!d.allFinite()) continue;
-                if (isOpenEnd(i) && n >= 2) {
-                    Eigen::Vector3d t = (X.row(i == 0 ? 1 : n - 2) - X.row(i)).transpose();
-                    if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
-                }
-                double len = d.norm(), cap = st.params.maxStep * st.samples[i].trust * faceEdge(st.samples[i].p.face) / h;
-                if (len > cap) d *= cap / len;
-                Eigen::Vector3d q = X.row(i).transpose() + d;
-                vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
-                SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
-                                                                       d.norm() * h + 1.5 * h);
-                double &trust = st.samples[i].trust; // same step control as the embedding method
-                trust = surf->EnergyAt(energyLevel(), np) > surf->EnergyAt(energyLevel(), st.samples[i].p) + 1e-9
-                            ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
-                st.samples[i].p = np;
-            }
-            stats.updates++;
-            stats.msUpdate.push_back(msSince(tu));
-        }
-        for (auto &g : st.gaps) g = Gap(); // traced lazily by Polyline()
-    }
-
-    double faceEdge(int f) const
-    {
-        const FaceType &ff = surf->Mesh().face[f];
-        const vcg::Point3d p0 = vcg::Point3d::Construct(ff.cP(0)), p1 = vcg::Point3d::Construct(ff.cP(1)),
-                           p2 = vcg::Point3d::Construct(ff.cP(2));
-        return (vcg::Distance(p0, p1) + vcg::Distance(p1, p2) + vcg::Distance(p2, p0)) / 3.0;
-    }
-
-    /// Gradient of the linear energy inside a face, in space (0 on degenerate faces).
-    vcg::Point3d faceGradient3D(int f) const
-    {
-        const FaceType &ff = surf->Mesh().face[f];
-        const double h = surf->MeanEdge(); // in mean edge lengths, so the degeneracy bound is scale-free
-        vcg::Point3d p[3];
-        double e[3];
-        for (int k = 0; k < 3; ++k) {
-            p[k] = vcg::Point3d::Construct(ff.cP(k)) / h;
-            e[k] = surf->EnergyAt(energyLevel(), surf->Idx(ff.cV(k)));
-        }
-        vcg::Point3d n = (p[1] - p[0]) ^ (p[2] - p[0]);
-        double a2 = n.SquaredNorm();
-        if (!(a2 > 1e-30)) return vcg::Point3d(0, 0, 0);
-        vcg::Point3d g(0, 0, 0);
-        for (int k = 0; k < 3; ++k) g += (n ^ (p[(k + 2) % 3] - p[(k + 1) % 3])) * e[k]; // grad of hat k = n x e_k / |n|^2
-        return g / (a2 * h);
+        for (auto &s : segs) motion.Move(st, stats, s, 0, frame());
+        for (auto &s : overlaps) motion.Move(st, stats, s, 0, frame());
     }
 
     // ----- convergence: the largest move per operation stays below the tolerance for
@@ -1066,7 +789,7 @@ private:
         if (int(posHistory.size()) == 2 * W + 1) {
             // net displacement of the curve over the window against the way travelled: a curve
             // that only jitters in place (a sample bouncing at a corner) has gone nowhere
-            double net = curveMove(posHistory.front(), posHistory.back()) / surf->MeanEdge();
+            double net = curveMove(posHistory.front(), posHistory.back()) / st.unit;
             double travelled = std::accumulate(travelHistory.begin(), travelHistory.end(), 0.0);
             oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
         }

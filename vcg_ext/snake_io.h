@@ -57,7 +57,8 @@ public:
                     {"spacing", p.spacing}, {"updates_per_operation", p.updatesPerOperation},
                     {"segment_samples", p.segmentSamples}, {"virtual_layers", p.virtualLayers},
                     {"max_step", p.maxStep}, {"convergence_tol", p.convergenceTol},
-                    {"convergence_window", p.convergenceWindow}, {"method", int(p.method)}};
+                    {"convergence_window", p.convergenceWindow}, {"balloon", p.balloon},
+                    {"method", int(p.method)}};
     }
     /// j[key] as a number (def when absent); a message instead of a conversion of the wrong type.
     static double RealFrom(const json &j, const char *key, double def)
@@ -92,6 +93,7 @@ public:
         p.maxStep = RealFrom(j, "max_step", p.maxStep);
         p.convergenceTol = RealFrom(j, "convergence_tol", p.convergenceTol);
         p.convergenceWindow = IntFrom(j, "convergence_window", p.convergenceWindow);
+        p.balloon = RealFrom(j, "balloon", p.balloon);
         const int method = IntFrom(j, "method", int(p.method));
         if (method < 0 || method > 1) throw SnakeError("Snake JSON: \"method\" must be 0 or 1.");
         p.method = SnakeMethod(method);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include <vcg/complex/algorithms/update/normal.h>
 
 #include <vcg_ext/mesh_validation.h>
+#include <vcg_ext/snake_energy_field.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/surface_point.h>
 
@@ -46,8 +48,10 @@ public:
         faceSlot.assign(m.face.size(), -1);
         vertStamp.assign(m.vert.size(), 0);
         vertSlot.assign(m.vert.size(), -1);
+        if (captureSmoothing < 0 || captureSmoothing > 10000)
+            throw SnakeError("Geometric snake: capture smoothing must be in [0, 10000].");
+        captureSteps = captureSmoothing;
         SetEnergyFromQuality();
-        SetCaptureSmoothing(captureSmoothing);
     }
     static int DefaultCaptureSmoothing() { return 8; }
 
@@ -55,46 +59,36 @@ public:
     /// (level 0, precise), level 1 is E smoothed `steps` more rounds (Sec. 6.3) and
     /// renormalized. Snakes first slither on level 1, whose wide basins capture features a
     /// few edge lengths away, then settle on level 0, whose narrow wells localize them.
-    /// 0 steps: one level only. O(faces * steps), once.
+    /// 0 steps: one level only. O(faces * steps), once. Replaces a field set by SetEnergyField.
     void SetCaptureSmoothing(int steps)
     {
         if (steps < 0 || steps > 10000) throw SnakeError("Geometric snake: capture smoothing must be in [0, 10000].");
         captureSteps = steps;
-        coarse.clear();
-        if (steps == 0) return;
-        coarse = energy;
-        std::vector<double> sum(coarse.size());
-        std::vector<int> cnt(coarse.size());
-        for (int it = 0; it < steps; ++it) {
-            std::fill(sum.begin(), sum.end(), 0.0);
-            std::fill(cnt.begin(), cnt.end(), 0);
-            for (const auto &f : mesh.face) {
-                if (f.IsD()) continue;
-                for (int k = 0; k < 3; ++k) { // each edge seen from both faces: symmetric weights
-                    int a = Idx(f.cV(k)), b = Idx(f.cV((k + 1) % 3));
-                    sum[a] += coarse[b]; ++cnt[a];
-                    sum[b] += coarse[a]; ++cnt[b];
-                }
-            }
-            for (size_t v = 0; v < coarse.size(); ++v)
-                if (cnt[v] > 0) coarse[v] = float(0.5 * coarse[v] + 0.5 * sum[v] / cnt[v]);
-        }
-        float lo = 1, hi = 0;
-        for (size_t v = 0; v < coarse.size(); ++v)
-            if (!mesh.vert[v].IsD()) { lo = std::min(lo, coarse[v]); hi = std::max(hi, coarse[v]); }
-        if (hi - lo > 1e-6f)
-            for (auto &e : coarse) e = std::min(1.0f, std::max(0.0f, (e - lo) / (hi - lo)));
+        std::vector<int> rounds;
+        if (steps > 0) rounds.push_back(steps);
+        field = std::make_shared<VertexEnergyField<MeshType>>(mesh, energy, rounds);
     }
     int CaptureSmoothing() const { return captureSteps; }
-    int Levels() const { return coarse.empty() ? 1 : 2; }
-    /// Energy of level `level` (0 precise, 1 coarse) at vertex v.
-    float EnergyAt(int level, int v) const { return (level > 0 && !coarse.empty()) ? coarse[v] : energy[v]; }
+
+    /// The energy the snakes read (value and gradient at a surface point, per level). Any
+    /// SnakeEnergyField can replace the vertex energy; call the snakes' EnergyChanged() after.
+    void SetEnergyField(std::shared_ptr<const SnakeEnergyField<MeshType>> f)
+    {
+        if (!f || f->Levels() < 1) throw SnakeError("Geometric snake: an energy field needs at least one level.");
+        field = std::move(f);
+    }
+    const SnakeEnergyField<MeshType> &EnergyField() const { return *field; }
+    int Levels() const { return field->Levels(); }
+    /// Energy on `level` (0 precise, higher = smoother) at a surface point.
+    double EnergyAt(int level, const SurfacePoint &p) const { return field->Value(level, p); }
+    /// Its gradient: a vector in space, tangent to p's face, energy per unit length.
+    vcg::Point3d EnergyGradient(int level, const SurfacePoint &p) const { return field->Gradient(level, p); }
 
     MeshType &Mesh() { return mesh; }
     const MeshType &Mesh() const { return mesh; }
     double MeanEdge() const { return meanEdge; }
+    /// The vertex energy read from quality, in [0,1] (level 0 of the default field).
     const std::vector<float> &Energy() const { return energy; }
-    float EnergyAt(int v) const { return energy[v]; }
     /// Warnings about the energy (constant field, NaN values), for the Log.
     const std::vector<std::string> &Warnings() const { return warnings; }
 
@@ -105,6 +99,40 @@ public:
     /// it is mapped robustly (0.1 / 99.9 percentiles) to [0,1] with low values = feature.
     /// Non-finite values count as flat (1). A constant field gives no force (warned).
     void SetEnergyFromQuality()
+    {
+        readQuality();
+        SetCaptureSmoothing(captureSteps);
+    }
+
+    int Idx(const VertexType *v) const { return int(v - &mesh.vert[0]); }
+    int Idx(const FaceType *f) const { return int(f - &mesh.face[0]); }
+    bool FaceUsable(int f) const { return f >= 0 && f < int(mesh.face.size()) && !mesh.face[f].IsD(); }
+
+    /// Scratch marks (one generation counter, so clearing is O(1)): used by local region
+    /// building so that the cost of an operation never grows with the mesh.
+    int NewGeneration()
+    {
+        if (++generation == 0x7fffffff) {
+            std::fill(faceStamp.begin(), faceStamp.end(), 0);
+            std::fill(vertStamp.begin(), vertStamp.end(), 0);
+            generation = 1;
+        }
+        return generation;
+    }
+    std::vector<int> faceStamp, faceSlot, vertStamp, vertSlot;
+
+private:
+    MeshType &mesh;
+    double meanEdge = 1;
+    int faceCount = 0, vertCount = 0;
+    int generation = 0;
+    int captureSteps = 0;
+    std::vector<float> energy;
+    std::shared_ptr<const SnakeEnergyField<MeshType>> field;
+    std::vector<std::string> warnings;
+
+    /// Quality -> energy in [0,1] and warnings (see SetEnergyFromQuality).
+    void readQuality()
     {
         warnings.clear();
         energy.assign(mesh.vert.size(), 1.0f);
@@ -138,42 +166,7 @@ public:
             if (!std::isfinite(q)) continue;
             energy[i] = float(std::min(1.0, std::max(0.0, (double(q) - lo) / (hi - lo))));
         }
-        if (captureSteps > 0) SetCaptureSmoothing(captureSteps);
     }
-
-    /// Energy at a surface point: linear inside the face (Sec. 6.1).
-    double EnergyAt(int level, const SurfacePoint &p) const
-    {
-        const FaceType &f = mesh.face[p.face];
-        return p.bary[0] * EnergyAt(level, Idx(f.cV(0))) + p.bary[1] * EnergyAt(level, Idx(f.cV(1))) +
-               p.bary[2] * EnergyAt(level, Idx(f.cV(2)));
-    }
-
-    int Idx(const VertexType *v) const { return int(v - &mesh.vert[0]); }
-    int Idx(const FaceType *f) const { return int(f - &mesh.face[0]); }
-    bool FaceUsable(int f) const { return f >= 0 && f < int(mesh.face.size()) && !mesh.face[f].IsD(); }
-
-    /// Scratch marks (one generation counter, so clearing is O(1)): used by local region
-    /// building so that the cost of an operation never grows with the mesh.
-    int NewGeneration()
-    {
-        if (++generation == 0x7fffffff) {
-            std::fill(faceStamp.begin(), faceStamp.end(), 0);
-            std::fill(vertStamp.begin(), vertStamp.end(), 0);
-            generation = 1;
-        }
-        return generation;
-    }
-    std::vector<int> faceStamp, faceSlot, vertStamp, vertSlot;
-
-private:
-    MeshType &mesh;
-    double meanEdge = 1;
-    int faceCount = 0, vertCount = 0;
-    int generation = 0;
-    int captureSteps = 0;
-    std::vector<float> energy, coarse;
-    std::vector<std::string> warnings;
 };
 
 } // namespace tri

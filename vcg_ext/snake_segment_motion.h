@@ -1,0 +1,355 @@
+#ifndef VCG_EXT_SNAKE_SEGMENT_MOTION_H
+#define VCG_EXT_SNAKE_SEGMENT_MOTION_H
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include <vcg_ext/conformal_param.h>
+#include <vcg_ext/face_path.h>
+#include <vcg_ext/local_region.h>
+#include <vcg_ext/region_walk.h>
+#include <vcg_ext/snake_curve.h>
+#include <vcg_ext/snake_partition.h>
+#include <vcg_ext/snake_spline.h>
+#include <vcg_ext/snake_surface.h>
+#include <vcg_ext/surface_point.h>
+#include <vcg_ext/surface_projection.h>
+#include <vcg_ext/virtual_boundary_param.h>
+
+namespace vcg {
+namespace tri {
+
+/// How a snake moves (Sec. 4 and 5): one segment at a time in the plane of a local
+/// embedding (the paper's method), or the whole curve in space followed by a projection
+/// (the naive method of Sec. 4.2). Owns the scratch state reused across operations: the
+/// local region and the factored spline systems. The session (creation, editing, undo,
+/// convergence) is GeometricSnake's business.
+template <class MeshType>
+class SnakeSegmentMotion
+{
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef SnakeSurface<MeshType> Surface;
+
+    explicit SnakeSegmentMotion(std::shared_ptr<Surface> s) : surf(std::move(s)) {}
+
+    int conformalFallbacks = 0; ///< embeddings that fell back to the virtual boundary
+
+    /// Forget the factored spline systems (parameters or samples changed).
+    void ClearCache() { splines.clear(); }
+
+    /// Moves one segment (Sec. 5.2 - 5.4): local region, embedding, up to `updates` updates of
+    /// Eq. 4 in the plane, back by barycentric coordinates, then retraces its gaps (Sec. 4.1).
+    /// `updates` = 0 only retraces. `level`: energy level; `unit`: the snake's length unit.
+    void Move(SnakeCurve &st, SnakeStats &stats, const SnakeSegment &seg, int updates, const SnakeMotionFrame &fr,
+              int depth = 0)
+    {
+        const int level = fr.level;
+        const double unit = fr.unit;
+        const int k = int(seg.idx.size());
+        if (k < 2) return;
+        const MeshType &m = surf->Mesh();
+        auto t0 = clock::now();
+        // Sec. 5.2: the faces the segment crosses ...
+        std::vector<int> core;
+        for (int j = 0; j < k; ++j) core.push_back(st.samples[seg.idx[j]].p.face);
+        bool wholeClosed = st.closed && k == int(st.samples.size()) && seg.idx.front() == 0 && !seg.fixFirst;
+        int gapsInSeg = wholeClosed ? k : k - 1;
+        for (int j = 0; j < gapsInSeg; ++j) {
+            int g = st.GapIndex(seg.idx[j], seg.idx[(j + 1) % k]);
+            if (g < 0) continue;
+            SnakeGap &gap = st.gaps[g];
+            if (gap.faces.empty())
+                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[j]].p.face, st.samples[seg.idx[(j + 1) % k]].p.face);
+            core.insert(core.end(), gap.faces.begin(), gap.faces.end());
+        }
+        // ... plus their vertex neighbours, holes filled (LocalRegion), then Sec. 5.3.
+        VirtualBoundaryParam::Result emb;
+        bool ok = region.Build(*surf, core);
+        if (ok) ok = embed(st.params, unit, emb);
+        if (!ok) {
+            if (k >= 8 && depth < 6) { // split the segment (Sec. 5.1) and try the halves
+                SnakeSegment a, b;
+                int mid = k / 2;
+                a.idx.assign(seg.idx.begin(), seg.idx.begin() + mid + 1);
+                b.idx.assign(seg.idx.begin() + mid, seg.idx.end());
+                a.fixFirst = seg.fixFirst; a.fixLast = true;
+                b.fixFirst = true; b.fixLast = seg.fixLast;
+                Move(st, stats, a, updates, fr, depth + 1);
+                Move(st, stats, b, updates, fr, depth + 1);
+                return;
+            }
+            stats.regionFailures++;
+            std::string why = region.error.empty() ? emb.error : region.error;
+            if (stats.warnings.size() < 20) stats.warnings.push_back("a segment could not move: " + why);
+            return;
+        }
+        stats.embeddings++;
+        stats.msEmbedding.push_back(msSince(t0));
+
+        // Sec. 5.4: samples into the plane by barycentric coordinates.
+        std::vector<int> lf(k);
+        Eigen::MatrixXd X(k, 2);
+        for (int j = 0; j < k; ++j) {
+            const SurfacePoint &p = st.samples[seg.idx[j]].p;
+            lf[j] = region.LocalFace(*surf, p.face);
+            if (lf[j] < 0) { // cannot happen: sample faces are in the core
+                stats.regionFailures++;
+                return;
+            }
+            X.row(j) = toPlane(emb, lf[j], p.bary).transpose();
+        }
+        // Sec. 6.2: the energy gradient at a sample, mapped into the plane. The field gives it
+        // in space; its derivatives along two face edges are invariant, so in the plane it is
+        // J^-T (g . e1, g . e2) with J the embedded edges. J^-T is computed once per face.
+        std::vector<Eigen::Matrix2d> jinvT(region.RealFaces());
+        std::vector<char> jDone(region.RealFaces(), 0);
+        auto gradient = [&](int t, const Eigen::RowVector3d &bary) -> Eigen::Vector2d {
+            const auto &T = region.tri[t];
+            if (!jDone[t]) {
+                jDone[t] = 1;
+                Eigen::Matrix2d J;
+                J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
+                J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
+                jinvT[t] = std::abs(J.determinant()) > 1e-12 ? Eigen::Matrix2d(J.transpose().inverse())
+                                                              : Eigen::Matrix2d::Zero();
+            }
+            vcg::Point3d g = surf->EnergyGradient(level, SurfacePoint(region.faces[t], toPoint(bary)));
+            Eigen::Vector2d d(g * (region.pos[T[1]] - region.pos[T[0]]), g * (region.pos[T[2]] - region.pos[T[0]]));
+            return jinvT[t] * d;
+        };
+        std::vector<bool> fixed(k);
+        for (int j = 0; j < k; ++j)
+            fixed[j] = st.samples[seg.idx[j]].fixed || (j == 0 && seg.fixFirst) || (j == k - 1 && seg.fixLast);
+        Eigen::MatrixXd B(k, 3); // barycentric coordinates of each sample in its local face
+        for (int j = 0; j < k; ++j) {
+            const auto &b = st.samples[seg.idx[j]].p.bary;
+            B.row(j) << b[0], b[1], b[2];
+        }
+        if (updates > 0) {
+            SnakeSpline &spline = splineFor(st.params, k, wholeClosed, fixed);
+            Eigen::MatrixXd F(k, 2);
+            for (int u = 0; u < updates; ++u) {
+                auto tu = clock::now();
+                for (int j = 0; j < k; ++j) {
+                    // Only the feature force across the curve: along a feature valley the
+                    // energy still varies a little, and its tangential part would slide the
+                    // samples towards the strongest spots (corners) and bunch them there.
+                    Eigen::Vector2d f = st.params.externalWeight * gradient(lf[j], B.row(j));
+                    Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
+                                         X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
+                    if (t.norm() > 0) {
+                        t.normalize();
+                        f -= f.dot(t) * t;
+                        // balloon (beyond the paper, as in image snakes): a pressure along the
+                        // outward normal; f is a gradient, so it pushes against it
+                        if (fr.outside != 0) f -= st.params.balloon * fr.outside * Eigen::Vector2d(t.y(), -t.x());
+                    }
+                    F.row(j) = f.transpose();
+                }
+                Eigen::MatrixXd Xn = spline.Update(X, F);
+                bool left = false;
+                for (int j = 0; j < k; ++j) {
+                    if (fixed[j]) continue;
+                    Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
+                    if (!d.allFinite()) continue;
+                    if (st.IsOpenEnd(seg.idx[j]) && k >= 2) { // open ends move across the curve only
+                        Eigen::Vector2d t = (X.row(j == 0 ? 1 : k - 2) - X.row(j)).transpose();
+                        if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
+                    }
+                    double len = d.norm();
+                    double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(emb, lf[j], d / len) : 0;
+                    if (len > cap) d *= cap / len;
+                    if (len == 0) continue;
+                    RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
+                                                            X.row(j).transpose() + d, false);
+                    // The energy is piecewise linear, so its force does not vanish at the bottom
+                    // of a well and a sample would bounce across it by |f|/gamma: a move that
+                    // raised the sample's energy halves its step cap, a downhill one restores it.
+                    double eOld = surf->EnergyAt(level, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j))));
+                    double eNew = surf->EnergyAt(level, SurfacePoint(region.faces[w.face], toPoint(w.bary)));
+                    double &trust = st.samples[seg.idx[j]].trust;
+                    trust = eNew > eOld + 1e-9 ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
+                    lf[j] = w.face;
+                    B.row(j) = w.bary.transpose();
+                    X.row(j) = toPlane(emb, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
+                    left |= w.exited;
+                }
+                stats.updates++;
+                stats.msUpdate.push_back(msSince(tu));
+                if (left) break; // the curve reached the region border: re-embed (Sec. 5.4)
+            }
+        }
+        // Map back by barycentric coordinates.
+        for (int j = 0; j < k; ++j) {
+            SnakeSample &s = st.samples[seg.idx[j]];
+            if (fixed[j] && s.fixed) continue; // pinned samples are held exactly
+            s.p.face = region.faces[lf[j]];
+            s.p.bary = vcg::Point3d(B(j, 0), B(j, 1), B(j, 2));
+            s.p.Normalize();
+        }
+        // Trace the straight segments between samples across the embedded triangles (Sec. 4.1).
+        for (int j = 0; j < gapsInSeg; ++j) {
+            int a = j, b = (j + 1) % k;
+            int g = st.GapIndex(seg.idx[a], seg.idx[b]);
+            if (g < 0) continue;
+            RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(),
+                                                    X.row(b).transpose(), true);
+            SnakeGap &gap = st.gaps[g];
+            gap = SnakeGap();
+            if (w.exited) { // leaves the region (non-convex border): re-project next time
+                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[a]].p.face, st.samples[seg.idx[b]].p.face);
+                continue;
+            }
+            gap.faces.push_back(region.faces[lf[a]]);
+            for (const auto &c : w.crossings) {
+                gap.crossings.push_back(SurfacePoint(region.faces[c.face], vcg::Point3d(c.bary[0], c.bary[1], c.bary[2])));
+                gap.faces.push_back(region.faces[c.face]);
+            }
+            gap.faces.push_back(region.faces[w.face]);
+            gap.faces.push_back(region.faces[lf[b]]);
+            gap.traced = true;
+        }
+    }
+
+    /// The naive method (Sec. 4.2): Eq. 4 in space, then projection onto the surface.
+    void StepProjection(SnakeCurve &st, SnakeStats &stats, const SnakeMotionFrame &fr)
+    {
+        const int level = fr.level;
+        const double unit = fr.unit;
+        const MeshType &m = surf->Mesh();
+        const int n = int(st.samples.size());
+        const double h = unit;
+        std::vector<bool> fixed(n);
+        for (int i = 0; i < n; ++i) fixed[i] = st.samples[i].fixed;
+        SnakeSpline &spline = splineFor(st.params, n, st.closed, fixed);
+        Eigen::MatrixXd X(n, 3), F(n, 3);
+        for (int u = 0; u < st.params.updatesPerOperation; ++u) {
+            auto tu = clock::now();
+            for (int i = 0; i < n; ++i) {
+                vcg::Point3d p = st.samples[i].p.Pd(m) / h;
+                X.row(i) << p[0], p[1], p[2];
+                vcg::Point3d g = surf->EnergyGradient(level, st.samples[i].p) * h; // per edge length
+                F.row(i) << st.params.externalWeight * g[0], st.params.externalWeight * g[1],
+                    st.params.externalWeight * g[2];
+            }
+            for (int i = 0; i < n; ++i) { // the feature force across the curve only (see moveSegment)
+                int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0), b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
+                Eigen::Vector3d t = (X.row(b) - X.row(a)).transpose();
+                if (t.norm() > 0) {
+                    t.normalize();
+                    F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose();
+                    if (fr.outside != 0) { // balloon: outward = tangent x face normal for a counter-clockwise curve
+                        const FaceType &ff = m.face[st.samples[i].p.face];
+                        vcg::Point3d n = vcg::Point3d::Construct((ff.cP(1) - ff.cP(0)) ^ (ff.cP(2) - ff.cP(0)));
+                        Eigen::Vector3d o = t.cross(Eigen::Vector3d(n[0], n[1], n[2]));
+                        if (o.norm() > 0) F.row(i) -= st.params.balloon * fr.outside * o.normalized().transpose();
+                    }
+                }
+            }
+            Eigen::MatrixXd Xn = spline.Update(X, F);
+            for (int i = 0; i < n; ++i) {
+                if (fixed[i]) continue;
+                Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
+                if (!d.allFinite()) continue;
+                if (st.IsOpenEnd(i) && n >= 2) {
+                    Eigen::Vector3d t = (X.row(i == 0 ? 1 : n - 2) - X.row(i)).transpose();
+                    if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
+                }
+                double len = d.norm();
+                double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
+                if (len > cap) d *= cap / len;
+                Eigen::Vector3d q = X.row(i).transpose() + d;
+                vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
+                SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
+                                                                       d.norm() * h + 1.5 * h);
+                double &trust = st.samples[i].trust; // same step control as the embedding method
+                trust = surf->EnergyAt(level, np) > surf->EnergyAt(level, st.samples[i].p) + 1e-9
+                            ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
+                st.samples[i].p = np;
+            }
+            stats.updates++;
+            stats.msUpdate.push_back(msSince(tu));
+        }
+        for (auto &g : st.gaps) g = SnakeGap(); // traced lazily by Polyline()
+    }
+
+private:
+    template <class V>
+    static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
+
+    static Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, const std::array<int, 3> &T,
+                                   const vcg::Point3d &b)
+    {
+        return b[0] * emb.uv[T[0]] + b[1] * emb.uv[T[1]] + b[2] * emb.uv[T[2]];
+    }
+    Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, int t, const vcg::Point3d &b) const
+    {
+        return toPlane(emb, region.tri[t], b);
+    }
+    /// The width of embedded triangle t in direction d (unit vector): a step cap from the
+    /// local triangle size where the sample goes, so that on long thin triangles a move across
+    /// them is capped by their short side, not by their mean edge.
+    double widthAlong(const VirtualBoundaryParam::Result &emb, int t, const Eigen::Vector2d &d) const
+    {
+        const auto &T = region.tri[t];
+        double a = emb.uv[T[0]].dot(d), b = emb.uv[T[1]].dot(d), c = emb.uv[T[2]].dot(d);
+        return std::max({a, b, c}) - std::min({a, b, c});
+    }
+
+    /// The local embedding (Sec. 5.3): least-squares conformal first, which embeds developable
+    /// regions exactly; if it flips a triangle, the paper's convex combination with a virtual
+    /// boundary, which is injective whatever the geometry.
+    bool embed(const SnakeParams &params, double unit, VirtualBoundaryParam::Result &emb)
+    {
+        emb = VirtualBoundaryParam::Result();
+        std::string err;
+        if (ConformalParam::Embed(region.pos, region.tri, region.boundary, unit, emb.uv, err) &&
+            VirtualBoundaryParam::CountFlipped(emb.uv, region.tri) == 0)
+            return true;
+        ++conformalFallbacks;
+        return VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, unit, params.virtualLayers, emb);
+    }
+
+    SnakeSpline &splineFor(const SnakeParams &params, int k, bool closed, const std::vector<bool> &fixed)
+    {
+        auto key = std::make_tuple(k, closed, fixed);
+        if (splines.size() > 64) splines.clear();
+        SnakeSpline &s = splines[key];
+        s.Setup(k, closed, params.alpha, params.beta, params.gamma, fixed);
+        return s;
+    }
+
+    /// Width of mesh face f in direction d (unit vector, in space): the step cap's size.
+    double faceWidth(int f, const Eigen::Vector3d &d) const
+    {
+        const FaceType &ff = surf->Mesh().face[f];
+        double a[3];
+        for (int k = 0; k < 3; ++k) a[k] = d[0] * ff.cP(k)[0] + d[1] * ff.cP(k)[1] + d[2] * ff.cP(k)[2];
+        return std::max({a[0], a[1], a[2]}) - std::min({a[0], a[1], a[2]});
+    }
+
+    typedef std::chrono::steady_clock clock;
+    std::shared_ptr<Surface> surf;
+    LocalRegion<MeshType> region;
+    std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
+
+    static double msSince(clock::time_point t0)
+    {
+        return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
+    }
+};
+
+} // namespace tri
+} // namespace vcg
+
+#endif
