@@ -213,9 +213,11 @@ std::string SessionText(CMeshO &m, int samples)
         seeds.push_back(r * (n + 1) + (right ? n - 1 : 1));
     }
     Controller c(m);
-    const double L = SeedPath<CMeshO>::Compute(m, seeds, false).length;
+    const auto path = SeedPath<CMeshO>::Compute(m, seeds, false);
+    // spacing is in the snake's length unit: the median edge of its seed path (all grid edges)
+    const double unit = vcg::Distance(m.vert[path.vertices[0]].cP(), m.vert[path.vertices[1]].cP());
     SnakeParams p;
-    p.spacing = L / (samples - 1) / c.MeanEdge();
+    p.spacing = path.length / (samples - 1) / unit;
     c.SetParams(p);
     c.SetSeeds(seeds);
     c.CloseSeeds(false);

@@ -630,7 +630,8 @@ public:
                     throw SnakeError("Geometric snake: a snake in the session file has no \"samples\".");
                 if (js.contains("closed") && !js["closed"].is_boolean())
                     throw SnakeError("Geometric snake: \"closed\" must be true or false.");
-                s->InitFromSamples(IO::SamplesFromJson(mesh, js["samples"]), js.value("closed", false));
+                s->InitFromSamples(IO::SamplesFromJson(mesh, js["samples"]), js.value("closed", false),
+                                   IO::LengthScaleFrom(js));
                 nsn.push_back(std::move(s));
             }
             int nsel = IO::IntFrom(j, "selected", nsn.empty() ? -1 : 0);

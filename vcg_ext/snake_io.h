@@ -111,6 +111,7 @@ public:
         const std::vector<SurfacePoint> polyline = s.Polyline();
         json j;
         j["closed"] = s.Closed();
+        j["length_scale"] = s.LengthScale(); // the unit of spacing, steps and tolerances
         j["seeds"] = s.SeedVertices();
         j["seed_points"] = json::array();
         for (const auto &p : s.SeedPoints()) j["seed_points"].push_back(PointJson(m, p));
@@ -190,6 +191,13 @@ public:
         return w;
     }
 
+    /// A snake's saved length unit; 0 (derive it from the samples' faces) when absent or not positive.
+    static double LengthScaleFrom(const json &j)
+    {
+        const double u = RealFrom(j, "length_scale", 0);
+        return std::isfinite(u) && u > 0 ? u : 0;
+    }
+
     /// Restores a snake saved by ToJson onto the same mesh.
     static void FromJson(Snake &s, const json &j)
     {
@@ -200,7 +208,7 @@ public:
                 throw SnakeError("Snake JSON: \"closed\" must be true or false.");
             const MeshType &m = s.GetSurface().Mesh();
             if (j.contains("params")) s.SetParams(ParamsFromJson(j["params"], s.Params()));
-            s.InitFromSamples(SamplesFromJson(m, j["samples"]), j.value("closed", false));
+            s.InitFromSamples(SamplesFromJson(m, j["samples"]), j.value("closed", false), LengthScaleFrom(j));
         } catch (const json::exception &e) {
             throw SnakeError("Snake JSON: " + JsonErrorText(e) + ".");
         }
