@@ -16,6 +16,7 @@
 #include "vcg_ext/geometric_snake.h"
 #include "vcg_ext/local_region.h"
 #include "vcg_ext/mesh_validation.h"
+#include "vcg_ext/path_tighten.h"
 #include "vcg_ext/seed_points.h"
 #include "vcg_ext/snake_controller.h"
 #include "vcg_ext/triangle_soup.h"
@@ -236,6 +237,50 @@ TEST(SeedPathFromPoints, StartsAndEndsExactlyAtTheSeedsThroughSharedFaces)
     }
 }
 
+// ------------------------------------------------------------------ the curve between samples
+
+TEST(PathTighten, CrossingsSlideAlongTheirEdgesToTheShortestPathInTheStrip)
+{
+    // A strip of 2n triangles over [0,n] x [0,1]; the path from (0.5, 0.2) to (n - 0.5, 0.9)
+    // crosses every inner edge. Started at the edges' upper ends (as a distorted embedding or
+    // a face path's edge midpoints can place them: on the CAD block, halfway down the bore's
+    // wall), it becomes the straight segment. (ClosedSnakeCapturesTheBoreRim needs it.)
+    const int n = 8;
+    std::vector<Point3d> pts;
+    std::vector<std::array<int, 3>> tris;
+    for (int i = 0; i <= n; ++i) {
+        pts.push_back(Point3d(i, 0, 0));
+        pts.push_back(Point3d(i, 1, 0));
+    }
+    for (int i = 0; i < n; ++i) {
+        tris.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+        tris.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+    }
+    CMeshO m;
+    gs_test::MakeFromArrays(m, pts, tris);
+    auto in = [&](int f, const Point3d &x) {
+        SurfacePoint p;
+        vcg::Triangle3<double> t(Point3d::Construct(m.face[f].cP(0)), Point3d::Construct(m.face[f].cP(1)),
+                                 Point3d::Construct(m.face[f].cP(2)));
+        vcg::InterpolationParameters(t, x, p.bary);
+        p.face = f;
+        return p;
+    };
+    const Point3d a(0.5, 0.2, 0), b(n - 0.5, 0.9, 0);
+    std::vector<SurfacePoint> cross;
+    for (int f = 0; f + 1 < 2 * n; ++f) { // the edge between face f and f + 1, at its upper end
+        const auto &ff = m.face[f];
+        Point3d far(0, -1, 0);
+        for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+                if (ff.cV(k) == m.face[f + 1].cV(l) && Point3d::Construct(ff.cP(k))[1] > far[1]) far = Point3d::Construct(ff.cP(k));
+        cross.push_back(in(f, far));
+    }
+    const double len = vcg::tri::PathTighten<CMeshO>::Tighten(m, in(0, a), cross, in(2 * n - 1, b));
+    EXPECT_NEAR(len, (b - a).Norm(), 1e-6);
+    for (auto &c : cross) EXPECT_LT(gs_test::DistToPolyline(c.Pd(m), {a, b}), 1e-6);
+}
+
 // ------------------------------------------------------------------ capture on CAD parts
 
 struct CadCapture
@@ -383,8 +428,56 @@ TEST_P(CadCaptureTest, ClosedSnakeOnStripsCapturesTheCylinderRim)
     EXPECT_GE(c.coverage, 0.95);
 }
 
+TEST_P(CadCaptureTest, OpenSnakeOnTopFaceCapturesThePocketRim)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    const std::vector<Point3d> seeds{{B::PX0 + 2, B::PY0 - 3, B::Z}, {B::PX0 + 8, B::PY0 - 2, B::Z}, {B::PX1 - 2, B::PY0 - 4, B::Z}};
+    const Point3d e0(B::PX0, B::PY0, B::Z), e1(B::PX1, B::PY0, B::Z);
+    auto c = Capture(m, GetParam(), seeds, false, 0.01 * (B::PX1 - B::PX0),
+                     [&](const Point3d &p) { return gs_test::DistToPolyline(p, {e0, e1}); },
+                     [](const Point3d &p) { return p[0]; }, B::PX0 + 2, B::PX1 - 2);
+    Report("open, top face, 2-4 off the pocket rim", GetParam(), c);
+    if (GetParam() != FeatureEnergyType::Crease) return;
+    EXPECT_LE(c.p95, c.tol);
+    EXPECT_GE(c.coverage, 0.95);
+}
+
+/// Position along the pocket's rim (counter-clockwise from its corner PX0, PY0) of the point
+/// of the rim nearest to p.
+double PocketRimParam(const Point3d &p)
+{
+    const auto rim = gs_test::PocketRim();
+    double best = 1e300, at = 0, acc = 0;
+    for (int i = 0; i < 4; ++i) {
+        const Point3d a = rim[i], b = rim[(i + 1) % 4];
+        const double L = (b - a).Norm();
+        const double t = std::min(1.0, std::max(0.0, ((p - a) * (b - a)) / (L * L)));
+        const double d = (a + (b - a) * t - p).Norm();
+        if (d < best) { best = d; at = acc + t * L; }
+        acc += L;
+    }
+    return at;
+}
+
+TEST_P(CadCaptureTest, ClosedSnakeCapturesThePocketRimWithItsCorners)
+{
+    CMeshO m;
+    gs_test::MakeCadBlock(m, 64);
+    const std::vector<Point3d> seeds{{B::PX0 - 2, B::PY0 - 3, B::Z}, {B::PX1 + 3, B::PY0 - 4, B::Z},
+                                     {B::PX1 + 4, B::PY1 + 2.5, B::Z}, {B::PX0 - 2.5, B::PY1 + 2, B::Z}};
+    const auto rim = gs_test::PocketRim();
+    const double rimLength = 2 * ((B::PX1 - B::PX0) + (B::PY1 - B::PY0));
+    auto c = Capture(m, GetParam(), seeds, true, 0.01 * rimLength,
+                     [&](const Point3d &p) { return gs_test::DistToClosedPolygon(p, rim); }, PocketRimParam, 0, rimLength);
+    Report("closed, top face, 2-4 off the pocket rim", GetParam(), c);
+    if (GetParam() != FeatureEnergyType::Crease) return;
+    EXPECT_LE(c.p95, c.tol);
+    EXPECT_GE(c.coverage, 0.95);
+}
+
 INSTANTIATE_TEST_SUITE_P(Energies, CadCaptureTest,
-                         ::testing::Values(FeatureEnergyType::NormalVariation),
+                         ::testing::Values(FeatureEnergyType::Crease, FeatureEnergyType::NormalVariation),
                          [](const ::testing::TestParamInfo<FeatureEnergyType> &i) {
                              return i.param == FeatureEnergyType::Crease ? std::string("Crease") : std::string("NormalVariation");
                          });

@@ -35,6 +35,7 @@
 #include <vcg/space/triangle3.h>
 
 #include "mesh_validation.h"
+#include "snake_energy_field.h"
 #include "snake_error.h"
 #include "surface_point.h"
 
@@ -251,6 +252,40 @@ private:
         }
         candStart[nf] = int(cand.size());
     }
+};
+
+/// The crease energy as the snakes read it (SnakeEnergyField): evaluated at each sample, not
+/// interpolated from vertices. Level 0 has basin width w, level 1 (capture) 3w: the snakes
+/// first slither on the wide basins, then settle in the narrow ones.
+template <class MeshType>
+class CreaseEnergyField : public SnakeEnergyField<MeshType>
+{
+public:
+    /// Basin widths of the levels for `steps` smoothing steps (see CreaseEnergy::WidthFor).
+    static std::vector<double> Widths(const MeshType &m, int steps)
+    {
+        vcg::Box3d b;
+        for (const auto &v : m.vert)
+            if (!v.IsD()) b.Add(vcg::Point3d::Construct(v.cP()));
+        const double w = CreaseEnergy<MeshType>::WidthFor(b.Diag(), steps);
+        return {w, CaptureFactor() * w};
+    }
+    static double CaptureFactor() { return 3.0; }
+
+    CreaseEnergyField(const MeshType &m, double angleDeg, const std::vector<double> &levelWidths) : widths(levelWidths)
+    {
+        if (widths.empty()) throw SnakeError("The crease energy needs at least one basin width.");
+        crease.Build(m, angleDeg, CreaseEnergy<MeshType>::ReachInWidths() * *std::max_element(widths.begin(), widths.end()));
+    }
+    int Levels() const override { return int(widths.size()); }
+    double Value(int level, const SurfacePoint &p) const override { return crease.Value(p, width(level)); }
+    vcg::Point3d Gradient(int level, const SurfacePoint &p) const override { return crease.Gradient(p, width(level)); }
+    const CreaseEnergy<MeshType> &Creases() const { return crease; }
+
+private:
+    CreaseEnergy<MeshType> crease;
+    std::vector<double> widths;
+    double width(int level) const { return widths[std::max(0, std::min(level, int(widths.size()) - 1))]; }
 };
 
 } // namespace tri

@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 
 #include <vcg_ext/face_path.h>
+#include <vcg_ext/path_tighten.h>
 #include <vcg_ext/seed_path.h>
 #include <vcg_ext/snake_curve.h>
 #include <vcg_ext/snake_error.h>
@@ -129,18 +130,21 @@ public:
 
     /// Seeds given as surface points (face + barycentric, e.g. snapped from coordinates or a
     /// Pick Points file): the curve starts and ends exactly at them (SeedPath::ComputeFromPoints).
-    void InitFromSeedPoints(const std::vector<SurfacePoint> &seeds, bool closed, SeedPathCost cost = SeedPathCost::Length)
+    /// `lengthScale`: the snake's length unit (see LengthScale()); 0 = from the path's faces.
+    void InitFromSeedPoints(const std::vector<SurfacePoint> &seeds, bool closed, SeedPathCost cost = SeedPathCost::Length,
+                            double lengthScale = 0)
     {
         typename SeedPath<MeshType>::PointResult path = SeedPath<MeshType>::ComputeFromPoints(surf->Mesh(), seeds, closed, cost);
-        InitFromSurfacePath(path.points, closed);
+        InitFromSurfacePath(path.points, closed, lengthScale);
         seedVertices.clear();
         seedPoints.clear();
         for (int i : path.seedPositions) seedPoints.push_back(path.points[i]);
     }
 
     /// Samples at uniform spacing along a polyline of surface points in which consecutive
-    /// points share a face (closed: the first point is not repeated).
-    void InitFromSurfacePath(const std::vector<SurfacePoint> &pathPts, bool closed)
+    /// points share a face (closed: the first point is not repeated). `lengthScale`: the
+    /// snake's length unit; 0 = the median edge of the faces the path crosses.
+    void InitFromSurfacePath(const std::vector<SurfacePoint> &pathPts, bool closed, double lengthScale = 0)
     {
         const MeshType &m = surf->Mesh();
         std::vector<SurfacePoint> pv;
@@ -166,7 +170,7 @@ public:
         const double L = cum.back();
         // The length unit: the median edge of the faces the path crosses (the pieces
         // themselves can be far longer than any edge on a CAD face).
-        const double unit = medianPositive(faceEdges(pieceFace));
+        const double unit = (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(faceEdges(pieceFace));
         const double d = st.params.spacing * unit;
         if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
@@ -726,6 +730,7 @@ private:
             for (const auto &c : gap.crossings) out.push_back(c);
         } else {
             std::vector<int> fp = FacePath<MeshType>::Find(*surf, st.samples[g].p.face, st.samples[(g + 1) % n].p.face);
+            std::vector<SurfacePoint> mid;
             for (size_t k = 0; k + 1 < fp.size(); ++k) {
                 const FaceType &f = surf->Mesh().face[fp[k]];
                 for (int e = 0; e < 3; ++e)
@@ -733,9 +738,13 @@ private:
                         vcg::Point3d b(0, 0, 0);
                         b[e] = 0.5;
                         b[(e + 1) % 3] = 0.5;
-                        out.push_back(SurfacePoint(fp[k], b));
+                        mid.push_back(SurfacePoint(fp[k], b));
                     }
             }
+            // the shortest path through those faces, not their edges' midpoints (on slivers
+            // these lie far from both samples)
+            PathTighten<MeshType>::Tighten(surf->Mesh(), st.samples[g].p, mid, st.samples[(g + 1) % n].p);
+            out.insert(out.end(), mid.begin(), mid.end());
         }
         if (withEnds) out.push_back(st.samples[(g + 1) % n].p);
         return out;

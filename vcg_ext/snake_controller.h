@@ -30,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <vcg_ext/crease_energy.h>
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/geometric_snake.h>
 #include <vcg_ext/safe_file_write.h>
@@ -75,6 +76,7 @@ public:
         energyComputed = true;
         if (surface) {
             surface->SetEnergyFromQuality();
+            applyEnergyField();
             for (auto &s : snakes) s->EnergyChanged();
         }
         saved.assign(snakes.size(), nullptr);
@@ -122,13 +124,26 @@ public:
     Surface &EnsureSurface()
     {
         if (!energyComputed) ComputeEnergy(energyType, energySmoothing);
-        if (!surface) surface = std::make_shared<Surface>(mesh);
+        if (!surface) {
+            surface = std::make_shared<Surface>(mesh);
+            applyEnergyField();
+        }
         return *surface;
     }
     bool HasSurface() const { return bool(surface); }
     /// False when the mesh lost or gained elements since the snakes were built on it.
     bool MeshMatches() const { return !surface || surface->MatchesMesh(); }
     double MeanEdge() { return EnsureSurface().MeanEdge(); }
+    /// The length unit of new snakes (spacing, step caps, tolerances), 0 = the engine's own
+    /// (from the edges along the seed path). With the crease energy: its basin width without
+    /// smoothing, since on a CAD tessellation the edges are slivers as long as the part and
+    /// say nothing about the features; smoothing widens the basin, never the sampling (the
+    /// corners of a pocket's rim are cut by about one sample spacing).
+    double LengthScale() const
+    {
+        if (energyFromQuality || energyType != FeatureEnergyType::Crease) return 0;
+        return CreaseEnergyField<MeshType>::Widths(mesh, 0)[0];
+    }
 
     // ================================================================ seeds
     /// The vertex of face `face` nearest to the surface point (face, bary): the seed a click
@@ -311,7 +326,7 @@ public:
         EnsureSurface();
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(surface, params));
-        sn->InitFromSeedPoints(pts, closed, seedCost);
+        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale());
         record("build");
         snakes.push_back(std::move(sn));
         saved.push_back(nullptr);
@@ -785,6 +800,15 @@ private:
     double creaseAngle = CreaseEnergy<MeshType>::DefaultAngle();
     bool energyComputed = false;
     bool energyFromQuality = false;
+
+    /// The crease energy is read by the snakes at each sample (CreaseEnergyField), not
+    /// interpolated from the vertex values the quality holds (those are for display).
+    void applyEnergyField()
+    {
+        if (!surface || energyFromQuality || energyType != FeatureEnergyType::Crease) return;
+        surface->SetEnergyField(std::make_shared<CreaseEnergyField<MeshType>>(
+            mesh, creaseAngle, CreaseEnergyField<MeshType>::Widths(mesh, energySmoothing)));
+    }
     long revision = 0, savedRevision = 0;
     std::string lastOp;
     double lastOpMs = 0;

@@ -16,6 +16,7 @@
 #include <vcg_ext/conformal_param.h>
 #include <vcg_ext/face_path.h>
 #include <vcg_ext/local_region.h>
+#include <vcg_ext/path_tighten.h>
 #include <vcg_ext/region_walk.h>
 #include <vcg_ext/snake_curve.h>
 #include <vcg_ext/snake_partition.h>
@@ -217,6 +218,9 @@ public:
             }
             gap.faces.push_back(region.faces[w.face]);
             gap.faces.push_back(region.faces[lf[b]]);
+            // straight in the plane is not shortest on the surface where the embedding is
+            // distorted (slivers): the shortest path through the same faces (path_tighten.h)
+            PathTighten<MeshType>::Tighten(m, st.samples[seg.idx[a]].p, gap.crossings, st.samples[seg.idx[b]].p);
             gap.traced = true;
         }
     }
