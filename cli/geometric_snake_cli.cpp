@@ -494,10 +494,7 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
         ctl.CreateSnakeFromSeedPoints(Snap(job, m, seedPts, closed, source).points, closed);
     }
     json warnings = json::array();
-    // (As the filter: those warnings are about the vertex energy; the crease energy is read at the samples.)
-    const bool creaseField = !useQuality && energyType == int(FeatureEnergyType::Crease);
-    for (const auto &w : ctl.EnsureSurface().Warnings())
-        if (!creaseField) warnings.push_back(w);
+    for (const auto &w : ctl.EnergyWarnings()) warnings.push_back(w); // as the filter
     GeometricSnake<CMeshO> &snake = ctl.Get(0);
     {
         Progress bar(job.progress);

@@ -736,40 +736,19 @@ void EditGeometricSnakePlugin::usePickPoints()
     if (path.isEmpty() || !QFileInfo::exists(path))
         path = QFileDialog::getOpenFileName(dock, "Picked points file", suggestion, "Picked points (*.pp)");
     if (path.isEmpty()) return;
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly | QIODevice::Text)) { report("Geometric snake: cannot read " + path, true); return; }
-    QString text = QTextStream(&f).readAll();
-    QRegularExpression re("<point\\b([^>]*)>");
-    QRegularExpression attr("\\b(x|y|z|active)\\s*=\\s*\"([^\"]*)\"");
-    std::vector<int> seeds;
-    auto mi = re.globalMatch(text);
-    while (mi.hasNext()) {
-        QString a = mi.next().captured(1);
-        double xyz[3] = {NAN, NAN, NAN};
-        bool active = true;
-        auto ai = attr.globalMatch(a);
-        while (ai.hasNext()) {
-            auto m = ai.next();
-            QString n = m.captured(1);
-            if (n == "active") active = m.captured(2) != "0";
-            else xyz[n[0].toLatin1() - 'x'] = m.captured(2).toDouble();
-        }
-        if (!active || !std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) continue;
-        vcg::Point3d p(xyz[0], xyz[1], xyz[2]);
-        int best = -1;
-        double bd = 1e300;
-        for (size_t i = 0; i < model->cm.vert.size(); ++i) {
-            if (model->cm.vert[i].IsD()) continue;
-            double d = (vcg::Point3d::Construct(model->cm.vert[i].cP()) - p).SquaredNorm();
-            if (d < bd) { bd = d; best = int(i); }
-        }
-        if (best >= 0 && (seeds.empty() || seeds.back() != best)) seeds.push_back(best);
-    }
-    if (seeds.empty()) { report("Geometric snake: no picked points in " + path, true); return; }
-    if (guarded("pick points", [&] { ctl->SetSeeds(seeds); })) {
+    // the picked points are seeds at the surface points nearest to them (SeedPointSnap), not
+    // at the nearest vertices: on a CAD part every vertex lies on some crease
+    size_t count = 0;
+    if (guarded("pick points", [&] {
+            const auto pts = vcg::tri::SeedPointsParser::Active(vcg::tri::SeedPointsParser::ReadPickPointsFile(path.toStdString()));
+            if (pts.empty()) throw vcg::tri::SnakeError("no picked points in " + path.toStdString());
+            const auto snap = vcg::tri::SeedPointSnap<CMeshO>::Snap(model->cm, pts, 1);
+            ctl->SetSeedPoints(snap.points);
+            count = snap.points.size();
+        })) {
         dock->seedMode->setChecked(true);
         afterChange();
-        report(QString("%1 seeds from %2; press Enter to build the snake.").arg(seeds.size()).arg(path), false);
+        report(QString("%1 seeds from %2; press Enter to build the snake.").arg(count).arg(path), false);
     }
 }
 

@@ -558,10 +558,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 		logSnap(snap, pointSource);
 		ctl.CreateSnakeFromSeedPoints(snap.points, closed);
 	}
-	// (The warnings are about the vertex energy; the crease energy is read at the samples.)
-	const bool creaseField = !useQuality && energyType == int(tri::FeatureEnergyType::Crease);
-	for (const auto &w : ctl.EnsureSurface().Warnings())
-		if (!creaseField) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
+	for (const auto &w : ctl.EnergyWarnings()) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
 	tri::GeometricSnake<CMeshO> &snake = ctl.Get(0);
 	int shown = -1;
 	snake.Run(maxOps, [&](int op) {

@@ -66,8 +66,66 @@ TEST(SnakeController, PickGivesNearestVertexOfTheHitTriangle)
     int v1 = int(f.cV(1) - &m.vert[0]);
     EXPECT_EQ(c.SeedVertexFromPick(10, vcg::Point3d(0.1, 0.8, 0.1)), v1);
     EXPECT_EQ(c.AddSeedFromPick(10, vcg::Point3d(0.1, 0.8, 0.1)), v1);
-    EXPECT_EQ(c.AddSeedFromPick(10, vcg::Point3d(0.2, 0.7, 0.1)), -1); // same vertex again: ignored
+    EXPECT_EQ(c.AddSeedFromPick(10, vcg::Point3d(0.1, 0.8, 0.1)), -1); // the same point again: ignored
     EXPECT_EQ(c.Seeds().size(), 1u);
+    // the seed is the clicked surface point, not the vertex
+    const vcg::Point3d hit = SurfacePoint(10, vcg::Point3d(0.1, 0.8, 0.1)).Pd(m);
+    EXPECT_LT((c.SeedPosition(0) - hit).Norm(), 1e-12);
+    EXPECT_EQ(c.SeedPoint(0).face, 10);
+    EXPECT_EQ(c.AddSeedFromPick(10, vcg::Point3d(0.2, 0.7, 0.1)), v1); // another point near the same vertex
+    EXPECT_EQ(c.Seeds().size(), 2u);
+}
+
+TEST(SnakeController, ClicksInsideFacesMakeACurveThroughThemUndoableAndSaved)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    const std::vector<std::pair<int, vcg::Point3d>> picks{{3, {0.2, 0.3, 0.5}}, {40, {0.6, 0.3, 0.1}}};
+    for (const auto &p : picks) c.AddSeedFromPick(p.first, p.second);
+    const vcg::Point3d a = SurfacePoint(picks[0].first, picks[0].second).Pd(m);
+    const vcg::Point3d b = SurfacePoint(picks[1].first, picks[1].second).Pd(m);
+    EXPECT_EQ(c.NearestSeed(b), 1);
+    // undo / redo of a click keeps the seed's surface point
+    ASSERT_TRUE(c.Undo());
+    EXPECT_EQ(c.Seeds().size(), 1u);
+    ASSERT_TRUE(c.Redo());
+    ASSERT_EQ(c.Seeds().size(), 2u);
+    EXPECT_LT((c.SeedPosition(1) - b).Norm(), 1e-12);
+    c.CloseSeeds(false);
+    {
+        const auto &s = c.Get(0);
+        EXPECT_LT((s.Samples().front().p.Pd(m) - a).Norm(), 1e-9);
+        EXPECT_LT((s.Samples().back().p.Pd(m) - b).Norm(), 1e-9);
+        ASSERT_EQ(s.SeedPoints().size(), 2u);
+    }
+    // undoing the build gives the clicked seeds back, as points
+    ASSERT_TRUE(c.Undo());
+    EXPECT_EQ(c.SnakeCount(), 0);
+    ASSERT_EQ(c.Seeds().size(), 2u);
+    EXPECT_LT((c.SeedPosition(0) - a).Norm(), 1e-12);
+    // the session remembers unbuilt click seeds as surface points
+    Controller d(m);
+    d.FromJson(c.ToJson());
+    ASSERT_EQ(d.Seeds().size(), 2u);
+    EXPECT_LT((d.SeedPosition(0) - a).Norm(), 1e-9);
+    EXPECT_LT((d.SeedPosition(1) - b).Norm(), 1e-9);
+    // removing a seed keeps the others' points; a bad seed_points list is refused, nothing changes
+    d.RemoveSeed(0);
+    ASSERT_EQ(d.Seeds().size(), 1u);
+    EXPECT_LT((d.SeedPosition(0) - b).Norm(), 1e-9);
+    auto j = c.ToJson();
+    j["seed_points"] = nlohmann::json::array({j["seed_points"][0]});
+    EXPECT_THROW(d.FromJson(j), SnakeError);
+    EXPECT_EQ(d.Seeds().size(), 1u);
+    // seeds from surface points (a Pick Points file): the curve passes exactly through them
+    Controller e(m);
+    e.SetSeedPoints({SurfacePoint(picks[0].first, picks[0].second), SurfacePoint(picks[1].first, picks[1].second)});
+    EXPECT_LT((e.SeedPosition(1) - b).Norm(), 1e-12);
+    EXPECT_THROW(e.SetSeedPoints({SurfacePoint(-1, vcg::Point3d(1, 0, 0))}), SnakeError);
+    EXPECT_EQ(e.Seeds().size(), 2u);
+    e.CloseSeeds(false);
+    EXPECT_LT((e.Get(0).Samples().front().p.Pd(m) - a).Norm(), 1e-9);
 }
 
 TEST(SnakeController, BadInputThrowsAndChangesNothing)

@@ -56,10 +56,12 @@ public:
     // ----------------------------------------------------------------- creation
     /// Section 5.5: seeds (vertex indices) joined by shortest edge paths, then samples taken
     /// along the path at uniform spacing (Sec. 7).
-    void InitFromSeeds(const std::vector<int> &seeds, bool closed, SeedPathCost cost = SeedPathCost::Length)
+    /// `lengthScale`: the snake's length unit (see LengthScale()); 0 = from the path's edges.
+    void InitFromSeeds(const std::vector<int> &seeds, bool closed, SeedPathCost cost = SeedPathCost::Length,
+                       double lengthScale = 0)
     {
         typename SeedPath<MeshType>::Result path = SeedPath<MeshType>::Compute(surf->Mesh(), seeds, closed, cost);
-        InitFromPath(path.vertices, closed);
+        InitFromPath(path.vertices, closed, lengthScale);
         seedVertices = seeds;
         seedPoints.clear();
         for (int v : seeds) seedPoints.push_back(vertexPoint(v));
@@ -67,7 +69,7 @@ public:
 
     /// Samples along a vertex path (consecutive vertices share an edge). Closed paths do not
     /// repeat the first vertex.
-    void InitFromPath(const std::vector<int> &pathVerts, bool closed)
+    void InitFromPath(const std::vector<int> &pathVerts, bool closed, double lengthScale = 0)
     {
         MeshType &m = surf->Mesh();
         std::vector<int> pv = pathVerts;
@@ -83,7 +85,7 @@ public:
         // set of parameters fits meshes whose edge lengths vary by 10-100x.
         std::vector<double> pathEdges;
         for (size_t i = 1; i < pv.size(); ++i) pathEdges.push_back(cum[i] - cum[i - 1]);
-        const double unit = medianPositive(pathEdges);
+        const double unit = (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(pathEdges);
         double d = st.params.spacing * unit;
         if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
         long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;

@@ -63,8 +63,9 @@ public:
             i1[i] = (j + 2) % 3;
             e0[i] = vcg::Point3d::Construct(f.cV(i0[i])->cP());
             e1[i] = vcg::Point3d::Construct(f.cV(i1[i])->cP());
-            const double s = c.bary[i0[i]] + c.bary[i1[i]];
-            t[i] = s > 0 ? std::min(1.0, std::max(0.0, c.bary[i1[i]] / s)) : 0.5;
+            // start from the point of the edge nearest to the chord a-b: exact where the strip
+            // is flat and the chord crosses it, a good start elsewhere
+            t[i] = nearestToChord(e0[i], e1[i], pa, pb);
             p[i] = held[i] ? c.Pd(m) : e0[i] * (1 - t[i]) + e1[i] * t[i];
         }
         double scale = (pb - pa).Norm();
@@ -101,6 +102,24 @@ public:
     }
 
 private:
+    /// The t in [0,1] of the point of segment e0-e1 nearest to segment a-b (Ericson,
+    /// Real-Time Collision Detection, 5.1.9).
+    static double nearestToChord(const vcg::Point3d &e0, const vcg::Point3d &e1, const vcg::Point3d &a,
+                                 const vcg::Point3d &b)
+    {
+        const vcg::Point3d d1 = e1 - e0, d2 = b - a, r = e0 - a;
+        const double aa = d1 * d1, ee = d2 * d2, f = d2 * r;
+        if (!(aa > 0)) return 0.5;
+        const double c = d1 * r;
+        if (!(ee > 0)) return std::min(1.0, std::max(0.0, -c / aa));
+        const double bb = d1 * d2, den = aa * ee - bb * bb;
+        double s = den > 1e-12 * aa * ee ? std::min(1.0, std::max(0.0, (bb * f - c * ee) / den)) : 0.0;
+        const double u = (bb * s + f) / ee;
+        if (u < 0) s = std::min(1.0, std::max(0.0, -c / aa));
+        else if (u > 1) s = std::min(1.0, std::max(0.0, (bb - c) / aa));
+        return std::isfinite(s) ? s : 0.5;
+    }
+
     /// The t in [0,1] of the point of segment e0-e1 that minimizes |P - A| + |P - C|: with
     /// axial positions a, c and distances ra, rc from the edge's line, the unfolded straight
     /// line crosses it at a + (c - a) ra / (ra + rc).

@@ -35,6 +35,7 @@
 #include <vcg_ext/geometric_snake.h>
 #include <vcg_ext/safe_file_write.h>
 #include <vcg_ext/seed_path.h>
+#include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_surface.h>
@@ -131,6 +132,19 @@ public:
         return *surface;
     }
     bool HasSurface() const { return bool(surface); }
+    /// Warnings about the energy the snakes read, for the Log: those of the vertex energy,
+    /// or, for the crease energy (read at the samples), that it found no crease at all.
+    std::vector<std::string> EnergyWarnings()
+    {
+        Surface &s = EnsureSurface();
+        if (energyFromQuality || energyType != FeatureEnergyType::Crease) return s.Warnings();
+        const auto *f = dynamic_cast<const CreaseEnergyField<MeshType> *>(&s.EnergyField());
+        if (f && f->Creases().CreaseCount() == 0)
+            return {"no edge has a dihedral angle above " + std::to_string(int(std::lround(creaseAngle))) +
+                    " degrees: the crease energy is flat and the snake will not move (lower the crease angle, "
+                    "or choose another energy type)."};
+        return {};
+    }
     /// False when the mesh lost or gained elements since the snakes were built on it.
     bool MeshMatches() const { return !surface || surface->MatchesMesh(); }
     double MeanEdge() { return EnsureSurface().MeanEdge(); }
@@ -171,15 +185,30 @@ public:
         return best;
     }
 
-    /// Adds the seed for a click; returns the vertex, or -1 if it repeats the last seed.
-    int AddSeedFromPick(int face, const vcg::Point3d &bary) { return AddSeedVertex(SeedVertexFromPick(face, bary)); }
+    /// Adds the seed for a click: the surface point hit (face + barycentric), where the curve
+    /// will start or pass exactly; on a CAD tessellation every vertex lies on some crease, so
+    /// the seed must not jump to one. Returns the nearest vertex of the hit triangle (the
+    /// seed's vertex in Seeds()), or -1 if the click repeats the last seed.
+    int AddSeedFromPick(int face, const vcg::Point3d &bary)
+    {
+        const int v = SeedVertexFromPick(face, bary);
+        SurfacePoint sp(face, bary);
+        sp.Normalize();
+        if (!seeds.empty() && SeedPosition(int(seeds.size()) - 1) == sp.Pd(mesh)) return -1;
+        record("seed");
+        seeds.push_back(v);
+        seedAt.push_back(sp);
+        touch("seed");
+        return v;
+    }
 
     int AddSeedVertex(int v)
     {
         checkVertex(v);
-        if (!seeds.empty() && seeds.back() == v) return -1;
+        if (!seeds.empty() && seeds.back() == v && seedAt.back().face < 0) return -1;
         record("seed");
         seeds.push_back(v);
+        seedAt.push_back(SurfacePoint());
         touch("seed");
         return v;
     }
@@ -191,15 +220,21 @@ public:
     {
         if (!std::isfinite(minSpacing) || minSpacing < 0) throw SnakeError("Geometric snake: bad stroke spacing.");
         std::vector<int> verts;
+        std::vector<SurfacePoint> at; // the stroke's point where it reached each vertex's triangle
         for (const auto &p : stroke) {
             int v;
             try { v = SeedVertexFromPick(p.face, p.bary); }
             catch (const SnakeError &) { continue; } // stroke points off the mesh are skipped
-            if (verts.empty() || verts.back() != v) verts.push_back(v);
+            if (verts.empty() || verts.back() != v) {
+                verts.push_back(v);
+                at.push_back(SurfacePoint(p.face, p.bary));
+                at.back().Normalize();
+            }
         }
         if (verts.empty()) throw SnakeError("Geometric snake: the stroke does not touch the mesh.");
         double h = meanEdgeNoSurface();
         std::vector<int> kept;
+        std::vector<SurfacePoint> keptAt;
         int last = seeds.empty() ? -1 : seeds.back();
         for (size_t i = 0; i < verts.size(); ++i) {
             int v = verts[i];
@@ -207,10 +242,12 @@ public:
             if (v == last) continue;
             if (last >= 0 && !isLast && vdist(v, last) < minSpacing * h) continue;
             kept.push_back(v);
+            keptAt.push_back(at[i]);
             last = v;
         }
         if (!kept.empty()) record("stroke");
-        for (int v : kept) seeds.push_back(v);
+        seeds.insert(seeds.end(), kept.begin(), kept.end());
+        seedAt.insert(seedAt.end(), keptAt.begin(), keptAt.end());
         if (!kept.empty()) touch("stroke");
         return int(kept.size());
     }
@@ -248,6 +285,7 @@ public:
         }
         record("selection seeds");
         seeds = order;
+        seedAt.assign(seeds.size(), SurfacePoint());
         touch("selection seeds");
         return int(seeds.size());
     }
@@ -258,6 +296,25 @@ public:
         for (int v : s) checkVertex(v);
         record("seeds");
         seeds = s;
+        seedAt.assign(seeds.size(), SurfacePoint());
+        touch("seeds");
+    }
+
+    /// Replaces the seeds by surface points (e.g. a Pick Points file snapped with
+    /// SeedPointSnap): the curve will pass exactly through them. Validated.
+    void SetSeedPoints(const std::vector<SurfacePoint> &pts)
+    {
+        std::vector<int> v;
+        std::vector<SurfacePoint> at;
+        for (const auto &p : pts) {
+            checkSurfacePoint(p);
+            v.push_back(SeedVertexFromPick(p.face, p.bary));
+            at.push_back(p);
+            at.back().Normalize();
+        }
+        record("seeds");
+        seeds = v;
+        seedAt = at;
         touch("seeds");
     }
 
@@ -266,6 +323,7 @@ public:
         if (i < 0 || i >= int(seeds.size())) throw SnakeError("Geometric snake: no seed " + std::to_string(i) + ".");
         record("remove seed");
         seeds.erase(seeds.begin() + i);
+        seedAt.erase(seedAt.begin() + i);
         touch("remove seed");
     }
     bool RemoveLastSeed()
@@ -273,6 +331,7 @@ public:
         if (seeds.empty()) return false;
         record("remove seed");
         seeds.pop_back();
+        seedAt.pop_back();
         touch("remove seed");
         return true;
     }
@@ -281,6 +340,7 @@ public:
         if (seeds.empty()) return;
         record("clear seeds");
         seeds.clear();
+        seedAt.clear();
         touch("clear seeds");
     }
     /// The seed nearest to p, within maxDist (-1 if none).
@@ -289,13 +349,20 @@ public:
         int best = -1;
         double bd = maxDist;
         for (size_t i = 0; i < seeds.size(); ++i) {
-            double d = (P(seeds[i]) - p).Norm();
+            double d = (SeedPosition(int(i)) - p).Norm();
             if (d <= bd) { bd = d; best = int(i); }
         }
         return best;
     }
     const std::vector<int> &Seeds() const { return seeds; }
-    vcg::Point3d SeedPosition(int i) const { return P(seeds.at(i)); }
+    /// Where seed i is: the clicked surface point, or its vertex.
+    vcg::Point3d SeedPosition(int i) const
+    {
+        const SurfacePoint &sp = seedAt.at(i);
+        return sp.face >= 0 ? sp.Pd(mesh) : P(seeds.at(i));
+    }
+    /// Seed i as a surface point, or an invalid point (face -1) for a seed placed as a vertex.
+    const SurfacePoint &SeedPoint(int i) const { return seedAt.at(i); }
 
     /// Closes the seed list: builds the initial snake at once (Sec. 5.5), selects it and
     /// clears the seeds. On error nothing changes (the seeds stay, to be fixed).
@@ -306,15 +373,28 @@ public:
             throw SnakeError(std::string("Geometric snake: a ") + (closed ? "closed" : "open") + " snake needs at least " +
                              std::to_string(need) + " seeds (" + std::to_string(seeds.size()) + " placed).");
         std::vector<int> s = seeds;
+        std::vector<SurfacePoint> at = seedAt;
         EnsureSurface();
         checkMesh();
+        // Seeds inside faces (clicks) make a curve through those points; vertex seeds (and
+        // clicks exactly at vertices) the paper's vertex path.
+        bool atVertices = true;
+        for (size_t i = 0; i < at.size(); ++i)
+            if (at[i].face >= 0 && at[i].Pd(mesh) != P(s[i])) atVertices = false;
         std::unique_ptr<Snake> sn(new Snake(surface, params));
-        sn->InitFromSeeds(s, closed, seedCost);
+        if (atVertices) {
+            sn->InitFromSeeds(s, closed, seedCost, LengthScale());
+        } else {
+            for (size_t i = 0; i < at.size(); ++i)
+                if (at[i].face < 0) at[i] = vertexPoint(s[i]);
+            sn->InitFromSeedPoints(at, closed, seedCost, LengthScale());
+        }
         record("build");
         snakes.push_back(std::move(sn));
         saved.push_back(nullptr);
         selected = int(snakes.size()) - 1;
         seeds.clear();
+        seedAt.clear();
         touch("create snake");
         return selected;
     }
@@ -583,6 +663,9 @@ public:
         j["seed_cost"] = int(seedCost);
         j["selected"] = selected;
         j["seeds"] = seeds;
+        // where each seed was clicked (null: the vertex itself)
+        j["seed_points"] = json::array();
+        for (const auto &sp : seedAt) j["seed_points"].push_back(sp.face >= 0 ? IO::PointJson(mesh, sp) : json());
         j["snakes"] = json::array();
         for (auto &s : snakes) j["snakes"].push_back(IO::ToJson(*s));
         return j;
@@ -620,6 +703,14 @@ public:
                 for (const json &v : j["seeds"]) ns.push_back(IO::IndexFromJson(v, "seeds"));
             }
             for (int v : ns) checkVertex(v);
+            std::vector<SurfacePoint> nat(ns.size());
+            if (j.contains("seed_points")) {
+                const json &jp = j["seed_points"];
+                if (!jp.is_array() || jp.size() != ns.size())
+                    throw SnakeError("Geometric snake: \"seed_points\" must list one point (or null) per seed.");
+                for (size_t i = 0; i < ns.size(); ++i)
+                    if (!jp[i].is_null()) nat[i] = IO::SamplesFromJson(mesh, json::array({jp[i]}))[0].p;
+            }
 
             const double ca = IO::RealFrom(je, "crease_angle", CreaseEnergy<MeshType>::DefaultAngle());
             if (!std::isfinite(ca) || ca <= 0 || ca >= 180)
@@ -659,6 +750,7 @@ public:
             selected = nsel;
             params = np;
             seeds = ns;
+            seedAt = nat;
             seedCost = SeedPathCost(sc);
             touch("load");
         } catch (const json::exception &e) {
@@ -793,6 +885,7 @@ private:
     std::vector<std::unique_ptr<Snake>> snakes;
     int selected = -1;
     std::vector<int> seeds;
+    std::vector<SurfacePoint> seedAt; // per seed: the clicked surface point, or face -1 (the vertex itself)
     SnakeParams params;
     SeedPathCost seedCost = SeedPathCost::Length;
     FeatureEnergyType energyType = FeatureEnergyType::NormalVariation;
@@ -825,6 +918,7 @@ private:
         std::vector<MementoPtr> snakes;
         int selected = -1;
         std::vector<int> seeds;
+        std::vector<SurfacePoint> seedAt;
         SnakeParams params;
     };
     SnakeUndo<Session> history;
@@ -843,6 +937,7 @@ private:
         }
         s.selected = selected;
         s.seeds = seeds;
+        s.seedAt = seedAt;
         s.params = params;
         return s;
     }
@@ -862,6 +957,7 @@ private:
         }
         selected = s.selected;
         seeds = s.seeds;
+        seedAt = s.seedAt;
         params = s.params;
     }
     static size_t mementoBytes(const typename Snake::Memento &m)
@@ -879,7 +975,7 @@ private:
     /// `previous` (the snakes the last action did not touch).
     size_t sessionBytes(const Session &s, const std::vector<MementoPtr> *previous = nullptr) const
     {
-        size_t b = sizeof(Session) + s.seeds.capacity() * sizeof(int);
+        size_t b = sizeof(Session) + s.seeds.capacity() * sizeof(int) + s.seedAt.capacity() * sizeof(SurfacePoint);
         for (const auto &m : s.snakes)
             if (!previous || std::find(previous->begin(), previous->end(), m) == previous->end()) b += mementoBytes(*m);
         return b;
@@ -914,6 +1010,15 @@ private:
         lastOp = op;
     }
     vcg::Point3d P(int v) const { return vcg::Point3d::Construct(mesh.vert[v].cP()); }
+    /// Vertex v as a surface point (a corner of one of its faces).
+    SurfacePoint vertexPoint(int v) const
+    {
+        for (size_t f = 0; f < mesh.face.size(); ++f)
+            if (!mesh.face[f].IsD())
+                for (int k = 0; k < 3; ++k)
+                    if (mesh.face[f].cV(k) == &mesh.vert[v]) return SurfacePoint::AtCorner(int(f), k);
+        throw SnakeError("Geometric snake: seed vertex " + std::to_string(v) + " belongs to no face.");
+    }
     double vdist(int a, int b) const { return (P(a) - P(b)).Norm(); }
     double meanEdgeNoSurface() const
     {

@@ -405,8 +405,41 @@ class HostTests(unittest.TestCase):
         last = j["initial"]["samples"][-1]["position"]
         self.assertLess(math.dist(first, self.CAD_TOP_SEEDS[0]), 1e-4)
         self.assertLess(math.dist(last, self.CAD_TOP_SEEDS[-1]), 1e-4)
-        # Capture is not asserted here yet: on main the engine does not read the crease energy at the
-        # samples (see docs/evaluation.md#cad-tessellations and branch h10-crease).
+        # the snake reads the crease energy at its samples: it captures the edge between the seeds
+        self.assert_captures_front_edge(j, self.CAD_TOP_SEEDS[0][0], self.CAD_TOP_SEEDS[-1][0])
+        self.assertTrue(j["stats"]["converged"])
+
+    def test_cad_closed_snake_on_the_bore_rim(self):
+        """A closed snake from points 2-3.5 off the bore's top rim (on the top face's slivers)
+        captures the rim all round: p95 within 1% of the rim's length."""
+        cad = os.path.join(DATA, "cad_block.ply")
+        out_json = self.path("bore.json")
+        pts = []
+        for i in range(4):
+            a, r = 2 * math.pi * i / 4 + 0.3, 6.0 + 2.0 + (i % 2) * 1.5
+            pts.append((15.0 + r * math.cos(a), 20.0 + r * math.sin(a), 20.0))
+        rc, out = self.run_script(cad, [(FILTER_SNAKE, self.snake_params("", SeedPoints="; ".join("%.6f %.6f %.6f" % p for p in pts),
+                                                                         closed=True, EnergyType=3, out=out_json))])
+        with open(out_json) as f:
+            j = json.load(f)
+        self.assertTrue(j["closed"])
+        rim = [(15.0 + 6.0 * math.cos(2 * math.pi * k / 64), 20.0 + 6.0 * math.sin(2 * math.pi * k / 64), 20.0)
+               for k in range(64)]
+
+        def dist_rim(p):
+            best = 1e9
+            for k in range(64):
+                a, b = rim[k], rim[(k + 1) % 64]
+                d = [b[i] - a[i] for i in range(3)]
+                t = max(0.0, min(1.0, sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)))
+                best = min(best, math.dist(p, [a[i] + d[i] * t for i in range(3)]))
+            return best
+        d = sorted(dist_rim(p) for p in j["polyline"])
+        tol = 0.01 * 2 * 64 * 6.0 * math.sin(math.pi / 64)
+        self.assertLessEqual(d[int(round(0.95 * (len(d) - 1)))], tol, d[-10:])
+        angles = sorted(math.atan2(p[1] - 20.0, p[0] - 15.0) for p in j["polyline"])
+        gaps = [b - a for a, b in zip(angles, angles[1:])] + [angles[0] + 2 * math.pi - angles[-1]]
+        self.assertLess(max(gaps), 0.05 * 2 * math.pi)  # all round the rim
 
     def write_pick_points(self, path, pts):
         """A .pp file as MeshLab 2020.09's Pick Points writes it (PickedPoints::save: a
@@ -436,6 +469,7 @@ class HostTests(unittest.TestCase):
             j = json.load(f)
         for sp, p in zip(j["seed_points"], pts):
             self.assertLess(math.dist(sp["position"], p), 1e-4)
+        self.assert_captures_front_edge(j, pts[0][0], pts[-1][0])
 
     def test_seed_points_errors(self):
         cad = os.path.join(DATA, "cad_block.ply")
