@@ -389,6 +389,16 @@ void Report(const char *what, FeatureEnergyType t, const CadCapture &c)
                 100 * c.coverage, c.operations, c.converged ? "" : " (not converged)");
 }
 
+/// Issue 10's acceptance: p95 within tolerance, >= 95 % of the seeded span covered; asserted
+/// for the crease energy, reported for the others.
+void ReportAndCheck(const char *what, FeatureEnergyType t, const CadCapture &c)
+{
+    Report(what, t, c);
+    if (t != FeatureEnergyType::Crease) return;
+    EXPECT_LE(c.p95, c.tol);
+    EXPECT_GE(c.coverage, 0.95);
+}
+
 /// Every case runs with the crease energy (asserted) and with normal variation (reported,
 /// for docs/evaluation.md: on these parts it has no valley along the creases).
 class CadCaptureTest : public ::testing::TestWithParam<FeatureEnergyType> {};
@@ -400,10 +410,7 @@ TEST_P(CadCaptureTest, OpenSnakeOnTopFaceCapturesTheFrontEdge)
     const std::vector<Point3d> seeds{{6, 3, B::Z}, {20, 2, B::Z}, {35, 4, B::Z}, {54, 3, B::Z}};
     auto c = Capture(m, GetParam(), seeds, false, 0.01 * B::X, gs_test::DistToBlockTopFrontEdge,
                      [](const Point3d &p) { return p[0]; }, 6, 54);
-    Report("open, top face, 2-4 off the front edge", GetParam(), c);
-    if (GetParam() != FeatureEnergyType::Crease) return;
-    EXPECT_LE(c.p95, c.tol);
-    EXPECT_GE(c.coverage, 0.95);
+    ReportAndCheck("open, top face, 2-4 off the front edge", GetParam(), c);
 }
 
 TEST_P(CadCaptureTest, OpenSnakeOnFrontFaceCapturesTheTopEdge)
@@ -413,10 +420,7 @@ TEST_P(CadCaptureTest, OpenSnakeOnFrontFaceCapturesTheTopEdge)
     const std::vector<Point3d> seeds{{8, 0, B::Z - 3}, {30, 0, B::Z - 3.5}, {52, 0, B::Z - 2.5}};
     auto c = Capture(m, GetParam(), seeds, false, 0.01 * B::X, gs_test::DistToBlockTopFrontEdge,
                      [](const Point3d &p) { return p[0]; }, 8, 52);
-    Report("open, front face, 2.5-3.5 below the edge", GetParam(), c);
-    if (GetParam() != FeatureEnergyType::Crease) return;
-    EXPECT_LE(c.p95, c.tol);
-    EXPECT_GE(c.coverage, 0.95);
+    ReportAndCheck("open, front face, 2.5-3.5 below the edge", GetParam(), c);
 }
 
 TEST_P(CadCaptureTest, ClosedSnakeCapturesTheBoreRim)
@@ -435,10 +439,7 @@ TEST_P(CadCaptureTest, ClosedSnakeCapturesTheBoreRim)
     auto c = Capture(m, GetParam(), seeds, true, std::max(0.1 * sliver, 0.01 * rimLength),
                      [&](const Point3d &p) { return gs_test::DistToClosedPolygon(p, rim); },
                      [&](const Point3d &p) { return std::atan2(p[1] - B::BoreY, p[0] - B::BoreX) + M_PI; }, 0, 2 * M_PI);
-    Report("closed, top face, 2-3.5 off the bore rim", GetParam(), c);
-    if (GetParam() != FeatureEnergyType::Crease) return;
-    EXPECT_LE(c.p95, c.tol);
-    EXPECT_GE(c.coverage, 0.95);
+    ReportAndCheck("closed, top face, 2-3.5 off the bore rim", GetParam(), c);
 }
 
 TEST_P(CadCaptureTest, ClosedSnakeOnStripsCapturesTheCylinderRim)
@@ -457,10 +458,7 @@ TEST_P(CadCaptureTest, ClosedSnakeOnStripsCapturesTheCylinderRim)
     auto c = Capture(m, GetParam(), seeds, true, std::max(0.1 * 2 * M_PI * r / n, 0.01 * rimLength),
                      [&](const Point3d &p) { return gs_test::DistToClosedPolygon(p, rim); },
                      [&](const Point3d &p) { return std::atan2(p[1], p[0]) + M_PI; }, 0, 2 * M_PI);
-    Report("closed, side strips, 2-4 below the top rim", GetParam(), c);
-    if (GetParam() != FeatureEnergyType::Crease) return;
-    EXPECT_LE(c.p95, c.tol);
-    EXPECT_GE(c.coverage, 0.95);
+    ReportAndCheck("closed, side strips, 2-4 below the top rim", GetParam(), c);
 }
 
 TEST_P(CadCaptureTest, OpenSnakeOnTopFaceCapturesThePocketRim)
@@ -472,10 +470,7 @@ TEST_P(CadCaptureTest, OpenSnakeOnTopFaceCapturesThePocketRim)
     auto c = Capture(m, GetParam(), seeds, false, 0.01 * (B::PX1 - B::PX0),
                      [&](const Point3d &p) { return gs_test::DistToPolyline(p, {e0, e1}); },
                      [](const Point3d &p) { return p[0]; }, B::PX0 + 2, B::PX1 - 2);
-    Report("open, top face, 2-4 off the pocket rim", GetParam(), c);
-    if (GetParam() != FeatureEnergyType::Crease) return;
-    EXPECT_LE(c.p95, c.tol);
-    EXPECT_GE(c.coverage, 0.95);
+    ReportAndCheck("open, top face, 2-4 off the pocket rim", GetParam(), c);
 }
 
 /// Position along the pocket's rim (counter-clockwise from its corner PX0, PY0) of the point
@@ -505,10 +500,7 @@ TEST_P(CadCaptureTest, ClosedSnakeCapturesThePocketRimWithItsCorners)
     const double rimLength = 2 * ((B::PX1 - B::PX0) + (B::PY1 - B::PY0));
     auto c = Capture(m, GetParam(), seeds, true, 0.01 * rimLength,
                      [&](const Point3d &p) { return gs_test::DistToClosedPolygon(p, rim); }, PocketRimParam, 0, rimLength);
-    Report("closed, top face, 2-4 off the pocket rim", GetParam(), c);
-    if (GetParam() != FeatureEnergyType::Crease) return;
-    EXPECT_LE(c.p95, c.tol);
-    EXPECT_GE(c.coverage, 0.95);
+    ReportAndCheck("closed, top face, 2-4 off the pocket rim", GetParam(), c);
 }
 
 // ------------------------------------------------------------------ the edit tool's flow
