@@ -249,6 +249,7 @@ public:
         auto t0 = clock::now();
         std::vector<vcg::Point3d> before = positions();
         if (runLength < 0 && st.closed) runLength = lastLength = loopLength(before, true);
+        if (stage < 0) stage = startLevel();
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
         else motion.StepProjection(st, stats, frame());
         std::vector<vcg::Point3d> after = positions();
@@ -449,7 +450,7 @@ private:
     std::vector<SurfacePoint> seedPoints;
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
-    int stage = -1; // energy level (-1: the coarsest, from the next operation)
+    int stage = -1; // energy level (-1: chosen by startLevel() at the next operation)
     bool settledOutside = false; // settled on a coarse level outside its wells once already
     double runLength = -1, lastLength = -1; // closed snakes: length at the start of the run, after the last operation
     std::deque<double> moveHistory, travelHistory;
@@ -621,6 +622,24 @@ private:
         return stage < 0 ? top : std::min(stage, top);
     }
 
+    /// Where a run starts: the finest level whose wells the samples already sit in (on level 0
+    /// also with a mean energy below 0.7: feature-like, not a noise dip), else the coarsest. A
+    /// snake seeded on a feature is not dragged off it by a coarse level, which merges it with
+    /// a parallel feature a few edges away into one well between them.
+    int startLevel() const
+    {
+        const int top = surf->Levels() - 1;
+        for (int l = 0; l < top; ++l) {
+            if (l == 0) {
+                double e = 0;
+                for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
+                if (e >= 0.7 * double(st.samples.size())) continue;
+            }
+            if (inWells(l)) return l;
+        }
+        return top;
+    }
+
     /// The samples sit in wells of `level`: across the curve, the energy rises on both sides
     /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
     bool inWells(int level) const
@@ -635,7 +654,9 @@ private:
             const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
             const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
             const FaceType &f = m.face[s.p.face];
-            vcg::Point3d across = vcg::Point3d::Construct((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))) ^ (p[b] - p[a]);
+            const vcg::Point3d c0 = vcg::Point3d::Construct(f.cP(0)); // in double: float squares under/overflow
+            const vcg::Point3d nrm = (vcg::Point3d::Construct(f.cP(1)) - c0) ^ (vcg::Point3d::Construct(f.cP(2)) - c0);
+            vcg::Point3d across = nrm ^ (p[b] - p[a]);
             if (!(across.Norm() > 0)) continue;
             across.Normalize();
             ++count;

@@ -492,7 +492,7 @@ void RunCaptureCases(CMeshO &m, int subdiv, double noise, const std::vector<gs_c
 int main(int argc, char **argv)
 {
     bool quick = false;
-    std::string out = "sweep.csv", stages = "main,energy,params,fandisk,capture";
+    std::string out = "sweep.csv", stages = "main,energy,params,fandisk";
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out = argv[++i];

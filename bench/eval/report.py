@@ -236,7 +236,8 @@ def load_bench(path):
 def capture_section(cap, sweep_csv, outdir, headline):
     """Stage capture (issue 9): captured cases against the offset of the seeds, both methods,
     beside the same cases run by the engine before the energy pyramid (capture_before.csv,
-    when present next to the sweep: gs_eval --stages capture built on commit 34be4a2)."""
+    when present next to the sweep: gs_eval --stages capture built on commit 34be4a2, the
+    engine before issue 9's capture work)."""
     md = ["", "## Capture range: seeds 1-6 h to one side of a crease (stage capture)", "",
           "tests/capture_cases.h: projected icospheres (subdiv %s, noise %s) and fandisk's sharp-edge chains; every "
           "seed nearer to the target crease than to any other crease. Captured cases (n):" % (
@@ -387,6 +388,9 @@ def main():
         md.append(table(groups, "variant", os.path.join(outdir, "summary_params.csv")))
 
     cap = [r for r in rows if r["stage"] == "capture"]
+    cap_csv = os.path.join(os.path.dirname(os.path.abspath(sweep_csv)), "capture.csv")
+    if os.path.exists(cap_csv):
+        cap += [r for r in load_sweep(cap_csv) if r["stage"] == "capture"]
     if cap:
         md += capture_section(cap, sweep_csv, outdir, headline)
 
