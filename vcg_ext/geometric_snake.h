@@ -853,14 +853,15 @@ private:
         stats.converged = still || oscillating;
         const int level = energyLevel();
         if (level > 0) {
-            // On a coarse level the snake only has to reach its wells; it steps down to the
-            // next finer level as soon as its samples sit in them (captured) and it moves by less
-            // than 0.3 units per operation, whether or not it has settled (the cusp of a smoothed
-            // well keeps it bouncing by about that much). Settling elsewhere is
-            // a stall: first retry with full steps; a second stall steps down anyway (a snake
-            // held by its own tension, or an energy with no well there). Every switch resets
-            // the step control.
-            if ((maxMove < 0.3 && inWells(level)) || (stats.converged && settledOutside)) {
+            // On a coarse level the snake only has to reach its wells: it steps down to the
+            // next finer level as soon as its samples sit in them and it moves by less than 0.3
+            // units per operation, settled or not (the cusp of a smoothed well keeps it bouncing
+            // by about that much). From level 1 to level 0 it settles first: level 0 is flat
+            // across the chamfer that triangles straddling a crease cut, so samples stay about
+            // where they land in it. Settling outside the wells is a stall: retry once with full
+            // steps, then step down anyway (a snake held by its own tension, or no well there).
+            // Every switch resets the step control.
+            if (((level == 1 ? stats.converged : maxMove < 0.3) && inWells(level)) || (stats.converged && settledOutside)) {
                 stage = level - 1;
                 settledOutside = false;
             } else if (stats.converged) {
