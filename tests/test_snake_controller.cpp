@@ -110,14 +110,20 @@ TEST(SnakeController, ClicksInsideFacesMakeACurveThroughThemUndoableAndSaved)
     ASSERT_EQ(d.Seeds().size(), 2u);
     EXPECT_LT((d.SeedPosition(0) - a).Norm(), 1e-9);
     EXPECT_LT((d.SeedPosition(1) - b).Norm(), 1e-9);
-    // removing a seed keeps the others' points; a bad seed_points list is refused, nothing changes
+    // removing a seed keeps the others' points; a seed list edited by hand (seed_points no
+    // longer one per seed) gives vertex seeds; a seed point off the mesh is refused, nothing changes
     d.RemoveSeed(0);
     ASSERT_EQ(d.Seeds().size(), 1u);
     EXPECT_LT((d.SeedPosition(0) - b).Norm(), 1e-9);
     auto j = c.ToJson();
-    j["seed_points"] = nlohmann::json::array({j["seed_points"][0]});
+    j["seeds"] = {c.Seeds()[0], c.Seeds()[1], c.Seeds()[0]};
+    d.FromJson(j);
+    ASSERT_EQ(d.Seeds().size(), 3u);
+    EXPECT_EQ(d.SeedPoint(0).face, -1);
+    j = c.ToJson();
+    j["seed_points"][0]["face"] = int(m.face.size()) + 5;
     EXPECT_THROW(d.FromJson(j), SnakeError);
-    EXPECT_EQ(d.Seeds().size(), 1u);
+    EXPECT_EQ(d.Seeds().size(), 3u);
     // seeds from surface points (a Pick Points file): the curve passes exactly through them
     Controller e(m);
     e.SetSeedPoints({SurfacePoint(picks[0].first, picks[0].second), SurfacePoint(picks[1].first, picks[1].second)});

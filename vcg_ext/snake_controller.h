@@ -703,11 +703,11 @@ public:
                 for (const json &v : j["seeds"]) ns.push_back(IO::IndexFromJson(v, "seeds"));
             }
             for (int v : ns) checkVertex(v);
+            // "seeds" is what counts: "seed_points" (where each was clicked) only when it lists one
+            // point (or null) per seed, so a hand-edited seed list is not refused
             std::vector<SurfacePoint> nat(ns.size());
-            if (j.contains("seed_points")) {
+            if (j.contains("seed_points") && j["seed_points"].is_array() && j["seed_points"].size() == ns.size()) {
                 const json &jp = j["seed_points"];
-                if (!jp.is_array() || jp.size() != ns.size())
-                    throw SnakeError("Geometric snake: \"seed_points\" must list one point (or null) per seed.");
                 for (size_t i = 0; i < ns.size(); ++i)
                     if (!jp[i].is_null()) nat[i] = IO::SamplesFromJson(mesh, json::array({jp[i]}))[0].p;
             }
