@@ -377,6 +377,21 @@ class WorkDirTestCase(unittest.TestCase):
     def path(self, name):
         return os.path.join(self.work, name)
 
+    def run_script(self, mesh, filters, outputs=()):
+        """Runs the filters on `mesh` through meshlabserver (its output kept beside the script as
+        .mlx.log). outputs: extra meshlabserver args per output, e.g. ["-o", out, "-m", "vq"]."""
+        mlx = self.path("script%d.mlx" % len(os.listdir(self.work)))
+        write_mlx(mlx, filters)
+        args = ["-i", mesh]
+        for o in outputs:
+            args += list(o)
+        args += ["-s", mlx]
+        rc, out = run_meshlabserver(args, cwd=self.work)
+        with open(mlx + ".log", "w") as f:
+            f.write(out)
+        self.assertGreaterEqual(rc, 0, "meshlabserver CRASHED (signal %d):\n%s" % (-rc, out))
+        return rc, out
+
     def write_cube(self, n, name="cube.ply"):
         """The grid cube of n x n quads per side as `name` in the work folder; sets self.cube,
         self.cube_verts, self.cube_faces."""

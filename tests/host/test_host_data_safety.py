@@ -53,17 +53,6 @@ class DataSafetyTests(mlhost.WorkDirTestCase):
         super().setUp()
         self.verts, self.faces = mlhost.grid_cube(8)
 
-    def run_script(self, mesh, filters, outputs=()):
-        mlx = self.path("script%d.mlx" % len(os.listdir(self.work)))
-        mlhost.write_mlx(mlx, filters)
-        args = ["-i", mesh]
-        for o in outputs:
-            args += list(o)
-        args += ["-s", mlx]
-        rc, out = mlhost.run_meshlabserver(args, cwd=self.work)
-        self.assertGreaterEqual(rc, 0, "meshlabserver CRASHED (signal %d):\n%s" % (-rc, out))
-        return rc, out
-
     def snake(self, seeds, out="", closed=False):
         return (FILTER_SNAKE, {"Seeds": seeds, "Closed": closed, "Alpha": 0.05, "Beta": 0.5, "Gamma": 1.0,
                                "ExternalWeight": 1.0, "Spacing": 1.0, "MaxOperations": 200, "Method": 0,
