@@ -48,6 +48,9 @@ public:
         faceSlot.assign(m.face.size(), -1);
         vertStamp.assign(m.vert.size(), 0);
         vertSlot.assign(m.vert.size(), -1);
+        vertMark.assign(m.vert.size(), 0);
+        vertDist.assign(m.vert.size(), 0.0);
+        vertSrc.assign(m.vert.size(), 0);
         if (captureSmoothing < 0 || captureSmoothing > 10000)
             throw SnakeError("Geometric snake: capture smoothing must be in [0, 10000].");
         captureSteps = captureSmoothing;
@@ -115,11 +118,17 @@ public:
         if (++generation == 0x7fffffff) {
             std::fill(faceStamp.begin(), faceStamp.end(), 0);
             std::fill(vertStamp.begin(), vertStamp.end(), 0);
+            std::fill(vertMark.begin(), vertMark.end(), 0);
             generation = 1;
         }
         return generation;
     }
     std::vector<int> faceStamp, faceSlot, vertStamp, vertSlot;
+    /// Distances from a region's core (LocalRegion's metric margin), valid where vertMark is
+    /// the current generation; the heap is reused so that growing a region does not allocate.
+    std::vector<int> vertMark, vertSrc;
+    std::vector<double> vertDist;
+    std::vector<std::pair<double, int>> heapScratch;
 
 private:
     MeshType &mesh;
