@@ -154,7 +154,8 @@ public:
                     }
                     F.row(j) = f.transpose();
                 }
-                Eigen::MatrixXd Xn = spline.Update(X, F);
+                Eigen::MatrixXd &Xn = work.Xn;
+                spline.Update(X, F, Xn);
                 bool left = false;
                 for (int j = 0; j < k; ++j) {
                     if (fixed[j]) continue;
@@ -168,8 +169,9 @@ public:
                     double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(E, lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
                     if (len == 0) continue;
-                    RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
-                                                            X.row(j).transpose() + d, false);
+                    RegionWalk::Result &w = work.walk;
+                    RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(), X.row(j).transpose() + d,
+                                     false, w);
                     // The energy is piecewise linear, so its force does not vanish at the bottom
                     // of a well and a sample would bounce across it by |f|/gamma: a move that
                     // raised the sample's energy halves its step cap, a downhill one restores it.
@@ -203,10 +205,12 @@ public:
             int a = j, b = (j + 1) % k;
             int g = st.GapIndex(seg.idx[a], seg.idx[b]);
             if (g < 0) continue;
-            RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(),
-                                                    X.row(b).transpose(), true);
-            SnakeGap &gap = st.gaps[g];
-            gap = SnakeGap();
+            RegionWalk::Result &w = work.walk;
+            RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(), X.row(b).transpose(), true, w);
+            SnakeGap &gap = st.gaps[g]; // cleared, not replaced: its lists keep their memory
+            gap.faces.clear();
+            gap.crossings.clear();
+            gap.traced = false;
             if (w.exited) { // leaves the region (non-convex border): re-project next time
                 E.valid = false;
                 gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[a]].p.face, st.samples[seg.idx[b]].p.face);
@@ -498,7 +502,8 @@ private:
     struct Workspace // reused by every segment move: no allocation in the steady state
     {
         std::vector<int> core, lf;
-        Eigen::MatrixXd X, B, F;
+        Eigen::MatrixXd X, B, F, Xn;
+        RegionWalk::Result walk;
     } work;
 
     static double msSince(clock::time_point t0)
