@@ -1,13 +1,25 @@
-// Geometric snake speed (paper Table 1, today): ms per embedding, per update and per
-// operation (embedding + 5 updates) for the embedding method and the naive 3D-update +
-// projection method, on bunny00 (the paper's bunny size) with 100- and 300-sample snakes;
-// time to convergence of both; and the same operation on bunny00 subdivided to ~1M faces,
-// to show that the cost of an operation does not grow with the mesh.
+// Geometric snake speed (issue 12): one operation and the time to convergence of the paper's
+// method (local embeddings, Sec. 4.2 and 5) and of the naive one (3D update + projection), on
+// bunny00 (the paper's bunny size) and on its midpoint subdivision to 1.2M faces, for closed
+// loops of about 100 and 300 samples and for open snakes from seeds.
 //
-// Figures are printed as counters. Run with --benchmark_repetitions=5 and read the medians.
+// BM_Operation/samples/method/mesh/closed   the first 200 operations from the initial curve
+//     (Time = mean ms per operation): ms_per_operation (the same mean), embeddings_per_op,
+//     ops_per_embedding (segment moves one embedding serves), faces, preprocess_s (adjacency,
+//     feature energy and snake surface of that mesh, once).
+// BM_Convergence/samples/method/mesh/closed  from the initial curve to convergence: operations,
+//     mean_sample_energy and dist_to_reference (mean distance of the samples to the curve the
+//     paper's method reaches with a 10x tighter tolerance, in local edge lengths) beside the time.
+// BM_Ratio/samples/closed   both methods to convergence in one iteration: speedup = time of
+//     3D update + projection / time of the embedding method, measured in the same run.
+//
+// method 0 = local embedding (the paper), 1 = 3D update + projection; mesh 0 = bunny00, 1 = 1.2M
+// faces; closed 1 = loop, 0 = open snake from 5 seeds. Run with --benchmark_repetitions=5 and read
+// the medians (scripts/eval.sh does).
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -27,7 +39,7 @@ struct Scene
     double prepSeconds = 0;
 };
 
-// bunny00 (level 0) or its midpoint subdivision to >= 1M faces (level 1); loaded once.
+// bunny00 (level 0) or its midpoint subdivision to >= 1.2M faces (level 1); loaded once.
 Scene &GetScene(int level)
 {
     static std::map<int, std::unique_ptr<Scene>> scenes;
@@ -39,7 +51,7 @@ Scene &GetScene(int level)
             std::fprintf(stderr, "cannot load %s\n", path.c_str());
             std::exit(1);
         }
-        if (level > 0) gs_test::Subdivide(s->mesh, 1000000);
+        if (level > 0) gs_test::Subdivide(s->mesh, 1200000);
         auto t0 = std::chrono::steady_clock::now();
         gs_test::EnableSnakeAdjacency(s->mesh);
         FeatureEnergy<CMeshO>::Compute(s->mesh, FeatureEnergyType::NormalVariation, 2);
@@ -51,50 +63,70 @@ Scene &GetScene(int level)
     return *s;
 }
 
-std::unique_ptr<Snake> MakeLoop(Scene &sc, int samples, SnakeMethod method)
-{
-    return gs_test::MakeSnakeLoop(sc.mesh, sc.surf, samples, method);
-}
-
-void Report(benchmark::State &state, Snake &s)
-{
-    const SnakeStats &st = s.Stats();
-    state.counters["samples"] = s.SampleCount();
-    state.counters["ms_per_embedding"] = SnakeStats::Median(st.msEmbedding);
-    state.counters["ms_per_update"] = SnakeStats::Median(st.msUpdate);
-    state.counters["ms_per_operation"] = SnakeStats::Median(st.msOperation);
-    state.counters["embeddings_per_op"] = st.operations ? double(st.embeddings) / st.operations : 0;
-}
-
-// One snake operation (Sec. 4.3), steady state.
+// One snake operation (Sec. 4.3): the first 200 operations from the initial curve.
 void BM_Operation(benchmark::State &state)
 {
     Scene &sc = GetScene(int(state.range(2)));
-    auto s = MakeLoop(sc, int(state.range(0)), SnakeMethod(state.range(1)));
+    auto s = gs_test::MakeSnakeCurve(sc.mesh, sc.surf, int(state.range(0)), SnakeMethod(state.range(1)), state.range(3) != 0);
     for (auto _ : state) benchmark::DoNotOptimize(s->Step());
-    Report(state, *s);
+    const SnakeStats &st = s->Stats();
+    double total = 0;
+    for (double ms : st.msOperation) total += ms;
+    state.counters["samples"] = s->SampleCount();
+    state.counters["ms_per_operation"] = st.operations ? total / st.operations : 0;
+    state.counters["embeddings_per_op"] = st.operations ? double(st.embeddings) / st.operations : 0;
+    state.counters["ops_per_embedding"] = st.embeddings ? double(st.embeddings + st.reuses) / st.embeddings : 0;
     state.counters["faces"] = sc.mesh.fn;
+    state.counters["preprocess_s"] = sc.prepSeconds;
 }
 
-// From the initial curve to convergence; also the final mean energy of the samples, so the
-// two methods are compared at equal accuracy.
+// From the initial curve to convergence, with the final accuracy beside the time.
 void BM_Convergence(benchmark::State &state)
 {
     Scene &sc = GetScene(int(state.range(2)));
-    gs_bench::MeasureConvergence(state, sc.mesh, sc.surf, int(state.range(0)), SnakeMethod(state.range(1)), 2000);
+    gs_bench::MeasureConvergence(state, sc.mesh, sc.surf, int(state.range(0)), SnakeMethod(state.range(1)), 3000,
+                                 state.range(3) != 0);
+}
+
+// Both methods to convergence back to back, so that their ratio comes from one time window.
+void BM_Ratio(benchmark::State &state)
+{
+    Scene &sc = GetScene(0);
+    const int samples = int(state.range(0));
+    const bool closed = state.range(1) != 0;
+    double tEmb = 0, tProj = 0;
+    for (auto _ : state) {
+        for (int method = 0; method < 2; ++method) {
+            auto s = gs_test::MakeSnakeCurve(sc.mesh, sc.surf, samples, SnakeMethod(method), closed);
+            auto t0 = std::chrono::steady_clock::now();
+            s->Run(3000);
+            const double t = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            (method == 0 ? tEmb : tProj) += t;
+        }
+    }
+    state.counters["ms_embedding"] = tEmb / state.iterations();
+    state.counters["ms_projection"] = tProj / state.iterations();
+    state.counters["speedup"] = tEmb > 0 ? tProj / tEmb : 0;
 }
 
 } // namespace
 
-// args: samples, method (0 embedding, 1 projection), mesh level (0 bunny00, 1 ~1M faces)
+// args: samples, method (0 embedding, 1 projection), mesh (0 bunny00, 1 1.2M faces), closed
 BENCHMARK(BM_Operation)
-    ->ArgNames({"samples", "method", "mesh"})
-    ->Args({100, 0, 0})->Args({300, 0, 0})->Args({100, 1, 0})->Args({300, 1, 0})
-    ->Args({100, 0, 1})->Args({300, 0, 1})
-    ->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(0.5);
+    ->ArgNames({"samples", "method", "mesh", "closed"})
+    ->Args({100, 0, 0, 1})->Args({300, 0, 0, 1})->Args({100, 0, 0, 0})
+    ->Args({100, 1, 0, 1})->Args({300, 1, 0, 1})
+    ->Args({100, 0, 1, 1})->Args({300, 0, 1, 1})->Args({100, 0, 1, 0})
+    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(200);
 BENCHMARK(BM_Convergence)
-    ->ArgNames({"samples", "method", "mesh"})
-    ->Args({100, 0, 0})->Args({100, 1, 0})->Args({300, 0, 0})->Args({300, 1, 0})
-    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+    ->ArgNames({"samples", "method", "mesh", "closed"})
+    ->Args({100, 0, 0, 1})->Args({100, 1, 0, 1})->Args({300, 0, 0, 1})->Args({300, 1, 0, 1})
+    ->Args({100, 0, 0, 0})->Args({100, 1, 0, 0})
+    ->Args({100, 0, 1, 1})->Args({300, 0, 1, 1})
+    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_Ratio)
+    ->ArgNames({"samples", "closed"})
+    ->Args({100, 1})->Args({300, 1})->Args({100, 0})
+    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -71,11 +71,13 @@ CurveError MeasureCurve(const std::vector<vcg::Point3d> &pts, double h, DistFn d
     return e;
 }
 
-/// A closed snake of `samples` samples about one edge length apart, as in the paper (samples
+/// A snake of about `samples` samples one local edge length apart, as in the paper (samples
 /// taken along the seed path's edges), for the benchmarks: seeds are the vertices nearest to 8
-/// points on a circle of circumference samples * h in the tangent plane at the model's top.
-inline std::unique_ptr<vcg::tri::GeometricSnake<CMeshO>> MakeSnakeLoop(
-    CMeshO &m, std::shared_ptr<vcg::tri::SnakeSurface<CMeshO>> surf, int samples, vcg::tri::SnakeMethod method)
+/// points on a circle of circumference samples * h in the tangent plane at the model's top
+/// (closed), or to 5 points on half of that circle (open, from seeds).
+inline std::unique_ptr<vcg::tri::GeometricSnake<CMeshO>> MakeSnakeCurve(
+    CMeshO &m, std::shared_ptr<vcg::tri::SnakeSurface<CMeshO>> surf, int samples, vcg::tri::SnakeMethod method,
+    bool closed)
 {
     const double h = surf->MeanEdge();
     vcg::tri::UpdateBounding<CMeshO>::Box(m);
@@ -86,19 +88,32 @@ inline std::unique_ptr<vcg::tri::GeometricSnake<CMeshO>> MakeSnakeLoop(
     vcg::Point3d t1 = (std::abs(n[0]) < 0.9 ? vcg::Point3d(1, 0, 0) : vcg::Point3d(0, 1, 0)) ^ n;
     t1.Normalize();
     vcg::Point3d t2 = n ^ t1;
-    double r = samples * h / (2 * M_PI);
+    double r = samples * h / (closed ? 2 * M_PI : M_PI);
     std::vector<vcg::Point3d> pts;
-    for (int i = 0; i < 8; ++i) {
-        double a = 2 * M_PI * i / 8;
+    for (int i = 0; i < (closed ? 8 : 5); ++i) {
+        double a = closed ? 2 * M_PI * i / 8 : M_PI * i / 4;
         pts.push_back(o + t1 * (r * std::cos(a)) + t2 * (r * std::sin(a)));
     }
-    auto path = vcg::tri::SeedPath<CMeshO>::Compute(m, NearestVertices(m, pts), true);
+    auto path = vcg::tri::SeedPath<CMeshO>::Compute(m, NearestVertices(m, pts), closed);
+    // the snake's unit is the median edge of its seed path: space the samples in it
+    std::vector<double> edges;
+    std::vector<int> pv = path.vertices;
+    if (closed) pv.push_back(pv.front());
+    for (size_t i = 1; i < pv.size(); ++i)
+        edges.push_back(vcg::Distance(vcg::Point3d::Construct(m.vert[pv[i - 1]].cP()), vcg::Point3d::Construct(m.vert[pv[i]].cP())));
+    std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
     vcg::tri::SnakeParams p;
     p.method = method;
-    p.spacing = path.length / samples / h;
+    p.spacing = path.length / (closed ? samples : samples - 1) / edges[edges.size() / 2];
     std::unique_ptr<vcg::tri::GeometricSnake<CMeshO>> s(new vcg::tri::GeometricSnake<CMeshO>(surf, p));
-    s->InitFromPath(path.vertices, true);
+    s->InitFromPath(path.vertices, closed);
     return s;
+}
+
+inline std::unique_ptr<vcg::tri::GeometricSnake<CMeshO>> MakeSnakeLoop(
+    CMeshO &m, std::shared_ptr<vcg::tri::SnakeSurface<CMeshO>> surf, int samples, vcg::tri::SnakeMethod method)
+{
+    return MakeSnakeCurve(m, surf, samples, method, true);
 }
 
 /// The exact feature as it exists on the mesh: points of the exact feature curve, each moved

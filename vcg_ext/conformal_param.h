@@ -27,16 +27,49 @@ namespace tri {
 /// The conformal energy of triangle T with local complex coordinates w_k is
 /// |sum_k (w_{k+2} - w_{k+1}) U_k|^2 / (2 A_T) (U_k = u_k + i v_k); its minimum with two pinned
 /// vertices solves a symmetric positive definite system, unknowns (u, v) interleaved and
-/// numbered by a sweep along the region's major axis (banded: natural-ordering LDL^T).
+/// numbered along the snake's arc length (or a sweep along the region's major axis), so that
+/// the system is banded and a natural-ordering LDL^T needs no fill-reducing analysis.
 class ConformalParam
 {
 public:
+    /// Scratch reused across embeddings (no allocation once warm), and the symbolic
+    /// factorization of the last system, reused when the next one has the same pattern.
+    struct Workspace
+    {
+        std::vector<int> order, slot, first, fill;
+        struct Block
+        {
+            int v;       // neighbour
+            double c, d; // the 2x2 block [c d; -d c] coupling (u, v) of both vertices
+        };
+        std::vector<Block> adj; // per vertex, at first[v] .. first[v] + fill[v]
+        std::vector<double> diag;
+        std::vector<double> keys;
+        Eigen::SparseMatrix<double> A;
+        Eigen::VectorXd rhs, sol;
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> solver;
+        std::vector<int> lastOuter, lastInner; // the pattern the solver was analysed for
+        int analyses = 0, factorizations = 0;
+    };
+
     /// pos/tri: the region's vertices and triangles (a disk); boundary: its outer loop.
     /// uv: one 2D point per vertex, scaled so that the embedded edges have, on average, their 3D
     /// length divided by `unit`. False (with error) when the system cannot be solved.
     static bool Embed(const std::vector<vcg::Point3d> &pos, const std::vector<std::array<int, 3>> &tri,
                       const std::vector<int> &boundary, double unit, std::vector<Eigen::Vector2d> &uv,
                       std::string &error)
+    {
+        Workspace w;
+        return Embed(pos, tri, boundary, unit, uv, error, w, nullptr);
+    }
+
+    /// The same with a reusable workspace. `arc` (optional, one value per vertex): the order of
+    /// the unknowns, e.g. the arc length of the nearest point of the snake; a strip's system is
+    /// then banded with the bandwidth of one cross-section, whatever the strip's shape (a sweep
+    /// along the major axis, the default, doubles it on a U-shaped segment).
+    static bool Embed(const std::vector<vcg::Point3d> &pos, const std::vector<std::array<int, 3>> &tri,
+                      const std::vector<int> &boundary, double unit, std::vector<Eigen::Vector2d> &uv,
+                      std::string &error, Workspace &w, const std::vector<double> *arc)
     {
         const int nv = int(pos.size());
         uv.assign(nv, Eigen::Vector2d::Zero());
@@ -52,27 +85,45 @@ public:
         }
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
         const Eigen::Vector3d axis = eig.eigenvectors().col(2);
-        auto key = [&](int v) { return (Eigen::Vector3d(pos[v][0], pos[v][1], pos[v][2]) - c).dot(axis); };
+        std::vector<double> &key = w.keys;
+        key.resize(nv);
+        for (int v = 0; v < nv; ++v) key[v] = (Eigen::Vector3d(pos[v][0], pos[v][1], pos[v][2]) - c).dot(axis);
         int pa = boundary[0], pb = boundary[0];
         for (int v : boundary) {
-            if (key(v) < key(pa)) pa = v;
-            if (key(v) > key(pb)) pb = v;
+            if (key[v] < key[pa]) pa = v;
+            if (key[v] > key[pb]) pb = v;
         }
         const double dab = (pos[pb] - pos[pa]).Norm();
         if (pa == pb || !(dab > 0)) { error = "degenerate region"; return false; }
+        if (arc && int(arc->size()) == nv) key = *arc;
 
-        std::vector<int> order(nv), slot(nv, -1);
+        std::vector<int> &order = w.order, &slot = w.slot;
+        order.resize(nv);
+        slot.assign(nv, -1);
         for (int i = 0; i < nv; ++i) order[i] = i;
-        std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
         int nf = 0;
         for (int v : order)
             if (v != pa && v != pb) slot[v] = nf++;
-        Eigen::Vector2d pin[2] = {Eigen::Vector2d(0, 0), Eigen::Vector2d(dab, 0)};
+        const Eigen::Vector2d pin[2] = {Eigen::Vector2d(0, 0), Eigen::Vector2d(dab, 0)};
         auto pinIndex = [&](int v) { return v == pa ? 0 : v == pb ? 1 : -1; };
 
-        std::vector<Eigen::Triplet<double>> trip;
-        trip.reserve(tri.size() * 36);
-        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * nf);
+        // Per-vertex 2x2 blocks, accumulated per edge: no triplets, no sort.
+        std::vector<int> &first = w.first, &fill = w.fill;
+        first.assign(nv + 1, 0);
+        for (const auto &t : tri)
+            for (int k = 0; k < 3; ++k) first[t[k] + 1] += 2;
+        for (int i = 0; i < nv; ++i) first[i + 1] += first[i];
+        fill.assign(nv, 0);
+        w.adj.resize(first[nv]);
+        w.diag.assign(nv, 0.0);
+        auto addBlock = [&](int a, int b, double cc, double dd) {
+            Workspace::Block *p = &w.adj[first[a]], *e = p + fill[a];
+            for (; p != e; ++p)
+                if (p->v == b) { p->c += cc; p->d += dd; return; }
+            *p = {b, cc, dd};
+            ++fill[a];
+        };
         double areaSum = 0;
         for (const auto &t : tri) areaSum += 0.5 * ((pos[t[1]] - pos[t[0]]) ^ (pos[t[2]] - pos[t[0]])).Norm();
         const double minArea = 1e-12 * std::max(areaSum, 1e-300);
@@ -84,42 +135,95 @@ public:
             if (!(a2 > 2 * minArea) || !std::isfinite(a2)) continue;
             double l1 = e1.Norm();
             vcg::Point3d x = e1 / l1, y = (n / a2) ^ x;
-            double w[3][2] = {{0, 0}, {l1, 0}, {e2 * x, e2 * y}};
+            double q[3][2] = {{0, 0}, {l1, 0}, {e2 * x, e2 * y}};
             const double s = 1.0 / std::sqrt(a2); // |.|^2 / (2A) = |.|^2 / a2
-            // residual (re, im) = sum_k W_k U_k, W_k = w_{k+2} - w_{k+1}
-            double coef[2][6]; // rows re/im, columns (u_k, v_k) for k = 0..2
+            // residual sum_k W_k U_k, W_k = (w_{k+2} - w_{k+1}) s = a_k + i b_k; its square's
+            // Hessian block for (k, l) is [c d; -d c], c + i d = W_k conj(W_l) conjugated in d
+            double ra[3], rb[3];
             for (int k = 0; k < 3; ++k) {
-                double a = s * (w[(k + 2) % 3][0] - w[(k + 1) % 3][0]), b = s * (w[(k + 2) % 3][1] - w[(k + 1) % 3][1]);
-                coef[0][2 * k] = a; coef[0][2 * k + 1] = -b;
-                coef[1][2 * k] = b; coef[1][2 * k + 1] = a;
+                ra[k] = s * (q[(k + 2) % 3][0] - q[(k + 1) % 3][0]);
+                rb[k] = s * (q[(k + 2) % 3][1] - q[(k + 1) % 3][1]);
             }
-            for (int r = 0; r < 2; ++r)
-                for (int i = 0; i < 6; ++i) {
-                    int vi = t[i / 2];
-                    if (slot[vi] < 0) continue;
-                    int row = 2 * slot[vi] + i % 2;
-                    for (int j = 0; j < 6; ++j) {
-                        int vj = t[j / 2];
-                        double val = coef[r][i] * coef[r][j];
-                        if (slot[vj] >= 0) {
-                            if (2 * slot[vj] + j % 2 <= row) trip.emplace_back(row, 2 * slot[vj] + j % 2, val);
-                        } else {
-                            rhs[row] -= val * pin[pinIndex(vj)][j % 2];
-                        }
-                    }
+            for (int k = 0; k < 3; ++k) {
+                w.diag[t[k]] += ra[k] * ra[k] + rb[k] * rb[k];
+                for (int l = 0; l < 3; ++l) {
+                    if (l == k) continue;
+                    addBlock(t[k], t[l], ra[k] * ra[l] + rb[k] * rb[l], rb[k] * ra[l] - ra[k] * rb[l]);
                 }
+            }
         }
-        // A vanishing regularization keeps vertices of degenerate triangles determined.
-        for (int i = 0; i < 2 * nf; ++i) trip.emplace_back(i, i, 1e-12);
-        Eigen::SparseMatrix<double> A(2 * nf, 2 * nf);
-        A.setFromTriplets(trip.begin(), trip.end());
-        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> solver(A);
-        if (solver.info() != Eigen::Success) { error = "conformal embedding: factorization failed"; return false; }
-        Eigen::VectorXd sol = solver.solve(rhs);
-        if (solver.info() != Eigen::Success || !sol.allFinite()) { error = "conformal embedding: solve failed"; return false; }
+        // The lower triangle of the interleaved (u, v) system, column by column, straight into
+        // compressed storage; pinned neighbours go to the right-hand side.
+        const int n2 = 2 * nf;
+        Eigen::SparseMatrix<double> &A = w.A;
+        w.rhs.setZero(n2);
+        int nnz = 0;
+        for (int v = 0; v < nv; ++v)
+            if (slot[v] >= 0) {
+                nnz += 2 + 1; // diagonal pair and the (v_s, u_s) zero kept for a fixed pattern
+                for (int q = first[v]; q < first[v] + fill[v]; ++q)
+                    if (slot[w.adj[q].v] > slot[v]) nnz += 4;
+            }
+        A.resize(n2, n2);
+        A.resizeNonZeros(nnz);
+        int *outer = A.outerIndexPtr(), *inner = A.innerIndexPtr();
+        double *val = A.valuePtr();
+        int z = 0;
+        // columns in slot order: walk `order`, skipping the pins
+        for (int v : order) {
+            const int sv = slot[v];
+            if (sv < 0) continue;
+            // neighbours after v, sorted by slot
+            const int b = first[v], e = first[v] + fill[v];
+            std::sort(w.adj.begin() + b, w.adj.begin() + e,
+                      [&](const Workspace::Block &x, const Workspace::Block &y) { return slot[x.v] < slot[y.v]; });
+            // column u_v: rows u_v, v_v, then u_t, v_t of later neighbours
+            outer[2 * sv] = z;
+            inner[z] = 2 * sv; val[z++] = w.diag[v] + 1e-12; // a vanishing regularization keeps
+            inner[z] = 2 * sv + 1; val[z++] = 0;             // degenerate triangles' vertices determined
+            for (int q = b; q < e; ++q) {
+                const int t = w.adj[q].v;
+                const int p = pinIndex(t);
+                const double cc = w.adj[q].c, dd = w.adj[q].d; // block (v, t): [cc dd; -dd cc]
+                if (p >= 0) {
+                    w.rhs[2 * sv] -= cc * pin[p][0] + dd * pin[p][1];
+                    w.rhs[2 * sv + 1] -= -dd * pin[p][0] + cc * pin[p][1];
+                    continue;
+                }
+                if (slot[t] < sv) continue;
+                inner[z] = 2 * slot[t]; val[z++] = cc;      // (u_t, u_v)
+                inner[z] = 2 * slot[t] + 1; val[z++] = dd;  // (v_t, u_v) = -(block (t, v))_uv
+            }
+            // column v_v
+            outer[2 * sv + 1] = z;
+            inner[z] = 2 * sv + 1; val[z++] = w.diag[v] + 1e-12;
+            for (int q = b; q < e; ++q) {
+                const int t = w.adj[q].v;
+                if (pinIndex(t) >= 0 || slot[t] < sv) continue;
+                const double cc = w.adj[q].c, dd = w.adj[q].d;
+                inner[z] = 2 * slot[t]; val[z++] = -dd;     // (u_t, v_v)
+                inner[z] = 2 * slot[t] + 1; val[z++] = cc;  // (v_t, v_v)
+            }
+        }
+        outer[n2] = z;
+        A.resizeNonZeros(z);
+        // Symbolic analysis only when the pattern changed (the same region embedded again).
+        const bool same = int(w.lastOuter.size()) == n2 + 1 && std::equal(outer, outer + n2 + 1, w.lastOuter.begin()) &&
+                          int(w.lastInner.size()) == z && std::equal(inner, inner + z, w.lastInner.begin());
+        if (!same) {
+            w.solver.analyzePattern(A);
+            w.lastOuter.assign(outer, outer + n2 + 1);
+            w.lastInner.assign(inner, inner + z);
+            ++w.analyses;
+        }
+        w.solver.factorize(A);
+        ++w.factorizations;
+        if (w.solver.info() != Eigen::Success) { w.lastOuter.clear(); error = "conformal embedding: factorization failed"; return false; }
+        w.sol = w.solver.solve(w.rhs);
+        if (w.solver.info() != Eigen::Success || !w.sol.allFinite()) { error = "conformal embedding: solve failed"; return false; }
         for (int v = 0; v < nv; ++v) {
             int p = pinIndex(v);
-            uv[v] = p >= 0 ? pin[p] : Eigen::Vector2d(sol[2 * slot[v]], sol[2 * slot[v] + 1]);
+            uv[v] = p >= 0 ? pin[p] : Eigen::Vector2d(w.sol[2 * slot[v]], w.sol[2 * slot[v] + 1]);
         }
         // Scale to mesh units.
         double l3 = 0, l2 = 0;

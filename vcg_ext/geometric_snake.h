@@ -699,6 +699,7 @@ private:
 
     void resetRun()
     {
+        motion.ForgetEmbeddings(); // samples were placed anew: regions are built around them
         for (auto &smp : st.samples) smp.trust = 1.0;
         stage = -1;
         settledOutside = false;

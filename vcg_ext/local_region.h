@@ -43,6 +43,7 @@ public:
     std::vector<int> verts;                   // mesh vertex of each local vertex (-1: fan centre)
     std::vector<vcg::Point3d> pos;            // 3D position of each local vertex
     std::vector<int> boundary;                // outer loop (local ids), region on its left
+    std::vector<double> arc;                  // per local vertex: order along the core (grown regions), else empty
     std::string error;
     int holesFilled = 0, meshHolesClosed = 0;
     /// How far the last region was trimmed: 0 the paper's region (vertex stars), 1 crossed
@@ -61,12 +62,15 @@ public:
 
     /// Builds the region around `core` faces, trimmed if the full one is not a disk. False
     /// (with `error`, the reason the full region failed) when no trimming gives a disk.
-    bool Build(SnakeSurface<MeshType> &s, const std::vector<int> &core, int maxFaces = 60000)
+    /// `margin` > 0 (a distance): the region first reaches that far from the core on every side
+    /// (metric width, not rings: on long thin triangles one ring can be narrower than one long
+    /// edge); when that region is not a disk, the paper's one-ring region is tried.
+    bool Build(SnakeSurface<MeshType> &s, const std::vector<int> &core, int maxFaces = 60000, double margin = 0)
     {
         std::string first;
-        for (int level = 0; level <= 2; ++level) {
-            if (buildAt(s, core, maxFaces, level)) {
-                trimLevel = level;
+        for (int level = margin > 0 ? -1 : 0; level <= 2; ++level) {
+            if (buildAt(s, core, maxFaces, level, margin)) {
+                trimLevel = std::max(0, level);
                 return true;
             }
             if (level == 0) first = error;
@@ -75,15 +79,62 @@ public:
         return false;
     }
 
+    /// The margin the last region reached around its core (0: one ring only).
+    double margin = 0;
+
 private:
-    bool buildAt(SnakeSurface<MeshType> &s, const std::vector<int> &core, int maxFaces, int level)
+    /// Every vertex within `radius` of the core's vertices (Dijkstra along mesh edges from all
+    /// of them at once) with its face star: a band of metric width around the segment.
+    void grow(SnakeSurface<MeshType> &s, const std::vector<int> &core, double radius, int maxFaces)
+    {
+        MeshType &m = s.Mesh();
+        typedef std::pair<double, int> Item;
+        std::vector<Item> &heap = s.heapScratch;
+        heap.clear();
+        auto reach = [&](int v, double d, int src) {
+            if (s.vertMark[v] == gen && s.vertDist[v] <= d) return;
+            s.vertMark[v] = gen;
+            s.vertDist[v] = d;
+            s.vertSrc[v] = src;
+            heap.push_back(Item(-d, v));
+            std::push_heap(heap.begin(), heap.end());
+        };
+        for (size_t i = 0; i < core.size(); ++i)
+            if (s.FaceUsable(core[i]))
+                for (int k = 0; k < 3; ++k) reach(s.Idx(m.face[core[i]].V(k)), 0.0, int(i));
+        while (!heap.empty() && int(faces.size()) <= maxFaces) {
+            std::pop_heap(heap.begin(), heap.end());
+            const Item it = heap.back();
+            heap.pop_back();
+            const int v = it.second;
+            const double d = -it.first;
+            if (d > s.vertDist[v]) continue; // stale entry
+            VertexType *vp = &m.vert[v];
+            for (vcg::face::VFIterator<FaceType> vfi(vp); !vfi.End(); ++vfi) {
+                FaceType *f = vfi.F();
+                add(s, s.Idx(f));
+                for (int k = 1; k <= 2; ++k) {
+                    VertexType *w = f->V((vfi.I() + k) % 3);
+                    const double dw = d + vcg::Distance(vcg::Point3d::Construct(vp->cP()), vcg::Point3d::Construct(w->cP()));
+                    if (dw < radius) reach(s.Idx(w), dw, s.vertSrc[v]);
+                }
+            }
+        }
+    }
+
+    bool buildAt(SnakeSurface<MeshType> &s, const std::vector<int> &core, int maxFaces, int level, double radius)
     {
         MeshType &m = s.Mesh();
         clear();
         gen = s.NewGeneration();
+        margin = 0;
+        if (level < 0) {
+            grow(s, core, radius, maxFaces);
+            margin = radius;
+        }
         for (int f : core) {
             if (!s.FaceUsable(f)) continue;
-            if (level == 0) {
+            if (level <= 0) {
                 for (int k = 0; k < 3; ++k) {
                     VertexType *v = m.face[f].V(k);
                     int vi = s.Idx(v);
@@ -182,7 +233,22 @@ private:
         // A disk: V - E + F = 1 with E = (3F + B) / 2.
         long F = long(tri.size()), B = long(boundary.size()), V = long(verts.size());
         if (V - (3 * F + B) / 2 + F != 1) return fail("the region is not a disk");
+        if (level < 0) arcKeys(s);
         return true;
+    }
+
+    /// arc[v]: the position along the core (its faces are in curve order) of the core vertex
+    /// nearest to local vertex v; vertices the growth did not reach take a neighbour's.
+    void arcKeys(const SnakeSurface<MeshType> &s)
+    {
+        arc.assign(verts.size(), -1.0);
+        for (size_t v = 0; v < verts.size(); ++v)
+            if (verts[v] >= 0 && s.vertMark[verts[v]] == gen) arc[v] = s.vertSrc[verts[v]];
+        for (int pass = 0; pass < 3; ++pass)
+            for (const auto &t : tri)
+                for (int k = 0; k < 3; ++k)
+                    if (arc[t[k]] < 0) arc[t[k]] = std::max(arc[t[(k + 1) % 3]], arc[t[(k + 2) % 3]]);
+        for (double &a : arc) a = std::max(a, 0.0);
     }
 
     int gen = 0;
@@ -190,7 +256,7 @@ private:
 
     void clear()
     {
-        faces.clear(); tri.clear(); adj.clear(); verts.clear(); pos.clear(); boundary.clear();
+        faces.clear(); tri.clear(); adj.clear(); verts.clear(); pos.clear(); boundary.clear(); arc.clear();
         error.clear(); holesFilled = meshHolesClosed = 0;
     }
     bool fail(const std::string &why) { error = why; return false; }

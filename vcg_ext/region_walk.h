@@ -45,6 +45,18 @@ public:
                        const Eigen::Vector2d &q, bool recordCrossings)
     {
         Result r;
+        Walk(uv, tri, adj, start, p, q, recordCrossings, r);
+        return r;
+    }
+
+    /// The same into `r`, whose crossing list keeps its memory from one walk to the next.
+    static void Walk(const std::vector<Eigen::Vector2d> &uv, const std::vector<std::array<int, 3>> &tri,
+                     const std::vector<std::array<int, 3>> &adj, int start, const Eigen::Vector2d &p,
+                     const Eigen::Vector2d &q, bool recordCrossings, Result &r)
+    {
+        r.face = -1;
+        r.exited = false;
+        r.crossings.clear();
         int t = start, prev = -1;
         Eigen::Vector2d cur = p;
         const int maxSteps = int(adj.size()) + 16;
@@ -55,7 +67,7 @@ public:
             if (lq.minCoeff() >= -eps) {
                 r.face = t;
                 r.bary = clampBary(lq);
-                return r;
+                return;
             }
             Eigen::Vector3d lc = Bary(uv[T[0]], uv[T[1]], uv[T[2]], cur);
             // first barycentric coordinate to reach 0 along cur->q: the exit edge
@@ -72,7 +84,7 @@ public:
             if (best < 0) { // numerically inside
                 r.face = t;
                 r.bary = clampBary(lq);
-                return r;
+                return;
             }
             bestT = std::min(1.0, std::max(0.0, bestT));
             Eigen::Vector2d x = cur + bestT * (q - cur);
@@ -85,7 +97,7 @@ public:
                 r.face = t;
                 r.bary = lx;
                 r.exited = true;
-                return r;
+                return;
             }
             if (recordCrossings) r.crossings.push_back({t, lx});
             prev = t;
@@ -96,7 +108,6 @@ public:
         r.face = t;
         r.bary = clampBary(Bary(uv[tri[t][0]], uv[tri[t][1]], uv[tri[t][2]], cur));
         r.exited = true;
-        return r;
     }
 
     static Eigen::Vector3d clampBary(Eigen::Vector3d b)

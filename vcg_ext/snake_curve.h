@@ -73,6 +73,7 @@ struct SnakeSample
 struct SnakeStats
 {
     int operations = 0, updates = 0, embeddings = 0, regionFailures = 0;
+    int reuses = 0; ///< segment moves served by an embedding kept from an earlier operation (Sec. 4.2)
     bool converged = false;
     bool stopped = false; ///< stopped without converging (a closed snake collapsing): see warnings
     double secondsTotal = 0;

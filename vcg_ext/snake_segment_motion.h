@@ -46,7 +46,13 @@ public:
     int conformalFallbacks = 0; ///< embeddings that fell back to the virtual boundary
 
     /// Forget the factored spline systems (parameters or samples changed).
-    void ClearCache() { splines.clear(); }
+    void ClearCache()
+    {
+        splines.clear();
+        ForgetEmbeddings();
+    }
+    /// Forget the kept embeddings (samples were edited, inserted or deleted).
+    void ForgetEmbeddings() { embeddings.clear(); }
 
     /// Moves one segment (Sec. 5.2 - 5.4): local region, embedding, up to `updates` updates of
     /// Eq. 4 in the plane, back by barycentric coordinates, then retraces its gaps (Sec. 4.1).
@@ -58,87 +64,79 @@ public:
         const double unit = fr.unit;
         const int k = int(seg.idx.size());
         if (k < 2) return;
-        const MeshType &m = surf->Mesh();
         auto t0 = clock::now();
-        // Sec. 5.2: the faces the segment crosses ...
-        std::vector<int> core;
-        for (int j = 0; j < k; ++j) core.push_back(st.samples[seg.idx[j]].p.face);
         bool wholeClosed = st.closed && k == int(st.samples.size()) && seg.idx.front() == 0 && !seg.fixFirst;
         int gapsInSeg = wholeClosed ? k : k - 1;
-        for (int j = 0; j < gapsInSeg; ++j) {
-            int g = st.GapIndex(seg.idx[j], seg.idx[(j + 1) % k]);
-            if (g < 0) continue;
-            SnakeGap &gap = st.gaps[g];
-            if (gap.faces.empty())
-                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[j]].p.face, st.samples[seg.idx[(j + 1) % k]].p.face);
-            core.insert(core.end(), gap.faces.begin(), gap.faces.end());
-        }
-        // ... plus their vertex neighbours, holes filled (LocalRegion), then Sec. 5.3.
-        VirtualBoundaryParam::Result emb;
-        bool ok = region.Build(*surf, core);
-        if (ok) ok = embed(st.params, unit, emb);
-        if (!ok) {
-            if (k >= 8 && depth < 6) { // split the segment (Sec. 5.1) and try the halves
-                SnakeSegment a, b;
-                int mid = k / 2;
-                a.idx.assign(seg.idx.begin(), seg.idx.begin() + mid + 1);
-                b.idx.assign(seg.idx.begin() + mid, seg.idx.end());
-                a.fixFirst = seg.fixFirst; a.fixLast = true;
-                b.fixFirst = true; b.fixLast = seg.fixLast;
-                Move(st, stats, a, updates, fr, depth + 1);
-                Move(st, stats, b, updates, fr, depth + 1);
-                return;
+        // Sec. 4.2: one embedding serves several updates, here several operations: the
+        // segment's last embedding is kept while its samples stay well inside it.
+        Embedding &E = embeddings[std::make_pair(seg.idx.front(), k)];
+        std::vector<int> &lf = work.lf;
+        Eigen::MatrixXd &X = work.X;
+        lf.resize(k);
+        X.resize(k, 2);
+        if (E.valid && locate(st, seg, E, lf, X)) {
+            stats.reuses++;
+        } else {
+            E.valid = false;
+            // Sec. 5.2: the faces the segment crosses ...
+            std::vector<int> &core = work.core;
+            core.clear();
+            for (int j = 0; j < k; ++j) { // in curve order: the region numbers its vertices by it
+                core.push_back(st.samples[seg.idx[j]].p.face);
+                if (j >= gapsInSeg) continue;
+                int g = st.GapIndex(seg.idx[j], seg.idx[(j + 1) % k]);
+                if (g < 0) continue;
+                SnakeGap &gap = st.gaps[g];
+                if (gap.faces.empty())
+                    gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[j]].p.face, st.samples[seg.idx[(j + 1) % k]].p.face);
+                core.insert(core.end(), gap.faces.begin(), gap.faces.end());
             }
-            stats.regionFailures++;
-            std::string why = region.error.empty() ? emb.error : region.error;
-            if (stats.warnings.size() < 20) stats.warnings.push_back("a segment could not move: " + why);
-            return;
-        }
-        stats.embeddings++;
-        stats.msEmbedding.push_back(msSince(t0));
-
-        // Sec. 5.4: samples into the plane by barycentric coordinates.
-        std::vector<int> lf(k);
-        Eigen::MatrixXd X(k, 2);
-        for (int j = 0; j < k; ++j) {
-            const SurfacePoint &p = st.samples[seg.idx[j]].p;
-            lf[j] = region.LocalFace(*surf, p.face);
-            if (lf[j] < 0) { // cannot happen: sample faces are in the core
+            // ... plus a band around them (LocalRegion), then Sec. 5.3.
+            if (!build(st, seg, core, unit, E, lf, X)) {
+                if (k >= 8 && depth < 6) { // split the segment (Sec. 5.1) and try the halves
+                    SnakeSegment a, b;
+                    int mid = k / 2;
+                    a.idx.assign(seg.idx.begin(), seg.idx.begin() + mid + 1);
+                    b.idx.assign(seg.idx.begin() + mid, seg.idx.end());
+                    a.fixFirst = seg.fixFirst; a.fixLast = true;
+                    b.fixFirst = true; b.fixLast = seg.fixLast;
+                    Move(st, stats, a, updates, fr, depth + 1);
+                    Move(st, stats, b, updates, fr, depth + 1);
+                    return;
+                }
                 stats.regionFailures++;
+                std::string why = E.region.error.empty() ? E.emb.error : E.region.error;
+                if (stats.warnings.size() < 20) stats.warnings.push_back("a segment could not move: " + why);
                 return;
             }
-            X.row(j) = toPlane(emb, lf[j], p.bary).transpose();
+            stats.embeddings++;
+            stats.msEmbedding.push_back(msSince(t0));
         }
+        const LocalRegion<MeshType> &region = E.region;
+        const VirtualBoundaryParam::Result &emb = E.emb;
+
         // Sec. 6.2: the energy gradient at a sample, mapped into the plane. The field gives it
         // in space; its derivatives along two face edges are invariant, so in the plane it is
-        // J^-T (g . e1, g . e2) with J the embedded edges. J^-T is computed once per face.
-        std::vector<Eigen::Matrix2d> jinvT(region.RealFaces());
-        std::vector<char> jDone(region.RealFaces(), 0);
+        // J^-T (g . e1, g . e2) with J the embedded edges. J^-T is kept per face with the embedding.
         auto gradient = [&](int t, const Eigen::RowVector3d &bary) -> Eigen::Vector2d {
             const auto &T = region.tri[t];
-            if (!jDone[t]) {
-                jDone[t] = 1;
-                Eigen::Matrix2d J;
-                J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
-                J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
-                jinvT[t] = std::abs(J.determinant()) > 1e-12 ? Eigen::Matrix2d(J.transpose().inverse())
-                                                              : Eigen::Matrix2d::Zero();
-            }
             vcg::Point3d g = surf->EnergyGradient(level, SurfacePoint(region.faces[t], toPoint(bary)));
             Eigen::Vector2d d(g * (region.pos[T[1]] - region.pos[T[0]]), g * (region.pos[T[2]] - region.pos[T[0]]));
-            return jinvT[t] * d;
+            return E.JinvT(t) * d;
         };
         std::vector<bool> fixed(k);
         for (int j = 0; j < k; ++j)
             fixed[j] = st.samples[seg.idx[j]].fixed || (j == 0 && seg.fixFirst) || (j == k - 1 && seg.fixLast);
-        Eigen::MatrixXd B(k, 3); // barycentric coordinates of each sample in its local face
+        Eigen::MatrixXd &B = work.B; // barycentric coordinates of each sample in its local face
+        B.resize(k, 3);
         for (int j = 0; j < k; ++j) {
             const auto &b = st.samples[seg.idx[j]].p.bary;
             B.row(j) << b[0], b[1], b[2];
         }
         if (updates > 0) {
             SnakeSpline &spline = splineFor(st.params, k, wholeClosed, fixed);
-            Eigen::MatrixXd F(k, 2);
+            Eigen::MatrixXd &F = work.F;
+            F.resize(k, 2);
             std::vector<double> slope(k, 0.0);
             for (int u = 0; u < updates; ++u) {
                 auto tu = clock::now();
@@ -160,7 +158,8 @@ public:
                     }
                     F.row(j) = f.transpose();
                 }
-                Eigen::MatrixXd Xn = spline.Update(X, F);
+                Eigen::MatrixXd &Xn = work.Xn;
+                spline.Update(X, F, Xn);
                 bool left = false;
                 for (int j = 0; j < k; ++j) {
                     if (fixed[j]) continue;
@@ -171,22 +170,26 @@ public:
                         if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
                     }
                     double len = d.norm();
-                    double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(emb, lf[j], d / len) : 0;
+                    double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(E, lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
                     if (len == 0) continue;
-                    RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
-                                                            X.row(j).transpose() + d, false);
+                    RegionWalk::Result &w = work.walk;
+                    RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(), X.row(j).transpose() + d,
+                                     false, w);
                     double eOld = surf->EnergyAt(level, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j))));
                     double eNew = surf->EnergyAt(level, SurfacePoint(region.faces[w.face], toPoint(w.bary)));
                     UpdateTrust(st.samples[seg.idx[j]].trust, level, eOld, eNew, slope[j] * std::min(len, cap));
                     lf[j] = w.face;
                     B.row(j) = w.bary.transpose();
-                    X.row(j) = toPlane(emb, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
+                    X.row(j) = toPlane(E, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
                     left |= w.exited;
                 }
                 stats.updates++;
                 stats.msUpdate.push_back(msSince(tu));
-                if (left) break; // the curve reached the region border: re-embed (Sec. 5.4)
+                if (left) { // the curve reached the region border: re-embed (Sec. 5.4)
+                    E.valid = false;
+                    break;
+                }
             }
         }
         // Map back by barycentric coordinates.
@@ -202,11 +205,14 @@ public:
             int a = j, b = (j + 1) % k;
             int g = st.GapIndex(seg.idx[a], seg.idx[b]);
             if (g < 0) continue;
-            RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(),
-                                                    X.row(b).transpose(), true);
-            SnakeGap &gap = st.gaps[g];
-            gap = SnakeGap();
+            RegionWalk::Result &w = work.walk;
+            RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(), X.row(b).transpose(), true, w);
+            SnakeGap &gap = st.gaps[g]; // cleared, not replaced: its lists keep their memory
+            gap.faces.clear();
+            gap.crossings.clear();
+            gap.traced = false;
             if (w.exited) { // leaves the region (non-convex border): re-project next time
+                E.valid = false;
                 gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[a]].p.face, st.samples[seg.idx[b]].p.face);
                 continue;
             }
@@ -306,33 +312,179 @@ private:
     template <class V>
     static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
 
-    static Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, const std::array<int, 3> &T,
-                                   const vcg::Point3d &b)
+    /// A local region with its planar embedding (Sec. 5.2-5.3), kept across operations while
+    /// the samples of its segment stay well inside it: their drift from where they were when
+    /// it was made stays below `reach` (half the region's margin, in plane units).
+    struct Embedding
     {
-        return b[0] * emb.uv[T[0]] + b[1] * emb.uv[T[1]] + b[2] * emb.uv[T[2]];
+        LocalRegion<MeshType> region;
+        VirtualBoundaryParam::Result emb;
+        std::vector<std::pair<int, int>> lookup; // (mesh face, local face), sorted
+        std::vector<Eigen::Vector2d> anchor;     // the segment's samples in the plane when embedded
+        std::vector<Eigen::Matrix2d> jinvT;      // per real face, computed on first use
+        std::vector<char> jDone;
+        double reach = 0;
+        double distortion = 1; // worst on the faces carrying samples when embedded
+        bool valid = false;
+
+        int LocalFace(int meshFace) const
+        {
+            auto it = std::lower_bound(lookup.begin(), lookup.end(), std::make_pair(meshFace, -1));
+            return (it != lookup.end() && it->first == meshFace) ? it->second : -1;
+        }
+        const Eigen::Matrix2d &JinvT(int t)
+        {
+            if (!jDone[t]) {
+                jDone[t] = 1;
+                const auto &T = region.tri[t];
+                Eigen::Matrix2d J;
+                J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
+                J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
+                jinvT[t] = std::abs(J.determinant()) > 1e-12 ? Eigen::Matrix2d(J.transpose().inverse())
+                                                              : Eigen::Matrix2d::Zero();
+            }
+            return jinvT[t];
+        }
+        /// Conformal and area distortion of local face t: the larger singular value of the
+        /// 3D -> plane map over the smaller one, times how far its scale is from 1/unit.
+        double Distortion(int t, double unit) const
+        {
+            const auto &T = region.tri[t];
+            const vcg::Point3d e1 = region.pos[T[1]] - region.pos[T[0]], e2 = region.pos[T[2]] - region.pos[T[0]];
+            const vcg::Point3d n = e1 ^ e2;
+            const double l1 = e1.Norm(), a2 = n.Norm();
+            if (!(l1 > 0) || !(a2 > 0)) return 1;
+            const vcg::Point3d x = e1 / l1, y = (n / a2) ^ x;
+            Eigen::Matrix2d P, J;
+            P << l1, e2 * x, 0, e2 * y;
+            J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
+            J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
+            const Eigen::Vector2d sv = Eigen::JacobiSVD<Eigen::Matrix2d>(J * P.inverse()).singularValues() * unit;
+            if (!(sv[1] > 0) || !std::isfinite(sv[0])) return 1e9;
+            const double scale = std::sqrt(sv[0] * sv[1]);
+            return sv[0] / sv[1] * std::max(scale, 1 / scale);
+        }
+    };
+
+    /// The segment's samples in the plane of a kept embedding; false when one of them is no
+    /// longer in it or has drifted too far from where it was when the embedding was made.
+    bool locate(const SnakeCurve &st, const SnakeSegment &seg, const Embedding &E, std::vector<int> &lf,
+                Eigen::MatrixXd &X) const
+    {
+        const int k = int(seg.idx.size());
+        if (int(E.anchor.size()) != k) return false;
+        for (int j = 0; j < k; ++j) {
+            const SurfacePoint &p = st.samples[seg.idx[j]].p;
+            lf[j] = E.LocalFace(p.face);
+            if (lf[j] < 0) return false;
+            X.row(j) = toPlane(E, lf[j], p.bary).transpose();
+            if ((X.row(j).transpose() - E.anchor[j]).norm() > E.reach) return false;
+        }
+        return true;
     }
-    Eigen::Vector2d toPlane(const VirtualBoundaryParam::Result &emb, int t, const vcg::Point3d &b) const
+
+    /// A new region around `core` and its embedding; its margin (a distance on each side) is at
+    /// least twice the sample spacing and 1.5 times the longest edge the segment crosses. When the
+    /// faces carrying samples are embedded with a distortion above kMaxDistortion, the region grows once.
+    bool build(const SnakeCurve &st, const SnakeSegment &seg, const std::vector<int> &core, double unit, Embedding &E,
+               std::vector<int> &lf, Eigen::MatrixXd &X)
     {
-        return toPlane(emb, region.tri[t], b);
+        const int k = int(seg.idx.size());
+        double margin = std::max(2 * st.params.spacing * unit, 1.5 * longestCrossed(st, seg));
+        double best = 1e300, bestMargin = margin;
+        for (int attempt = 0; attempt < 3; ++attempt) {
+            if (!E.region.Build(*surf, core, 60000, margin)) return false;
+            if (!embed(st.params, unit, E.region, E.emb)) return false;
+            E.lookup.clear();
+            for (int t = 0; t < E.region.RealFaces(); ++t) E.lookup.emplace_back(E.region.faces[t], t);
+            std::sort(E.lookup.begin(), E.lookup.end());
+            E.jinvT.resize(E.region.RealFaces());
+            E.jDone.assign(E.region.RealFaces(), 0);
+            E.distortion = 1;
+            for (int j = 0; j < k; ++j) {
+                const SurfacePoint &p = st.samples[seg.idx[j]].p;
+                lf[j] = E.region.LocalFace(*surf, p.face);
+                if (lf[j] < 0) return false; // cannot happen: sample faces are in the core
+                X.row(j) = toPlane(E, lf[j], p.bary).transpose();
+                E.distortion = std::max(E.distortion, E.Distortion(lf[j], unit));
+            }
+            // Too distorted where the samples are: grow the region once (a wider band moves the
+            // free border, or the virtual boundary, away from them); keep the better of the two.
+            if (E.distortion <= kMaxDistortion || E.region.margin <= 0 || attempt == 2) break;
+            if (attempt == 1) {
+                if (E.distortion <= best) break;
+                margin = bestMargin; // growing made it worse: back to the first region
+                continue;
+            }
+            best = E.distortion;
+            margin *= 2;
+        }
+        E.anchor.resize(k);
+        for (int j = 0; j < k; ++j) E.anchor[j] = X.row(j).transpose();
+        E.reach = 0.5 * E.region.margin / unit;
+        E.valid = true;
+        return true;
+    }
+
+    /// The longest mesh edge the segment's polyline crosses (shared by consecutive faces of a
+    /// traced gap), or the longest edge of the sample faces when no gap is traced.
+    double longestCrossed(const SnakeCurve &st, const SnakeSegment &seg) const
+    {
+        const MeshType &m = surf->Mesh();
+        const int k = int(seg.idx.size());
+        double longest = 0;
+        auto edge = [&](const FaceType &f, int e) { // in double: a float square overflows at 1e30
+            return vcg::Distance(vcg::Point3d::Construct(f.cP(e)), vcg::Point3d::Construct(f.cP((e + 1) % 3)));
+        };
+        auto sharedEdge = [&](int a, int b) {
+            for (int e = 0; e < 3; ++e)
+                if (m.face[a].cFFp(e) == &m.face[b]) longest = std::max(longest, edge(m.face[a], e));
+        };
+        for (int j = 0; j + 1 < k; ++j) {
+            const int g = st.GapIndex(seg.idx[j], seg.idx[j + 1]);
+            if (g < 0) continue;
+            const std::vector<int> &f = st.gaps[g].faces;
+            for (size_t i = 0; i + 1 < f.size(); ++i)
+                if (f[i] != f[i + 1]) sharedEdge(f[i], f[i + 1]);
+        }
+        if (longest > 0) return longest;
+        for (int j = 0; j < k; ++j) {
+            const auto &f = m.face[st.samples[seg.idx[j]].p.face];
+            for (int e = 0; e < 3; ++e) longest = std::max(longest, edge(f, e));
+        }
+        return longest;
+    }
+
+    static Eigen::Vector2d toPlane(const Embedding &E, int t, const vcg::Point3d &b)
+    {
+        const auto &T = E.region.tri[t];
+        return b[0] * E.emb.uv[T[0]] + b[1] * E.emb.uv[T[1]] + b[2] * E.emb.uv[T[2]];
+    }
+    template <class V>
+    static Eigen::Vector2d toPlane(const Embedding &E, int t, const V &b)
+    {
+        return toPlane(E, t, toPoint(b));
     }
     /// The width of embedded triangle t in direction d (unit vector): a step cap from the
     /// local triangle size where the sample goes, so that on long thin triangles a move across
     /// them is capped by their short side, not by their mean edge.
-    double widthAlong(const VirtualBoundaryParam::Result &emb, int t, const Eigen::Vector2d &d) const
+    static double widthAlong(const Embedding &E, int t, const Eigen::Vector2d &d)
     {
-        const auto &T = region.tri[t];
-        double a = emb.uv[T[0]].dot(d), b = emb.uv[T[1]].dot(d), c = emb.uv[T[2]].dot(d);
+        const auto &T = E.region.tri[t];
+        double a = E.emb.uv[T[0]].dot(d), b = E.emb.uv[T[1]].dot(d), c = E.emb.uv[T[2]].dot(d);
         return std::max({a, b, c}) - std::min({a, b, c});
     }
 
     /// The local embedding (Sec. 5.3): least-squares conformal first, which embeds developable
     /// regions exactly; if it flips a triangle, the paper's convex combination with a virtual
     /// boundary, which is injective whatever the geometry.
-    bool embed(const SnakeParams &params, double unit, VirtualBoundaryParam::Result &emb)
+    bool embed(const SnakeParams &params, double unit, const LocalRegion<MeshType> &region,
+               VirtualBoundaryParam::Result &emb)
     {
         emb = VirtualBoundaryParam::Result();
         std::string err;
-        if (ConformalParam::Embed(region.pos, region.tri, region.boundary, unit, emb.uv, err) &&
+        if (ConformalParam::Embed(region.pos, region.tri, region.boundary, unit, emb.uv, err, conformal,
+                                  region.arc.empty() ? nullptr : &region.arc) &&
             VirtualBoundaryParam::CountFlipped(emb.uv, region.tri) == 0)
             return true;
         ++conformalFallbacks;
@@ -358,9 +510,20 @@ private:
     }
 
     typedef std::chrono::steady_clock clock;
+    /// Distortion (angle times scale, Embedding::Distortion) of a sample's face above which a
+    /// region grows: on a curved strip the conformal map alone reaches 2, and growing cannot
+    /// undo curvature, so only embeddings spoiled by their border (the virtual one) grow.
+    static constexpr double kMaxDistortion = 3.0;
     std::shared_ptr<Surface> surf;
-    LocalRegion<MeshType> region;
+    std::map<std::pair<int, int>, Embedding> embeddings; // by segment (first sample, samples)
+    ConformalParam::Workspace conformal;
     std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
+    struct Workspace // reused by every segment move: no allocation in the steady state
+    {
+        std::vector<int> core, lf;
+        Eigen::MatrixXd X, B, F, Xn;
+        RegionWalk::Result walk;
+    } work;
 
     static double msSince(clock::time_point t0)
     {

@@ -101,14 +101,20 @@ public:
     /// Fixed rows are returned unchanged.
     Eigen::MatrixXd Update(const Eigen::MatrixXd &X, const Eigen::MatrixXd &F) const
     {
-        Eigen::MatrixXd out = X;
-        if (freeIdx.empty()) return out;
-        Eigen::MatrixXd rhs(freeIdx.size(), X.cols());
-        for (size_t k = 0; k < freeIdx.size(); ++k) rhs.row(k) = gamma_ * X.row(freeIdx[k]) - F.row(freeIdx[k]);
-        rhs -= Mfc * X; // fixed samples' coupling moves to the right-hand side
-        Eigen::MatrixXd sol = factor->solve(rhs);
-        for (size_t k = 0; k < freeIdx.size(); ++k) out.row(freeIdx[k]) = sol.row(k);
+        Eigen::MatrixXd out;
+        Update(X, F, out);
         return out;
+    }
+    /// The same into `out`; no allocation once the sizes repeat (the snake's steady state).
+    void Update(const Eigen::MatrixXd &X, const Eigen::MatrixXd &F, Eigen::MatrixXd &out) const
+    {
+        out = X;
+        if (freeIdx.empty()) return;
+        rhs_.resize(Eigen::Index(freeIdx.size()), X.cols());
+        for (size_t k = 0; k < freeIdx.size(); ++k) rhs_.row(k) = gamma_ * X.row(freeIdx[k]) - F.row(freeIdx[k]);
+        rhs_.noalias() -= Mfc * X; // fixed samples' coupling moves to the right-hand side
+        sol_ = factor->solve(rhs_);
+        for (size_t k = 0; k < freeIdx.size(); ++k) out.row(freeIdx[k]) = sol_.row(k);
     }
 
     bool Ok() const { return factor && (freeIdx.empty() || factor->info() == Eigen::Success); }
@@ -121,6 +127,7 @@ private:
     std::vector<bool> fixed_;
     std::vector<int> freeIdx, slot;
     SpMat Mff, Mfc;
+    mutable Eigen::MatrixXd rhs_, sol_; // Update's scratch
     std::unique_ptr<Eigen::SimplicialLDLT<SpMat>> factor;
 };
 

@@ -38,8 +38,10 @@ public:
         MeshValidation<MeshType>::RequireAdjacencySafe(m);
         if (!tri::HasFFAdjacency(m) || !tri::HasVFAdjacency(m))
             throw SnakeError("Geometric snake: the mesh needs face-face and vertex-face adjacency enabled.");
-        tri::UpdateTopology<MeshType>::FaceFace(m);
-        tri::UpdateTopology<MeshType>::VertexFace(m);
+        // The caller (MeshLab, the CLI) has usually just built the adjacency: check it in one
+        // linear pass instead of rebuilding it (a sort of every edge).
+        if (!FaceFaceCurrent(m)) tri::UpdateTopology<MeshType>::FaceFace(m);
+        if (!VertexFaceCurrent(m)) tri::UpdateTopology<MeshType>::VertexFace(m);
         tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
         meanEdge = MeshValidation<MeshType>::MeanEdgeLength(m);
         faceCount = int(m.face.size());
@@ -48,12 +50,63 @@ public:
         faceSlot.assign(m.face.size(), -1);
         vertStamp.assign(m.vert.size(), 0);
         vertSlot.assign(m.vert.size(), -1);
+        vertMark.assign(m.vert.size(), 0);
+        vertDist.assign(m.vert.size(), 0.0);
+        vertSrc.assign(m.vert.size(), 0);
         if (captureSmoothing < 0 || captureSmoothing > 10000)
             throw SnakeError("Geometric snake: capture smoothing must be in [0, 10000].");
         captureSteps = captureSmoothing;
         SetEnergyFromQuality();
     }
     static int DefaultCaptureSmoothing() { return 8; }
+
+    /// True when every live face's FF adjacency is what UpdateTopology::FaceFace would build
+    /// on a mesh whose edges are manifold: each neighbour is live, shares the edge and points back
+    /// (a border edge points to the face itself). Anything else (stale, missing, non-manifold) is false.
+    static bool FaceFaceCurrent(const MeshType &m)
+    {
+        for (const FaceType &f : m.face) {
+            if (f.IsD()) continue;
+            for (int k = 0; k < 3; ++k) {
+                const FaceType *g = f.cFFp(k);
+                if (g == nullptr) return false;
+                const int j = f.cFFi(k);
+                if (j < 0 || j > 2) return false;
+                if (g == &f) {
+                    if (j != k) return false;
+                    continue;
+                }
+                if (g < &m.face[0] || g > &m.face.back() || g->IsD() || g->cFFp(j) != &f) return false;
+                const bool same = g->cV(j) == f.cV(k) && g->cV((j + 1) % 3) == f.cV((k + 1) % 3);
+                const bool flip = g->cV(j) == f.cV((k + 1) % 3) && g->cV((j + 1) % 3) == f.cV(k);
+                if (!same && !flip) return false;
+            }
+        }
+        return true;
+    }
+    /// True when the VF lists hold exactly the live faces at each of their vertices.
+    static bool VertexFaceCurrent(const MeshType &m)
+    {
+        if (m.vert.empty() || m.face.empty()) return false;
+        size_t entries = 0, expected = 0;
+        for (const FaceType &f : m.face)
+            if (!f.IsD()) expected += 3;
+        for (const VertexType &v : m.vert) {
+            if (v.IsD()) continue;
+            const FaceType *f = v.cVFp();
+            int i = v.cVFi();
+            for (size_t guard = 0; f != nullptr; ++guard) {
+                if (guard > expected || i < 0 || i > 2 || f < &m.face[0] || f > &m.face.back() || f->IsD() ||
+                    f->cV(i) != &v)
+                    return false;
+                ++entries;
+                const FaceType *next = f->cVFp(i);
+                i = f->cVFi(i);
+                f = next;
+            }
+        }
+        return entries == expected;
+    }
 
     /// Coarse-to-fine capture (beyond the paper): besides the energy E read from quality
     /// (level 0, precise), a pyramid of smoothings of E (Sec. 6.3, by distance: see
@@ -117,11 +170,17 @@ public:
         if (++generation == 0x7fffffff) {
             std::fill(faceStamp.begin(), faceStamp.end(), 0);
             std::fill(vertStamp.begin(), vertStamp.end(), 0);
+            std::fill(vertMark.begin(), vertMark.end(), 0);
             generation = 1;
         }
         return generation;
     }
     std::vector<int> faceStamp, faceSlot, vertStamp, vertSlot;
+    /// Distances from a region's core (LocalRegion's metric margin), valid where vertMark is
+    /// the current generation; the heap is reused so that growing a region does not allocate.
+    std::vector<int> vertMark, vertSrc;
+    std::vector<double> vertDist;
+    std::vector<std::pair<double, int>> heapScratch;
 
 private:
     MeshType &mesh;
