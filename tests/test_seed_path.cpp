@@ -214,6 +214,45 @@ TEST(SeedPath, FeatureCostFollowsCubeEdge)
     EXPECT_GE(byFeature.length, byLength.length - 1e-9); // the Euclidean one is the shortest
 }
 
+// A cost is a type (seed_path_cost.h): one written here, a length that is 50x dearer where
+// z > -0.15, steers the path around that region without touching the search.
+struct AvoidBandCost
+{
+    static constexpr bool StraightIsCheapest = false;
+    const CMeshO &m;
+    double Price(const vcg::Point3d &a, const vcg::Point3d &b) const
+    {
+        return vcg::Distance(a, b) * ((a[2] + b[2]) / 2 > -0.15 ? 50.0 : 1.0);
+    }
+    vcg::Point3d P(int v) const { return vcg::Point3d::Construct(m.vert[v].cP()); }
+    double operator()(int a, int b) const { return Price(P(a), P(b)); }
+    double operator()(const vcg::tri::SurfacePoint &p, int v) const { return Price(p.Pd(m), P(v)); }
+    double operator()(const vcg::tri::SurfacePoint &a, const vcg::tri::SurfacePoint &b) const
+    {
+        return Price(a.Pd(m), b.Pd(m));
+    }
+    double LowerBoundPerLength() const { return 1.0; }
+};
+
+TEST(SeedPath, CostIsATypeTheSearchIsTemplatedOn)
+{
+    CMeshO m;
+    gs_test::MakeIcosphere(m, 3);
+    // two seeds near the pole y = 1, on the plane z = 0
+    const int a = Nearest(m, {-0.3, 0.95, 0}), b = Nearest(m, {0.3, 0.95, 0});
+    const auto plain = SP::ComputeWith(m, {a, b}, false, vcg::tri::LengthPathCost<CMeshO>(m));
+    const auto avoid = SP::ComputeWith(m, {a, b}, false, AvoidBandCost{m});
+    EXPECT_EQ(plain.vertices, SP::Compute(m, {a, b}, false).vertices); // the enum picks the same type
+    auto meanInnerZ = [&](const std::vector<int> &path) {
+        double z = 0;
+        for (size_t i = 1; i + 1 < path.size(); ++i) z += m.vert[path[i]].cP()[2];
+        return z / std::max<size_t>(1, path.size() - 2);
+    };
+    EXPECT_GT(meanInnerZ(plain.vertices), -0.1);  // the shortest path runs near z = 0 ...
+    EXPECT_LT(meanInnerZ(avoid.vertices), -0.15); // ... the other keeps out of the dear region
+    EXPECT_GT(avoid.length, plain.length); // by a detour
+}
+
 TEST(SeedPath, ParseSeeds)
 {
     EXPECT_EQ(SP::ParseSeeds("12, 40,77"), (std::vector<int>{12, 40, 77}));

@@ -15,7 +15,6 @@ import pty
 import re
 import subprocess
 import sys
-import tempfile
 import time
 import unittest
 
@@ -40,19 +39,12 @@ def ico_seeds(offset=2.5):
     return ",".join(map(str, seeds)), h
 
 
-class CliTests(unittest.TestCase):
-    maxDiff = None
+class CliTests(mlhost.WorkDirTestCase):
+    WORK_ENV = "GS_CLI_WORK"
 
     def setUp(self):
-        base = os.environ.get("GS_CLI_WORK") or tempfile.gettempdir()
-        os.makedirs(base, exist_ok=True)
-        self.work = tempfile.mkdtemp(prefix=self._testMethodName + "-", dir=base)
-        self.cube_verts, self.cube_faces = mlhost.grid_cube(N)
-        self.cube = self.path("cube.ply")
-        mlhost.write_ply(self.cube, self.cube_verts, self.cube_faces)
-
-    def path(self, name):
-        return os.path.join(self.work, name)
+        super().setUp()
+        self.write_cube(N)
 
     def cube_index(self, p):
         return self.cube_verts.index(tuple(float(c) for c in p))

@@ -13,7 +13,6 @@ import math
 import os
 import subprocess
 import sys
-import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -40,16 +39,8 @@ def nearest(pts, target):
     return min(range(len(pts)), key=lambda i: math.dist(pts[i], target))
 
 
-class CliHostTests(unittest.TestCase):
-    maxDiff = None
-
-    def setUp(self):
-        base = os.environ.get("GS_CLI_WORK") or tempfile.gettempdir()
-        os.makedirs(base, exist_ok=True)
-        self.work = tempfile.mkdtemp(prefix=self._testMethodName + "-", dir=base)
-
-    def path(self, name):
-        return os.path.join(self.work, name)
+class CliHostTests(mlhost.WorkDirTestCase):
+    WORK_ENV = "GS_CLI_WORK"
 
     def filter_snake(self, mesh, seeds, closed, out, **extra):
         mlx = self.path("snake.mlx")

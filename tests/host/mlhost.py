@@ -18,6 +18,7 @@ import struct
 import subprocess
 import tempfile
 import sys
+import unittest
 from xml.sax.saxutils import quoteattr
 
 FILTER_ENERGY = "Compute Geometric Snake Feature Energy"
@@ -385,3 +386,26 @@ if __name__ == "__main__":
     else:
         print(__doc__)
         sys.exit(2)
+
+
+class WorkDirTestCase(unittest.TestCase):
+    """A unittest case with its own work folder per test method, under the folder named by the
+    environment variable WORK_ENV (the build tree's, so failures leave their files to look at)."""
+    WORK_ENV = "GS_HOST_WORK"
+    maxDiff = None
+
+    def setUp(self):
+        base = os.environ.get(self.WORK_ENV) or tempfile.gettempdir()
+        os.makedirs(base, exist_ok=True)
+        self.work = tempfile.mkdtemp(prefix=self._testMethodName + "-", dir=base)
+
+    def path(self, name):
+        return os.path.join(self.work, name)
+
+    def write_cube(self, n, name="cube.ply"):
+        """The grid cube of n x n quads per side as `name` in the work folder; sets self.cube,
+        self.cube_verts, self.cube_faces."""
+        self.cube_verts, self.cube_faces = grid_cube(n)
+        self.cube = self.path(name)
+        write_ply(self.cube, self.cube_verts, self.cube_faces)
+        return self.cube

@@ -13,7 +13,6 @@ import math
 import os
 import re
 import sys
-import tempfile
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -26,19 +25,10 @@ DATA = os.environ.get("GS_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
 N = 8  # grid cube resolution: 8x8 quads per side
 
 
-class HostTests(unittest.TestCase):
-    maxDiff = None
-
+class HostTests(mlhost.WorkDirTestCase):
     def setUp(self):
-        base = os.environ.get("GS_HOST_WORK") or tempfile.gettempdir()
-        os.makedirs(base, exist_ok=True)
-        self.work = tempfile.mkdtemp(prefix=self._testMethodName + "-", dir=base)
-        self.cube_verts, self.cube_faces = mlhost.grid_cube(N)
-        self.cube = self.path("cube.ply")
-        mlhost.write_ply(self.cube, self.cube_verts, self.cube_faces)
-
-    def path(self, name):
-        return os.path.join(self.work, name)
+        super().setUp()
+        self.write_cube(N)
 
     # ------------------------------------------------------------------ helpers
     def run_script(self, mesh, filters, outputs=(), expect_ok=True):

@@ -12,7 +12,6 @@ import math
 import os
 import struct
 import sys
-import tempfile
 import time
 import unittest
 
@@ -49,17 +48,10 @@ def write_stl(path, verts, faces):
             f.write(struct.pack("<H", 0))
 
 
-class DataSafetyTests(unittest.TestCase):
-    maxDiff = None
-
+class DataSafetyTests(mlhost.WorkDirTestCase):
     def setUp(self):
-        base = os.environ.get("GS_HOST_WORK") or tempfile.gettempdir()
-        os.makedirs(base, exist_ok=True)
-        self.work = tempfile.mkdtemp(prefix=self._testMethodName + "-", dir=base)
+        super().setUp()
         self.verts, self.faces = mlhost.grid_cube(8)
-
-    def path(self, name):
-        return os.path.join(self.work, name)
 
     def run_script(self, mesh, filters, outputs=()):
         mlx = self.path("script%d.mlx" % len(os.listdir(self.work)))
