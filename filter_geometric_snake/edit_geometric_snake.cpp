@@ -107,6 +107,9 @@ bool EditGeometricSnakePlugin::startEdit(MeshDocument &md, GLArea *gla, MLSceneG
     doc = &md;
     glArea = gla;
     shared = cont;
+    // MeshLab gives an edit tool its Log only when it first draws: without this, what the tool
+    // says while starting (an unreadable sidecar, a mesh it cannot work on) would be lost
+    setLog(&md.Log);
     if (md.mm() == nullptr) return false;
     if (md.isBusy()) return false; // MeshLab is still loading or filtering the mesh
     return startOn(*md.mm());
@@ -151,6 +154,7 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
     }
     ownKeys(true);
     refreshDock();
+    lastError.clear(); // a new start: its problems go to the Log again
     if (m.cm.fn < 1) {
         report("Geometric snake: the current layer has no faces; select a triangle mesh layer.", true);
         return true; // keep the panel, the user may switch layers

@@ -278,7 +278,7 @@ bool FilterGeometricSnakePlugin::apply(const QAction *filter, const RichParamete
 		return fail("No mesh is loaded.");
 	try {
 		switch (ID(filter)) {
-		case FP_FEATURE_ENERGY: return applyFeatureEnergy(md, par);
+		case FP_FEATURE_ENERGY: return applyFeatureEnergy(md, par, cb);
 		case FP_SEED_PATH: return applySeedPath(md, par);
 		case FP_SNAKE: return applySnake(md, par, cb);
 		case FP_EXPORT: return applyExport(md, par);
@@ -334,7 +334,8 @@ void FilterGeometricSnakePlugin::handleSoup(MeshModel &m, bool merge)
 	    "now refer to the merged mesh.", merged, vn, m.cm.vn, m.cm.fn);
 }
 
-bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const RichParameterList &par)
+bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const RichParameterList &par,
+                                                    vcg::CallBackPos *cb)
 {
 	MeshModel &m = *md.mm();
 	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::FeatureEnergy());
@@ -351,7 +352,16 @@ bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const Rich
 
 	QElapsedTimer timer;
 	timer.start();
-	const auto stats = tri::FeatureEnergy<CMeshO>::Compute(m.cm, tri::FeatureEnergyType(type), steps, creaseAngle);
+	// The smoothing rounds report to the host's progress bar (meshlabserver prints each call:
+	// at most ~4 per second), and a host callback answering false cancels them.
+	qint64 lastShown = -1000;
+	const tri::FeatureEnergy<CMeshO>::Progress progress = [&](int pct) {
+		if (cb == nullptr || (pct < 100 && timer.elapsed() - lastShown < 250)) return true;
+		lastShown = timer.elapsed();
+		return cb(pct, "Smoothing the feature energy...");
+	};
+	const auto stats = tri::FeatureEnergy<CMeshO>::Compute(m.cm, tri::FeatureEnergyType(type), steps, creaseAngle,
+	                                                       progress);
 
 	if (colorize) {
 		m.updateDataMask(MeshModel::MM_VERTCOLOR);

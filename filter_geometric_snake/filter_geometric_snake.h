@@ -45,7 +45,7 @@ public:
 	bool apply(const QAction *filter, const RichParameterList &par, MeshDocument &md, vcg::CallBackPos *cb) override;
 
 private:
-	bool applyFeatureEnergy(MeshDocument &md, const RichParameterList &par);
+	bool applyFeatureEnergy(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb);
 	bool applySeedPath(MeshDocument &md, const RichParameterList &par);
 	bool applySnake(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb);
 	bool applyExport(MeshDocument &md, const RichParameterList &par);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -295,6 +296,49 @@ TEST(FeatureEnergy, NormalizeAndSmoothPrimitives)
     const float s0 = spread();
     FE::Smooth(m, 5);
     EXPECT_LT(spread(), 0.5f * s0);
+}
+
+// Issue 8: long smoothing reports progress through a callback (MeshLab's cb) and can be
+// cancelled; a cancelled computation leaves the vertex quality as it was.
+TEST(FeatureEnergy, SmoothingReportsProgressAndCancels)
+{
+    CMeshO m;
+    gs_test::MakeRotatedIcoCube(m, 2);
+    std::vector<int> seen;
+    FE::Compute(m, FeatureEnergyType::NormalVariation, 1000, 30, [&](int pct) {
+        seen.push_back(pct);
+        return true;
+    });
+    ASSERT_GE(seen.size(), 100u);
+    EXPECT_EQ(seen.front(), 0);
+    EXPECT_EQ(seen.back(), 100);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    std::vector<float> done;
+    for (const auto &v : m.vert) done.push_back(v.cQ());
+
+    // the same result without a callback
+    CMeshO m2;
+    gs_test::MakeRotatedIcoCube(m2, 2);
+    FE::Compute(m2, FeatureEnergyType::NormalVariation, 1000);
+    for (size_t i = 0; i < m.vert.size(); ++i) ASSERT_EQ(m2.vert[i].cQ(), done[i]);
+
+    // cancelled at 40 %: SnakeCancelled, the quality the mesh had before
+    for (auto &v : m2.vert) v.Q() = 0.123f;
+    int calls = 0;
+    try {
+        FE::Compute(m2, FeatureEnergyType::NormalVariation, 1000, 30, [&](int pct) {
+            ++calls;
+            return pct < 40;
+        });
+        ADD_FAILURE() << "no exception";
+    } catch (const vcg::tri::SnakeCancelled &e) {
+        EXPECT_NE(std::string(e.what()).find("cancelled after 400 of 1000"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(calls, 41);
+    for (const auto &v : m2.vert) ASSERT_EQ(v.cQ(), 0.123f);
+    // Smooth alone returns the rounds it did
+    EXPECT_EQ(FE::Smooth(m2, 50, [](int pct) { return pct < 10; }), 5);
+    EXPECT_EQ(FE::Smooth(m2, 50), 50);
 }
 
 TEST(FeatureEnergy, FaceGradientMatchesFiniteDifferences)

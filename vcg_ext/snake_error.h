@@ -16,6 +16,13 @@ public:
     explicit SnakeError(const std::string &msg) : std::runtime_error(msg) {}
 };
 
+/// The user (through a progress callback) stopped a long computation.
+class SnakeCancelled : public SnakeError
+{
+public:
+    explicit SnakeCancelled(const std::string &msg) : SnakeError(msg) {}
+};
+
 } // namespace tri
 } // namespace vcg
 

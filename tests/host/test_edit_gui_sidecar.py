@@ -5,11 +5,12 @@ Run under an X server (CTest: xvfb-run ... test_edit_gui_sidecar.py <work folder
 <mesh>.snakes.json lies next to data/icocube.ply. MeshLab opens the mesh, the Geometric Snake
 tool starts, a seed is placed, the tool ends. The truncated sidecar must be unchanged byte for
 byte, its .bak untouched, the session must be in <mesh>.snakes.recovered-<time>.json, and the
-Log must say so.
+Log (MeshLab's stdout echo) and the panel's status line (red pixels in the screenshot) must say so.
 """
 import glob
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -40,6 +41,13 @@ def xdo(*args):
 
 def screenshot(name):
     subprocess.run(["import", "-window", "root", os.path.join(WORK, name)], check=False)
+
+
+def red_pixels(png, x, y, w, h):
+    """Pixels of the error text colour (#b00000, anti-aliased) in a box of the screenshot."""
+    raw = subprocess.run(["convert", png, "-crop", "%dx%d+%d+%d" % (w, h, x, y), "+repage", "-alpha", "off",
+                          "-depth", "8", "rgb:-"], capture_output=True).stdout
+    return sum(1 for i in range(0, len(raw) - 2, 3) if raw[i] > 120 and raw[i + 1] < 70 and raw[i + 2] < 70)
 
 
 def read_bytes(p):
@@ -105,9 +113,21 @@ def main():
             return 1
         time.sleep(1)
         screenshot("01_started.png")
-        # (the message is in the panel's status line and MeshLab's Log window, which MeshLab does
-        # not echo to stdout: 01_started.png shows it; the unit test Sidecar.* checks its text)
         check(read_bytes(sidecar) == before, "starting the tool leaves the truncated sidecar as it was")
+        # the Log (MeshLab echoes it as "LOG: <level> <text>"): a warning that names the kept file
+        # and the recovery file
+        m = re.search(r"LOG: 1 Geometric snake: (.*kept unchanged; this session is saved to (\S+)\.)\n", log_text())
+        check(bool(m), "the Log warns that the sidecar is kept and names the recovery file (%s)" % (
+            m.group(1) if m else "no such line"))
+        if m:
+            check(re.fullmatch(re.escape(mesh) + r"\.snakes\.recovered-\d{8}-\d{6}(-\d+)?\.json", m.group(2)) is not None,
+                  "the Log names <mesh>.snakes.recovered-<time>.json (%s)" % os.path.basename(m.group(2)))
+        # the status line at the top of the panel shows the warning in red (error style)
+        pm = re.search(r"panel docked in MeshLab's main window at (-?\d+),(-?\d+) size (\d+)x(\d+)", log_text())
+        if check(bool(pm), "the panel is docked (its Log line)"):
+            px, py, pw = int(pm.group(1)), int(pm.group(2)), int(pm.group(3))
+            reds = red_pixels(os.path.join(WORK, "01_started.png"), px, py + 20, pw, 120)
+            check(reds > 40, "the panel's status line shows the warning in red (%d red pixels)" % reds)
 
         xdo("mousemove", 425, 465, "click", 1)  # a seed on the cube (middle of the 3D view)
         time.sleep(2)

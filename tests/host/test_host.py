@@ -123,6 +123,19 @@ class HostTests(mlhost.WorkDirTestCase):
                     if v["quality"] > 0.9:
                         self.assertGreater(v["blue"], v["red"], v)
 
+    def test_energy_smoothing_reports_progress(self):
+        """Long smoothing reports through the host's callback (meshlabserver prints it) and ends
+        with a valid energy (10000 rounds flatten this small cube's: all in [0, 1])."""
+        out_ply = self.path("energy_smooth.ply")
+        rc, out = self.run_script(self.cube, [(FILTER_ENERGY, self.energy_params(0, 10000, False))],
+                                  outputs=[["-o", out_ply, "-m", "vq"]])
+        self.assertEqual(rc, 0, out)
+        self.assertIn("Smoothing the feature energy...", out)
+        self.assertRegex(out, r"Feature energy \(normal variation, 10000 smoothing steps\)")
+        q = [v["quality"] for v in mlhost.read_ply(out_ply).vertices]
+        self.assertEqual(len(q), len(self.cube_verts))
+        self.assertTrue(all(math.isfinite(x) and -1e-6 <= x <= 1 + 1e-6 for x in q))
+
     def test_energy_no_colorize_keeps_colours(self):
         out_ply = self.path("q.ply")
         self.run_script(self.cube, [(FILTER_ENERGY, self.energy_params(0, 3, False))],

@@ -1,0 +1,300 @@
+#!/usr/bin/env python3
+"""GUI tests of the Geometric Snake edit tool's editing, snakes, exports and layers in the real MeshLab.
+
+Run under an X server (xvfb-run -a -s "-screen 0 1280x1024x24" python3 test_edit_gui_edit.py WORK),
+on data/icocube.ply (cube [-1,1]^3), the tool's JSON after every change in $GS_SNAKE_AUTOEXPORT:
+1. Keys: a clicked sample, then I inserts a sample after it (the others stay where they were),
+   P pins it, P unpins it, Delete removes it; Ctrl+Z x3 and Ctrl+Y x2 walk that history back and
+   forth exactly.
+2. Several snakes: the first snake Run to convergence; New, seeds and Enter build a second one
+   (the first keeps "converged"); choosing the first in the panel's list and pressing Space
+   steps the first snake only.
+3. Exports through the file dialogs: the selected snake as JSON and OBJ, all snakes as PLY,
+   each file parsed and compared with the tool's own state; exporting over the mesh itself
+   (confirming the dialog's "replace?") is refused and the mesh is unchanged byte for byte.
+4. Add as layer: a new layer appears; saved with MeshLab's own Export Mesh As (OBJ), it holds
+   the curve's vertices.
+5. Deleting the mesh while the tool is active (R pressed just before): MeshLab ends the tool (the
+   Run ends, the session is saved), the layer is gone, MeshLab keeps running; started again on
+   the edge layer left, the panel comes back and says that layer has no faces; keys do no harm.
+"""
+import json
+import math
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import test_edit_gui as g  # noqa: E402  (the MeshLab driver, screenshots, cube geometry)
+from test_edit_gui_tool import snakes_of, wait_for, samples, run_lines  # noqa: E402
+
+WORK = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "test-artifacts",
+                                                                          "edit_gui_edit"))
+g.WORK = WORK
+check, log, xdo = g.check, g.log, g.xdo
+
+# Fixed positions in the 1280x1000 main window with the docked panel (see 20_panel.png)
+PANEL_EXPORT_SELECTED = (976, 612)
+PANEL_EXPORT_ALL = (1170, 612)
+PANEL_ADD_LAYER = (976, 644)
+PANEL_NEW = (976, 539)
+PANEL_LIST = (1073, 509)
+TAB_LAYERS = (909, 951)
+PANEL_TAB = (1020, 951)
+MENU_DELETE_MESH = (1040, 250)  # in the context menu of the first layer (26_layer_menu.png)
+LAYER_ROW = [(963, 114), (993, 145)]  # first and second layer in the layer dialog
+
+
+def positions(j, k=0):
+    return [tuple(x["position"]) for x in samples(j)[k]["samples"]]
+
+
+def pins(j, k=0):
+    return [i for i, x in enumerate(samples(j)[k]["samples"]) if x["fixed"]]
+
+
+def changed(path, before, timeout=5):
+    return wait_for(lambda: (lambda j: j if j and j != before else None)(snakes_of(path)), timeout)
+
+
+def read_bytes(p):
+    with open(p, "rb") as f:
+        return f.read()
+
+
+def save_dialog(title, path, confirm_replace=False):
+    """Types `path` into a Qt file dialog titled `title` and accepts it."""
+    win = wait_for(lambda: xdo("search", "--name", title).split(), 10)
+    if not win:
+        return False
+    time.sleep(0.8)
+    xdo("key", "ctrl+a")
+    xdo("type", "--delay", "5", path)
+    time.sleep(0.3)
+    xdo("key", "Return")
+    if confirm_replace:  # "... already exists. Do you want to replace it?"
+        time.sleep(1.0)
+        g.screenshot("replace_%s.png" % os.path.basename(path))
+        xdo("key", "alt+y")
+    return True
+
+
+def close_to(a, b, tol=1e-5):
+    return len(a) == len(b) and all(math.dist(p, q) <= tol for p, q in zip(a, b))
+
+
+def main():
+    if os.path.isdir(WORK):
+        shutil.rmtree(WORK)
+    os.makedirs(WORK)
+    mesh = os.path.join(WORK, "icocube.ply")
+    shutil.copy(os.path.join(g.DATA, "icocube.ply"), mesh)
+    mesh_bytes = read_bytes(mesh)
+    V, F = g.mesh_ply(mesh)
+    h = g.mean_edge(V, F)
+    auto = os.path.join(WORK, "auto.json")
+
+    ml = g.MeshLab(mesh, "run")
+    try:
+        if not check(ml.start_tool(), "the tool starts from the Edit menu"):
+            return 1
+        time.sleep(1.0)
+        img = g.Image(g.screenshot("20_panel.png"))
+        left, right, top, bottom = g.front_face_extent(img)
+        hpx = (right - left) / 2.0 * h
+        xm = (left + right) // 2
+        for f in (0.2, 0.4, 0.6, 0.8):
+            xdo("mousemove", int(left + f * (right - left)), int(top + 2.2 * hpx), "click", 1)
+            time.sleep(0.4)
+        xdo("key", "Return")
+        s0 = wait_for(lambda: (lambda j: j if j and len(samples(j)[0]["samples"]) >= 5 else None)(snakes_of(auto)), 20)
+        if not check(bool(s0), "Enter builds the snake"):
+            return 1
+        n0 = len(samples(s0)[0]["samples"])
+
+        # ------------------------------------------------------------ 1. keys: insert, pin, delete
+        time.sleep(1.0)
+        img = g.Image(g.screenshot("21_built.png"))
+        ym = g.magenta_y(img, xm)
+        check(bool(ym), "the snake is drawn")
+        xdo("mousemove", xm, ym[len(ym) // 2] if ym else int(top + 2.2 * hpx), "click", 1)  # selects a sample
+        time.sleep(0.5)
+        xdo("key", "i")
+        s1 = changed(auto, s0)
+        ok = bool(s1) and len(samples(s1)[0]["samples"]) == n0 + 1
+        check(ok, "I inserts a sample (%d -> %s)" % (n0, len(samples(s1)[0]["samples"]) if s1 else "?"))
+        if ok:
+            p0, p1 = positions(s0), positions(s1)
+            new = [i for i in range(len(p1)) if p1[:i] + p1[i + 1:] == p0]
+            check(len(new) == 1, "the other samples stay exactly where they were (new sample at %s)" % new)
+            ins = new[0] if new else -1
+            if 0 < ins < len(p1) - 1:
+                a, b, c = p1[ins - 1], p1[ins], p1[ins + 1]
+                check(math.dist(a, b) < math.dist(a, c) and math.dist(b, c) < math.dist(a, c),
+                      "the new sample lies between its neighbours")
+        xdo("key", "p")
+        s2 = changed(auto, s1)
+        check(bool(s2) and pins(s2) == [ins], "P pins the inserted (current) sample (%s)" % (pins(s2) if s2 else "?"))
+        xdo("key", "p")
+        s3 = changed(auto, s2)
+        check(bool(s3) and pins(s3) == [] and positions(s3) == positions(s1), "P again unpins it")
+        xdo("key", "Delete")
+        s4 = changed(auto, s3)
+        check(bool(s4) and positions(s4) == positions(s0), "Delete removes it: the snake as built")
+        history = [("ctrl+z", s3, "unpinned"), ("ctrl+z", s2, "pinned"), ("ctrl+z", s1, "inserted"),
+                   ("ctrl+y", s2, "pinned"), ("ctrl+y", s3, "unpinned")]
+        cur = s4
+        for k, (key, want, name) in enumerate(history):
+            xdo("key", key)
+            cur = changed(auto, cur)
+            check(bool(cur) and samples(cur)[0]["samples"] == samples(want)[0]["samples"],
+                  "%s (%d of 5) returns to the %s state" % (key, k + 1, name))
+        xdo("key", "ctrl+y")  # back to the snake as built (the sample deleted)
+        cur = changed(auto, cur)
+        check(bool(cur) and positions(cur) == positions(s0), "Ctrl+Y redoes the delete")
+
+        # ------------------------------------------------------------ 2. several snakes
+        xdo("key", "r")
+        conv = wait_for(lambda: (lambda j: j if j and samples(j)[0]["stats"]["converged"] else None)(snakes_of(auto)), 60)
+        check(bool(conv), "the first snake converges")
+        time.sleep(0.5)
+        xdo("mousemove", *PANEL_NEW, "click", 1)
+        time.sleep(0.5)
+        for f in (0.3, 0.5, 0.7):
+            xdo("mousemove", int(left + f * (right - left)), int((top + bottom) / 2), "click", 1)
+            time.sleep(0.4)
+        xdo("key", "Return")
+        two = wait_for(lambda: (lambda j: j if j and len(samples(j)) == 2 else None)(snakes_of(auto)), 20)
+        if not check(bool(two), "New, seeds and Enter build a second snake"):
+            return 1
+        check(samples(two)[0]["stats"]["converged"] and samples(two)[0]["samples"] == samples(conv)[0]["samples"],
+              "the first snake keeps its state and its \"converged\"")
+        xdo("mousemove", *PANEL_LIST, "click", 1)  # the list: its popup ...
+        time.sleep(0.8)
+        g.screenshot("22_list.png")
+        xdo("key", "Up", "Return")  # ... choose the first snake
+        time.sleep(0.5)
+        ops = [x["stats"]["operations"] for x in samples(two)]
+        xdo("key", "space")
+        stepped = changed(auto, two)
+        ops2 = [x["stats"]["operations"] for x in samples(stepped)] if stepped else None
+        check(ops2 == [ops[0] + 1, ops[1]], "after choosing snake 1 in the list, Space steps snake 1 only (%s -> %s)" % (
+            ops, ops2))
+        state = snakes_of(auto)
+
+        # ------------------------------------------------------------ 3. exports through the dialogs
+        def export(button, title, name, confirm=False):
+            xdo("mousemove", *button, "click", 1)
+            path = os.path.join(WORK, name)
+            if not check(save_dialog(title, path, confirm), "the dialog \"%s\" opens" % title):
+                xdo("key", "Escape")
+                return None
+            time.sleep(1.5)
+            return path
+
+        p = export(PANEL_EXPORT_SELECTED, "Export the selected snake", "selected.json")
+        if p and check(os.path.exists(p), "Export selected... writes JSON"):
+            j = json.load(open(p))
+            check("snakes" not in j and j["samples"] == samples(state)[0]["samples"],
+                  "the JSON holds the selected snake (snake 1) exactly")
+        p = export(PANEL_EXPORT_SELECTED, "Export the selected snake", "selected.obj")
+        if p and check(os.path.exists(p), "Export selected... writes OBJ"):
+            lines = open(p).read().split("\n")
+            v = [tuple(map(float, l.split()[1:])) for l in lines if l.startswith("v ")]
+            ls = [l for l in lines if l.startswith("l ")]
+            check(close_to(v, [tuple(x) for x in samples(state)[0]["polyline"]], 1e-6) and len(ls) == 1 and
+                  len(ls[0].split()) == len(v) + 1, "the OBJ holds snake 1's curve as one polyline (%d vertices)" % len(v))
+        p = export(PANEL_EXPORT_ALL, "Export all snakes", "all.ply")
+        if p and check(os.path.exists(p), "Export all... writes PLY"):
+            text = open(p).read()
+            nv = int(re.search(r"element vertex (\d+)", text).group(1))
+            ne = int(re.search(r"element edge (\d+)", text).group(1))
+            want = sum(len(x["polyline"]) for x in samples(state))
+            check(nv == want and ne == want - 2, "the PLY holds both curves (%d vertices, %d edges)" % (nv, ne))
+        g.screenshot("23_exports.png")
+
+        # ------------------------------------------------------------ 4. Add as layer, saved by MeshLab
+        xdo("mousemove", *PANEL_ADD_LAYER, "click", 1)
+        check(wait_for(lambda: "Geometric snake: added layer icocube snake 1" in ml.log_text(), 5),
+              "Add as layer adds the selected curve as a new layer")
+        xdo("mousemove", *TAB_LAYERS, "click", 1)
+        time.sleep(0.5)
+        xdo("mousemove", *LAYER_ROW[1], "click", 1)  # the new layer becomes current
+        time.sleep(1.5)
+        g.screenshot("24_layer.png")
+        xdo("key", "ctrl+shift+e")  # File > Export Mesh As...
+        layer_obj = os.path.join(WORK, "layer.obj")
+        if check(save_dialog("snake 1. Layer", layer_obj), "MeshLab's Export Mesh As dialog opens"):
+            time.sleep(1.5)
+            g.screenshot("25_save_options.png")
+            xdo("key", "Return")  # the saving options: OK
+            time.sleep(1.5)
+        if check(wait_for(lambda: os.path.exists(layer_obj), 5), "MeshLab saves the layer"):
+            v = [tuple(map(float, l.split()[1:4])) for l in open(layer_obj) if l.startswith("v ")]
+            want = [tuple(x) for x in samples(state)[0]["polyline"]]
+            check(close_to(v, want, 1e-5), "the saved layer has the curve's vertices (%d of %d)" % (len(v), len(want)))
+
+        xdo("mousemove", *LAYER_ROW[0], "click", 1)  # back on the cube: the tool restarts there
+        time.sleep(1.5)
+        xdo("mousemove", *PANEL_TAB, "click", 1)
+        time.sleep(0.5)
+
+        # ------------------------------------------------------------ 3b. never over the mesh
+        # (last use of the panel's buttons: the long message then moves them down a line)
+        xdo("mousemove", *PANEL_EXPORT_ALL, "click", 1)
+        save_dialog("Export all snakes", mesh, confirm_replace=True)
+        time.sleep(1.5)
+        text = ml.log_text()
+        check(read_bytes(mesh) == mesh_bytes, "exporting over the mesh through the dialog leaves it unchanged")
+        m = re.search(r"LOG: 1 (Refusing to write .*icocube\.ply.*)", text)
+        check(bool(m), "... and the Log says why (%s)" % (m.group(1) if m else "no warning"))
+
+        # ------------------------------------------------------------ 5. deleting the mesh
+        count = lambda what: ml.log_text().count(what)
+        panels, nofaces = count("panel docked"), count("has no faces")
+        xdo("mousemove", *TAB_LAYERS, "click", 1)
+        time.sleep(0.5)
+        xdo("key", "r")  # a Run (the tool owns R in the layer dialog too) ...
+        xdo("mousemove", *LAYER_ROW[0], "click", 3)  # ... and the cube's context menu: Filters > Mesh Layer
+        time.sleep(1.0)
+        g.screenshot("26_layer_menu.png")
+        xdo("mousemove", *MENU_DELETE_MESH, "click", 1)  # Delete Current Mesh
+        check(wait_for(lambda: "Applied filter Delete Current Mesh" in ml.log_text(), 10), "the cube layer is deleted")
+        time.sleep(1.5)
+        g.screenshot("27_deleted.png")
+        check(ml.p.poll() is None, "MeshLab keeps running")
+        text = ml.log_text()
+        last_run = max((m.end() for m in re.finditer(r"Geometric snake: Run (converged|stopped) after", text)), default=-1)
+        check(0 <= text.find("Applied filter Delete Current Mesh") - last_run < 400,
+              "the Run ended (its Log line) just before the mesh was deleted")
+        sc = snakes_of(mesh + ".snakes.json")
+        check(bool(sc) and len(sc["snakes"]) == 2, "the tool saved both snakes to the sidecar as it ended")
+        # started again: the panel comes back and says the remaining (edge) layer has no faces
+        xdo("mousemove", 70, 10, "click", 1)
+        time.sleep(1)
+        xdo("mousemove", 141, 84, "click", 1)
+        check(wait_for(lambda: count("panel docked") == panels + 1, 10), "the tool starts again, with its panel")
+        check(wait_for(lambda: count("has no faces") == nofaces + 1, 5), "the panel says the layer left has no faces")
+        xdo("mousemove", 400, 500, "click", 1)
+        xdo("key", "r", "space", "Delete", "ctrl+z")
+        time.sleep(1.0)
+        g.screenshot("28_restarted.png")
+        check(ml.p.poll() is None, "keys with no mesh to work on do no harm")
+    finally:
+        ml.kill(signal.SIGKILL)
+
+    log("artifacts in " + WORK)
+    if g.failures:
+        log("%d check(s) failed" % len(g.failures))
+        return 1
+    log("all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
