@@ -561,7 +561,7 @@ void EditGeometricSnakePlugin::runProgress(const char *state)
                         .arg(state)
                         .arg(s->Stats().operations - runOps0)
                         .arg(s->Stats().lastMaxMove, 0, 'f', 3)
-                        .arg(s->EnergyStage() == 1 ? "coarse" : "precise")
+                        .arg(s->EnergyStage() > 0 ? "coarse" : "precise")
                         .arg(runClock.elapsed() / 1000.0, 0, 'f', 1)
                         .arg((ctl->ComputeMs() - runCompute0) / 1000.0, 0, 'f', 2),
                     false);

@@ -5,6 +5,9 @@
 #   scripts/eval.sh            full run (about 10-15 minutes on 2 cores)
 #   scripts/eval.sh --quick    smoke run (< 2 minutes): fewer cases, no scaling benchmark;
 #                              writes to docs/eval/quick/ so the full results are kept
+#   scripts/eval.sh --capture  the capture-range sweep only (issue 9, a few minutes): seeds 1-6
+#                              edge lengths off a crease, both methods -> docs/eval/capture.csv,
+#                              results.md and docs/img/capture_range.svg (the other results kept)
 #
 # Environment: BUILD_DIR (default /work/build-eval), MESHLAB_SOURCE_DIR (default
 # <repo>/build/meshlab-src), JOBS (default 2).
@@ -15,18 +18,36 @@ BUILD_DIR="${BUILD_DIR:-/work/build-eval}"
 MESHLAB_SOURCE_DIR="${MESHLAB_SOURCE_DIR:-$ROOT/build/meshlab-src}"
 JOBS="${JOBS:-2}"
 QUICK=0
+CAPTURE_ONLY=0
 [[ "${1:-}" == "--quick" ]] && QUICK=1
+[[ "${1:-}" == "--capture" ]] && CAPTURE_ONLY=1
 
 OUT="$ROOT/docs/eval"
 [[ $QUICK == 1 ]] && OUT="$ROOT/docs/eval/quick"
 mkdir -p "$OUT"
 T0=$(date +%s)
 
-echo "== build (gs_eval, bench_table1) in $BUILD_DIR"
+TARGETS="gs_eval bench_table1"
+[[ $CAPTURE_ONLY == 1 ]] && TARGETS="gs_eval"
+echo "== build ($TARGETS) in $BUILD_DIR"
 mkdir -p "$BUILD_DIR"
 cmake -S "$ROOT" -B "$BUILD_DIR" -DGS_BUILD_PLUGINS=OFF -DMESHLAB_SOURCE_DIR="$MESHLAB_SOURCE_DIR" \
       -DCMAKE_BUILD_TYPE=Release > "$BUILD_DIR/gs_eval_build.log" 2>&1
-cmake --build "$BUILD_DIR" -j"$JOBS" --target gs_eval bench_table1 >> "$BUILD_DIR/gs_eval_build.log" 2>&1
+cmake --build "$BUILD_DIR" -j"$JOBS" --target $TARGETS >> "$BUILD_DIR/gs_eval_build.log" 2>&1
+
+echo "== capture range (seeds 1-6 h off a crease)"
+if [[ $QUICK == 1 ]]; then
+  "$BUILD_DIR/bench/eval/gs_eval" --quick --stages capture --out "$OUT/capture.csv" 2> "$OUT/capture.log"
+else
+  "$BUILD_DIR/bench/eval/gs_eval" --stages capture --out "$OUT/capture.csv" 2> "$OUT/capture.log"
+fi
+tail -1 "$OUT/capture.log"
+if [[ $CAPTURE_ONLY == 1 ]]; then
+  python3 "$ROOT/bench/eval/report.py" "$OUT/sweep.csv" "$OUT/bench_table1.json" "$OUT" | grep -i capture
+  cp "$OUT/capture_range.svg" "$ROOT/docs/img/capture_range.svg"
+  echo "== done in $(( $(date +%s) - T0 )) s: $OUT/results.md"
+  exit 0
+fi
 
 echo "== accuracy sweep"
 if [[ $QUICK == 1 ]]; then
@@ -57,5 +78,6 @@ fi
 
 echo "== tables and plots"
 python3 "$ROOT/bench/eval/report.py" "$OUT/sweep.csv" "$OUT/bench_table1.json" "$OUT"
+[[ $QUICK == 1 ]] || cp "$OUT/capture_range.svg" "$ROOT/docs/img/capture_range.svg"
 
 echo "== done in $(( $(date +%s) - T0 )) s: $OUT/results.md"

@@ -185,10 +185,13 @@ TEST(EnergyField, VertexFieldGradientMatchesFiniteDifferences)
     CMeshO m;
     auto surf = PrepareCube(m, 3, 2);
     const SnakeEnergyField<CMeshO> &f = surf->EnergyField();
-    ASSERT_EQ(f.Levels(), 2);
+    // the default capture pyramid: level 0 and levels reaching 2, 4 and 8 mean edge lengths
+    ASSERT_EQ(f.Levels(), 4);
+    EXPECT_EQ(f.Reach(0), 0);
+    for (int level = 1; level < 4; ++level) EXPECT_NEAR(f.Reach(level), std::ldexp(1.0, level) * surf->MeanEdge(), 1e-12);
     int checked = 0;
     for (int face = 0; face < int(m.face.size()); face += 37)
-        for (int level = 0; level < 2; ++level) {
+        for (int level = 0; level < f.Levels(); ++level) {
             SurfacePoint p(face, vcg::Point3d(0.3, 0.3, 0.4));
             vcg::Point3d g = f.Gradient(level, p);
             for (int k = 1; k < 3; ++k) { // along edge v0 -> vk: E(vk) - E(v0) = g . (pk - p0)

@@ -249,6 +249,7 @@ public:
         auto t0 = clock::now();
         std::vector<vcg::Point3d> before = positions();
         if (runLength < 0 && st.closed) runLength = lastLength = loopLength(before, true);
+        if (stage < 0) stage = startLevel();
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
         else motion.StepProjection(st, stats, frame());
         std::vector<vcg::Point3d> after = positions();
@@ -391,8 +392,9 @@ public:
     double LengthScale() const { return st.unit; }
     const SnakeStats &Stats() const { return stats; }
     bool Converged() const { return stats.converged; }
-    /// 1 while capturing on the coarse (smoothed) energy, 0 while settling on the precise one.
-    int EnergyStage() const { return coarseStage ? 1 : 0; }
+    /// The level of the energy pyramid the snake slithers on: the coarsest while capturing,
+    /// one finer each time its samples sit in wells of the current one, 0 (precise) to settle.
+    int EnergyStage() const { return energyLevel(); }
     Surface &GetSurface() { return *surf; }
     std::shared_ptr<Surface> SurfacePtr() const { return surf; }
     const std::vector<int> &SeedVertices() const { return seedVertices; }
@@ -448,7 +450,8 @@ private:
     std::vector<SurfacePoint> seedPoints;
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
-    bool coarseStage = true;
+    int stage = -1; // energy level (-1: chosen by startLevel() at the next operation)
+    bool settledOutside = false; // settled on a coarse level outside its wells once already
     double runLength = -1, lastLength = -1; // closed snakes: length at the start of the run, after the last operation
     std::deque<double> moveHistory, travelHistory;
     std::deque<std::vector<vcg::Point3d>> posHistory;
@@ -460,7 +463,7 @@ public:
     {
         decltype(st) curve;
         SnakeStats stats;
-        bool coarseStage = true;
+        int stage = -1;
         decltype(moveHistory) moves, travels;
         decltype(posHistory) positions;
         std::vector<int> seeds;
@@ -471,14 +474,14 @@ public:
     };
     Memento Save() const
     {
-        return Memento{st, stats, coarseStage, moveHistory, travelHistory, posHistory, seedVertices, seedPoints,
+        return Memento{st, stats, stage, moveHistory, travelHistory, posHistory, seedVertices, seedPoints,
                        initialSamples, initialPolyline, runLength, lastLength};
     }
     void Restore(const Memento &m)
     {
         st = m.curve;
         stats = m.stats;
-        coarseStage = m.coarseStage;
+        stage = m.stage;
         moveHistory = m.moves;
         travelHistory = m.travels;
         posHistory = m.positions;
@@ -555,6 +558,9 @@ private:
         SnakeMotionFrame f;
         f.level = energyLevel();
         f.unit = st.unit;
+        // a coarse level's slopes are gentler by its reach: scale its force back up
+        const double reach = surf->EnergyField().Reach(f.level);
+        if (reach > 0 && st.unit > 0) f.gain = std::min(16.0, std::max(1.0, reach / st.unit));
         if (st.closed && st.params.balloon != 0) f.outside = orientation();
         return f;
     }
@@ -610,7 +616,57 @@ private:
         if (stats.warnings.size() < 20) stats.warnings.push_back(msg);
     }
 
-    int energyLevel() const { return (coarseStage && surf->Levels() > 1) ? 1 : 0; }
+    int energyLevel() const
+    {
+        const int top = surf->Levels() - 1;
+        return stage < 0 ? top : std::min(stage, top);
+    }
+
+    /// Where a run starts: the finest level whose wells the samples already sit in (on level 0
+    /// also with a mean energy below 0.7: feature-like, not a noise dip), else the coarsest. A
+    /// snake seeded on a feature is not dragged off it by a coarse level, which merges it with
+    /// a parallel feature a few edges away into one well between them.
+    int startLevel() const
+    {
+        const int top = surf->Levels() - 1;
+        for (int l = 0; l < top; ++l) {
+            if (l == 0) {
+                double e = 0;
+                for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
+                if (e >= 0.7 * double(st.samples.size())) continue;
+            }
+            if (inWells(l)) return l;
+        }
+        return top;
+    }
+
+    /// The samples sit in wells of `level`: across the curve, the energy rises on both sides
+    /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
+    bool inWells(int level) const
+    {
+        const MeshType &m = surf->Mesh();
+        const std::vector<vcg::Point3d> p = positions();
+        const int n = int(p.size());
+        int in = 0, count = 0;
+        for (int i = 0; i < n; ++i) {
+            const SnakeSample &s = st.samples[i];
+            if (s.fixed) continue;
+            const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
+            const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
+            const FaceType &f = m.face[s.p.face];
+            const vcg::Point3d c0 = vcg::Point3d::Construct(f.cP(0)); // in double: float squares under/overflow
+            const vcg::Point3d nrm = (vcg::Point3d::Construct(f.cP(1)) - c0) ^ (vcg::Point3d::Construct(f.cP(2)) - c0);
+            vcg::Point3d across = nrm ^ (p[b] - p[a]);
+            if (!(across.Norm() > 0)) continue;
+            across.Normalize();
+            ++count;
+            const double e = surf->EnergyAt(level, s.p), d = st.unit;
+            const SurfacePoint q1 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * d, 3 * d);
+            const SurfacePoint q2 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] - across * d, 3 * d);
+            in += e <= surf->EnergyAt(level, q1) + 1e-6 && e <= surf->EnergyAt(level, q2) + 1e-6;
+        }
+        return count == 0 || in >= 0.9 * count;
+    }
 
     /// How far the curve moved: each new sample's distance to the old curve near it. Sliding
     /// along the curve does not change the curve, so it does not count.
@@ -638,7 +694,8 @@ private:
     void resetRun()
     {
         for (auto &smp : st.samples) smp.trust = 1.0;
-        coarseStage = true;
+        stage = -1;
+        settledOutside = false;
         stats.converged = false;
         stats.stopped = false;
         runLength = -1;
@@ -794,10 +851,28 @@ private:
             oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
         }
         stats.converged = still || oscillating;
-        if (stats.converged && energyLevel() == 1) { // captured: now settle on the precise energy
-            coarseStage = false; // keep the settled step caps: the samples are already close
+        const int level = energyLevel();
+        if (level > 0) {
+            // On a coarse level the snake only has to reach its wells: it steps down to the
+            // next finer level as soon as its samples sit in them and it moves by less than 0.3
+            // units per operation, settled or not (the cusp of a smoothed well keeps it bouncing
+            // by about that much). From level 1 to level 0 it settles first: level 0 is flat
+            // across the chamfer that triangles straddling a crease cut, so samples stay about
+            // where they land in it. Settling outside the wells is a stall: retry once with full
+            // steps, then step down anyway (a snake held by its own tension, or no well there).
+            // Every switch resets the step control.
+            if (((level == 1 ? stats.converged : maxMove < 0.3) && inWells(level)) || (stats.converged && settledOutside)) {
+                stage = level - 1;
+                settledOutside = false;
+            } else if (stats.converged) {
+                settledOutside = true;
+            } else {
+                return;
+            }
+            for (auto &smp : st.samples) smp.trust = 1.0;
             stats.converged = false;
             moveHistory.clear();
+            travelHistory.clear();
             posHistory.clear();
         }
     }

@@ -63,8 +63,9 @@ struct SnakeSample
 {
     SurfacePoint p;
     bool fixed = false;
-    /// Step control (not saved): the move cap of this sample shrinks when an update raised
-    /// its energy and grows back while it goes downhill, so samples settle in wells.
+    /// Step control (not saved): the move cap of this sample halves when an update raised
+    /// its energy by more than the noise (it overshot a well) and grows back otherwise, so
+    /// samples settle in wells; reset to 1 whenever the energy level changes.
     double trust = 1.0;
 };
 
@@ -122,12 +123,14 @@ struct SnakeCurve
     bool IsOpenEnd(int i) const { return !closed && (i == 0 || i == int(samples.size()) - 1); }
 };
 
-/// What one operation needs besides the curve: the energy level, the length unit, and for
+/// What one operation needs besides the curve: the energy level and the gain of its force
+/// (a coarse level's slopes are gentler by its reach: see SnakeEnergyField::Reach), the length unit, and for
 /// the balloon force the side of a closed curve that is outside (+1: the curve runs
 /// counter-clockwise seen from the surface's front, so outside is on its right; 0: no balloon).
 struct SnakeMotionFrame
 {
     int level = 0;
+    double gain = 1;
     double unit = 1;
     double outside = 0;
 };

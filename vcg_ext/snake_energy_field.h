@@ -6,6 +6,9 @@
 #include <memory>
 #include <vector>
 
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+
 #include <vcg/space/point3.h>
 #include <vcg_ext/surface_point.h>
 
@@ -30,11 +33,23 @@ public:
     /// Gradient of the energy at p on `level`: a vector in space, tangent to p's face, in
     /// energy per unit length of the mesh. Zero where the energy is flat or undefined.
     virtual vcg::Point3d Gradient(int level, const SurfacePoint &p) const = 0;
+    /// How far the wells of `level` reach (mesh length units): the distance from a feature
+    /// over which that level still pulls a snake towards it. 0 for a precise level. The
+    /// engine scales a level's force by its reach (its slopes are that much gentler).
+    virtual double Reach(int /*level*/) const { return 0; }
 };
 
 /// The paper's energy (Sec. 6.1): values at the vertices, linear inside each face. Level 0
-/// holds the values as given; level k > 0 holds them smoothed by `rounds[k]` rounds of
-/// Laplacian averaging over mesh edges (Sec. 6.3), each level renormalized to [0,1].
+/// holds the values as given; level k > 0 is a smoothing of them (Sec. 6.3) whose wells reach
+/// `reach[k-1]` (a distance), each level renormalized to [0,1].
+///
+/// The smoothing is by distance, not by edge hops, so that a level reaches as far on a mesh
+/// whose edge lengths vary 20x as on a uniform one: one implicit step of heat diffusion,
+/// (M + r^2 L) u = M e, with L the cotangent Laplacian (weights clamped to [0, 1e3]: an
+/// M-matrix, so u stays within the range of e) and M the lumped vertex areas. Its kernel
+/// decays like exp(-d / r) away from a feature: long tails, so a coarse level still has a
+/// slope several r away, where a Gaussian of the same width is flat. Solved by conjugate
+/// gradients, each level warm-started from the previous one: O(vertices * iterations), once.
 template <class MeshType>
 class VertexEnergyField : public SnakeEnergyField<MeshType>
 {
@@ -42,24 +57,46 @@ public:
     typedef typename MeshType::FaceType FaceType;
 
     /// `energy`: one value in [0,1] per mesh vertex (deleted vertices ignored).
-    /// `rounds`: the extra smoothing rounds of each coarser level, increasing, e.g. {8, 32}.
-    VertexEnergyField(const MeshType &m, std::vector<float> energy, const std::vector<int> &rounds = {})
+    /// `reach`: the reach of each coarser level in mesh length units, increasing, e.g. {2h, 4h, 8h}.
+    VertexEnergyField(const MeshType &m, std::vector<float> energy, const std::vector<double> &reach = {})
         : mesh(m)
     {
         levels.push_back(std::move(energy));
-        std::vector<float> cur = levels[0];
-        int done = 0;
-        for (int r : rounds) {
-            if (r <= done) continue;
-            smooth(cur, r - done);
-            done = r;
-            std::vector<float> lv = cur;
+        reaches.push_back(0);
+        std::vector<double> r;
+        for (double x : reach)
+            if (x > 0 && std::isfinite(x) && (r.empty() || x > r.back())) r.push_back(x);
+        if (r.empty()) return;
+        Eigen::SparseMatrix<double> L;
+        Eigen::VectorXd mass;
+        laplacian(L, mass);
+        const int n = int(levels[0].size());
+        Eigen::VectorXd e0(n), u(n);
+        for (int v = 0; v < n; ++v) e0[v] = levels[0][v];
+        u = e0;
+        const Eigen::VectorXd rhs = mass.cwiseProduct(e0);
+        Eigen::SparseMatrix<double> M(n, n);
+        std::vector<Eigen::Triplet<double>> diag;
+        for (int v = 0; v < n; ++v) diag.emplace_back(v, v, mass[v]);
+        M.setFromTriplets(diag.begin(), diag.end());
+        for (double x : r) {
+            const Eigen::SparseMatrix<double> A = L * (x * x) + M;
+            Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
+            cg.setTolerance(1e-5);
+            cg.setMaxIterations(1000);
+            cg.compute(A);
+            Eigen::VectorXd next = cg.solveWithGuess(rhs, u);
+            if (next.allFinite()) u = next;
+            std::vector<float> lv(n);
+            for (int v = 0; v < n; ++v) lv[v] = mesh.vert[v].IsD() ? levels[0][v] : float(u[v]);
             normalize(lv);
             levels.push_back(std::move(lv));
+            reaches.push_back(x);
         }
     }
 
     int Levels() const override { return int(levels.size()); }
+    double Reach(int level) const override { return reaches[clampLevel(level)]; }
     float VertexValue(int level, int v) const { return levels[clampLevel(level)][v]; }
     const std::vector<float> &LevelValues(int level) const { return levels[clampLevel(level)]; }
 
@@ -89,30 +126,41 @@ public:
 private:
     const MeshType &mesh;
     std::vector<std::vector<float>> levels;
+    std::vector<double> reaches;
 
     int clampLevel(int level) const { return std::max(0, std::min(level, int(levels.size()) - 1)); }
     int idx(const typename MeshType::VertexType *v) const { return int(v - &mesh.vert[0]); }
 
-    /// Sec. 6.3: each round moves every vertex halfway to the mean of its edge neighbours;
-    /// each edge is seen from both faces, so the weights are symmetric.
-    void smooth(std::vector<float> &e, int rounds) const
+    /// The cotangent Laplacian (positive semi-definite, weights clamped to [0, 1e3]) and the
+    /// lumped vertex areas (a floor keeps isolated and degenerate vertices solvable).
+    void laplacian(Eigen::SparseMatrix<double> &L, Eigen::VectorXd &mass) const
     {
-        std::vector<double> sum(e.size());
-        std::vector<int> cnt(e.size());
-        for (int it = 0; it < rounds; ++it) {
-            std::fill(sum.begin(), sum.end(), 0.0);
-            std::fill(cnt.begin(), cnt.end(), 0);
-            for (const auto &f : mesh.face) {
-                if (f.IsD()) continue;
-                for (int k = 0; k < 3; ++k) {
-                    int a = idx(f.cV(k)), b = idx(f.cV((k + 1) % 3));
-                    sum[a] += e[b]; ++cnt[a];
-                    sum[b] += e[a]; ++cnt[b];
-                }
+        const int n = int(mesh.vert.size());
+        std::vector<Eigen::Triplet<double>> t;
+        mass = Eigen::VectorXd::Zero(n);
+        double areaSum = 0;
+        int faces = 0;
+        for (const auto &f : mesh.face) {
+            if (f.IsD()) continue;
+            vcg::Point3d q[3];
+            int vi[3];
+            for (int k = 0; k < 3; ++k) q[k] = vcg::Point3d::Construct(f.cP(k)), vi[k] = idx(f.cV(k));
+            const double a2 = ((q[1] - q[0]) ^ (q[2] - q[0])).Norm();
+            if (!(a2 > 0) || !std::isfinite(a2)) continue;
+            areaSum += a2 / 2, ++faces;
+            for (int k = 0; k < 3; ++k) {
+                mass[vi[k]] += a2 / 6;
+                const int a = vi[(k + 1) % 3], b = vi[(k + 2) % 3];
+                const double c = (q[(k + 1) % 3] - q[k]) * (q[(k + 2) % 3] - q[k]) / a2; // cot of the angle at k
+                const double w = 0.5 * std::min(1e3, std::max(0.0, c));
+                t.emplace_back(a, b, -w), t.emplace_back(b, a, -w);
+                t.emplace_back(a, a, w), t.emplace_back(b, b, w);
             }
-            for (size_t v = 0; v < e.size(); ++v)
-                if (cnt[v] > 0) e[v] = float(0.5 * e[v] + 0.5 * sum[v] / cnt[v]);
         }
+        const double floorArea = faces ? 1e-6 * areaSum / faces : 1.0;
+        for (int v = 0; v < n; ++v) mass[v] = std::max(mass[v], floorArea);
+        L.resize(n, n);
+        L.setFromTriplets(t.begin(), t.end());
     }
     void normalize(std::vector<float> &e) const
     {

@@ -138,13 +138,16 @@ public:
         if (updates > 0) {
             SnakeSpline &spline = splineFor(st.params, k, wholeClosed, fixed);
             Eigen::MatrixXd F(k, 2);
+            std::vector<double> slope(k, 0.0);
             for (int u = 0; u < updates; ++u) {
                 auto tu = clock::now();
                 for (int j = 0; j < k; ++j) {
                     // Only the feature force across the curve: along a feature valley the
                     // energy still varies a little, and its tangential part would slide the
                     // samples towards the strongest spots (corners) and bunch them there.
-                    Eigen::Vector2d f = st.params.externalWeight * gradient(lf[j], B.row(j));
+                    const Eigen::Vector2d g = gradient(lf[j], B.row(j));
+                    slope[j] = g.norm();
+                    Eigen::Vector2d f = st.params.externalWeight * fr.gain * g;
                     Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
                                          X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
                     if (t.norm() > 0) {
@@ -171,13 +174,9 @@ public:
                     if (len == 0) continue;
                     RegionWalk::Result w = RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(),
                                                             X.row(j).transpose() + d, false);
-                    // The energy is piecewise linear, so its force does not vanish at the bottom
-                    // of a well and a sample would bounce across it by |f|/gamma: a move that
-                    // raised the sample's energy halves its step cap, a downhill one restores it.
                     double eOld = surf->EnergyAt(level, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j))));
                     double eNew = surf->EnergyAt(level, SurfacePoint(region.faces[w.face], toPoint(w.bary)));
-                    double &trust = st.samples[seg.idx[j]].trust;
-                    trust = eNew > eOld + 1e-9 ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
+                    UpdateTrust(st.samples[seg.idx[j]].trust, level, eOld, eNew, slope[j] * std::min(len, cap));
                     lf[j] = w.face;
                     B.row(j) = w.bary.transpose();
                     X.row(j) = toPlane(emb, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
@@ -232,14 +231,16 @@ public:
         for (int i = 0; i < n; ++i) fixed[i] = st.samples[i].fixed;
         SnakeSpline &spline = splineFor(st.params, n, st.closed, fixed);
         Eigen::MatrixXd X(n, 3), F(n, 3);
+        std::vector<double> slope(n, 0.0);
         for (int u = 0; u < st.params.updatesPerOperation; ++u) {
             auto tu = clock::now();
             for (int i = 0; i < n; ++i) {
                 vcg::Point3d p = st.samples[i].p.Pd(m) / h;
                 X.row(i) << p[0], p[1], p[2];
                 vcg::Point3d g = surf->EnergyGradient(level, st.samples[i].p) * h; // per edge length
-                F.row(i) << st.params.externalWeight * g[0], st.params.externalWeight * g[1],
-                    st.params.externalWeight * g[2];
+                slope[i] = g.Norm();
+                g *= st.params.externalWeight * fr.gain;
+                F.row(i) << g[0], g[1], g[2];
             }
             for (int i = 0; i < n; ++i) { // the feature force across the curve only (see moveSegment)
                 int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0), b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
@@ -268,15 +269,29 @@ public:
                 vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
                 SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
                                                                        d.norm() * h + 1.5 * h);
-                double &trust = st.samples[i].trust; // same step control as the embedding method
-                trust = surf->EnergyAt(level, np) > surf->EnergyAt(level, st.samples[i].p) + 1e-9
-                            ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
+                UpdateTrust(st.samples[i].trust, level, surf->EnergyAt(level, st.samples[i].p), surf->EnergyAt(level, np),
+                            slope[i] * std::min(len, cap));
                 st.samples[i].p = np;
             }
             stats.updates++;
             stats.msUpdate.push_back(msSince(tu));
         }
         for (auto &g : st.gaps) g = SnakeGap(); // traced lazily by Polyline()
+    }
+
+    /// Step control (both methods). The energy is piecewise linear, so its force does not
+    /// vanish at the bottom of a well and a sample would bounce across it by |f|/gamma: a move
+    /// that raised the sample's energy by more than the noise halves its step cap, any other
+    /// move grows it back. On level 0 (piecewise linear) any rise is an overshoot. On a smooth
+    /// level the noise is a quarter of what the slope predicts for the step (`expected`, slope
+    /// times step length; at least 1e-3 of the energy range): smaller rises come from the
+    /// spline sliding the sample along the curve or from the curvature of the level, not from
+    /// overshooting, and halving on them collapsed the steps on the gentle slopes of the coarse
+    /// levels, so that the snake crawled and the coarse-to-fine switch fired far from the feature.
+    static void UpdateTrust(double &trust, int level, double eOld, double eNew, double expected)
+    {
+        const double noise = level == 0 ? 1e-9 : std::max(1e-3, 0.25 * expected);
+        trust = eNew > eOld + noise ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
     }
 
 private:

@@ -56,17 +56,19 @@ public:
     static int DefaultCaptureSmoothing() { return 8; }
 
     /// Coarse-to-fine capture (beyond the paper): besides the energy E read from quality
-    /// (level 0, precise), level 1 is E smoothed `steps` more rounds (Sec. 6.3) and
-    /// renormalized. Snakes first slither on level 1, whose wide basins capture features a
-    /// few edge lengths away, then settle on level 0, whose narrow wells localize them.
-    /// 0 steps: one level only. O(faces * steps), once. Replaces a field set by SetEnergyField.
+    /// (level 0, precise), a pyramid of smoothings of E (Sec. 6.3, by distance: see
+    /// VertexEnergyField) whose wells reach `steps` mean edge lengths on the coarsest level,
+    /// half that on the next, ... down to about 2 (at most 4 coarse levels). Snakes first
+    /// slither on the coarsest level, whose wide basins capture features several edge lengths
+    /// away, and step down a level each time they sit in its wells, ending on level 0, whose
+    /// narrow wells localize the feature. 0: one level only. Replaces a field set by SetEnergyField.
     void SetCaptureSmoothing(int steps)
     {
         if (steps < 0 || steps > 10000) throw SnakeError("Geometric snake: capture smoothing must be in [0, 10000].");
         captureSteps = steps;
-        std::vector<int> rounds;
-        if (steps > 0) rounds.push_back(steps);
-        field = std::make_shared<VertexEnergyField<MeshType>>(mesh, energy, rounds);
+        std::vector<double> reach;
+        for (double r = steps; r >= 1.5 && reach.size() < 4; r /= 2) reach.insert(reach.begin(), r * meanEdge);
+        field = std::make_shared<VertexEnergyField<MeshType>>(mesh, energy, reach);
     }
     int CaptureSmoothing() const { return captureSteps; }
 

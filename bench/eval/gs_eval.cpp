@@ -2,7 +2,7 @@
 // row per (case, method). Post-processing (tables, plots, headline numbers) is done by
 // bench/eval/report.py; scripts/eval.sh runs both.
 //
-//   gs_eval [--quick] [--stages main,energy,params,fandisk] [--out FILE.csv]
+//   gs_eval [--quick] [--stages main,energy,params,fandisk,capture] [--out FILE.csv]
 //
 // Cases with exact answers: rotated icospheres projected onto a cube, an octahedron and a
 // capped cylinder (tests/generated_meshes.h), with vertex noise, picks placed on one side of
@@ -26,6 +26,7 @@
 #include <set>
 #include <sstream>
 
+#include <capture_cases.h>
 #include <snake_test_util.h>
 
 using namespace vcg::tri;
@@ -449,6 +450,43 @@ void RunFandisk(const std::vector<double> &offsets, const std::vector<Config> &c
     RunMesh(m, "fandisk", 0, 0.0, cases, cfgs);
 }
 
+// ------------------------------------------------------------------ capture range (issue 9)
+// tests/capture_cases.h: offsets 1..6 h, every seed nearer to the target crease than to any
+// other; the generated shapes at subdiv 4 and 5 with noise 0 and 5 %, and fandisk's chains.
+void RunCaptureCases(CMeshO &m, int subdiv, double noise, const std::vector<gs_capture::Case> &cases)
+{
+    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
+    auto surf = std::make_shared<Surface>(m);
+    for (SnakeMethod method : {SnakeMethod::LocalEmbedding, SnakeMethod::Projection3D})
+        for (const gs_capture::Case &c : cases) {
+            Row r;
+            r.stage = "capture", r.shape = c.shape, r.subdiv = subdiv, r.faces = m.fn, r.noise = noise;
+            r.offset = c.offset, r.closed = c.closed, r.method = "snake";
+            r.variant = method == SnakeMethod::LocalEmbedding ? "default" : "projection";
+            r.energy = "normal_variation", r.esmooth = 2, r.csmooth = Surface::DefaultCaptureSmoothing();
+            r.snakeMethod = method == SnakeMethod::LocalEmbedding ? "embedding" : "projection";
+            SnakeParams p;
+            r.alpha = p.alpha, r.beta = p.beta, r.gamma = p.gamma, r.ext = p.externalWeight, r.h = c.h;
+            try {
+                p.method = method;
+                Snake s(surf, p);
+                s.InitFromSeeds(c.seeds, c.closed);
+                r.converged = s.Run(300) ? 1 : 0;
+                r.ms = s.Stats().secondsTotal * 1000.0;
+                r.ops = s.Stats().operations;
+                r.msPerOp = SnakeStats::Median(s.Stats().msOperation);
+                const std::vector<P3> curve = s.PolylinePositions();
+                const gs_capture::Result res = gs_capture::Measure(curve, c.closed, c);
+                r.met.capture = res.capture, r.met.coverage = res.coverage, r.met.meanProj = res.meanDist;
+                r.met.samples = int(curve.size());
+            } catch (const std::exception &e) {
+                std::fprintf(stderr, "  failed %s: %s\n", c.shape.c_str(), e.what());
+                r.met.capture = r.met.coverage = 0, r.met.meanProj = -1;
+            }
+            Write(r);
+        }
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -459,7 +497,7 @@ int main(int argc, char **argv)
         if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out = argv[++i];
         else if (!std::strcmp(argv[i], "--stages") && i + 1 < argc) stages = argv[++i];
-        else { std::fprintf(stderr, "usage: gs_eval [--quick] [--stages main,energy,params,fandisk] [--out F.csv]\n"); return 2; }
+        else { std::fprintf(stderr, "usage: gs_eval [--quick] [--stages main,energy,params,fandisk,capture] [--out F.csv]\n"); return 2; }
     }
     auto has = [&](const char *s) { return ("," + stages + ",").find(std::string(",") + s + ",") != std::string::npos; };
     csv.open(out);
@@ -558,6 +596,33 @@ int main(int argc, char **argv)
         cfgs[2].variant = "default";
         cfgs[3].variant = "projection", cfgs[3].p.method = SnakeMethod::Projection3D;
         RunFandisk(quick ? std::vector<double>{1, 3} : allOffsets, cfgs, quick ? 2 : 4);
+    }
+    // ---- capture: the capture range, offsets 1..6 h (issue 9)
+    if (has("capture")) {
+        const std::vector<double> offsets = quick ? std::vector<double>{2, 4, 6} : std::vector<double>{1, 2, 3, 4, 5, 6};
+        for (auto &shape : shapes)
+            for (int sd : quick ? std::vector<int>{4} : std::vector<int>{4, 5})
+                for (double nz : quick ? std::vector<double>{0} : std::vector<double>{0, 0.05}) {
+                    CMeshO m;
+                    gs_capture::BuildShape(m, shape, sd, nz);
+                    std::vector<gs_capture::Case> cases;
+                    for (bool closed : {false, true})
+                        for (double off : offsets) {
+                            gs_capture::Case c;
+                            if (gs_capture::MakeGeneratedCase(m, shape, closed, off, c)) cases.push_back(c);
+                        }
+                    auto t0 = std::chrono::steady_clock::now();
+                    RunCaptureCases(m, sd, nz, cases);
+                    std::fprintf(stderr, "capture %s subdiv %d noise %.2f: %zu cases, %.1f s\n", shape.c_str(), sd, nz,
+                                 cases.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                }
+        CMeshO m;
+        if (gs_test::LoadMesh(m, std::string(GS_DATA_DIR) + "/fandisk.ply")) {
+            gs_test::EnableSnakeAdjacency(m);
+            auto cases = gs_capture::MakeChainCases(m, offsets, quick ? 2 : 4);
+            RunCaptureCases(m, 0, 0.0, cases);
+            std::fprintf(stderr, "capture fandisk: %zu cases\n", cases.size());
+        }
     }
     std::fprintf(stderr, "gs_eval: %d rows in %.1f s -> %s\n", rowsWritten,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - T0).count(), out.c_str());

@@ -233,6 +233,53 @@ def load_bench(path):
     return out
 
 
+def capture_section(cap, sweep_csv, outdir, headline):
+    """Stage capture (issue 9): captured cases against the offset of the seeds, both methods,
+    beside the same cases run by the engine before the energy pyramid (capture_before.csv,
+    when present next to the sweep: gs_eval --stages capture built on commit 34be4a2, the
+    engine before issue 9's capture work)."""
+    md = ["", "## Capture range: seeds 1-6 h to one side of a crease (stage capture)", "",
+          "tests/capture_cases.h: projected icospheres (subdiv %s, noise %s) and fandisk's sharp-edge chains; every "
+          "seed nearer to the target crease than to any other crease. Captured cases (n):" % (
+              sorted(set(r["subdiv"] for r in cap if r["subdiv"] > 0)), sorted(set(r["noise"] for r in cap))), ""]
+    series = []
+    before_path = os.path.join(os.path.dirname(os.path.abspath(sweep_csv)), "capture_before.csv")
+    sets = [("pyramid", cap)]
+    if os.path.exists(before_path):
+        sets.append(("before (34be4a2)", [r for r in load_sweep(before_path) if r["stage"] == "capture"]))
+    offsets = sorted(set(r["offset"] for r in cap))
+    head = "| engine | method | " + " | ".join("%g h" % o for o in offsets) + " | <= 4 h |"
+    md += [head, "|" + "---|" * (len(offsets) + 3)]
+    for name, rows in sets:
+        for variant, mname in (("default", "embedding"), ("projection", "3D + projection")):
+            sel = [r for r in rows if r["variant"] == variant]
+            if not sel:
+                continue
+            cells = []
+            for o in offsets:
+                x = [r for r in sel if r["offset"] == o]
+                cells.append("%s (%d)" % (pct(mean(ok(r) for r in x)), len(x)) if x else "-")
+            le4 = [r for r in sel if r["offset"] <= 4]
+            md.append("| %s | %s | %s | %s (%d) |" % (name, mname, " | ".join(cells), pct(mean(ok(r) for r in le4)), len(le4)))
+            series.append(("%s, %s" % (mname, name), [(o, 100 * mean(ok(r) for r in sel if r["offset"] == o))
+                                                       for o in offsets if any(r["offset"] == o for r in sel)]))
+            if name == "pyramid":
+                at6 = [r for r in sel if r["offset"] == 6]
+                headline.append("- Capture range, %s: %s of %d cases captured at offsets <= 4 h, %s of %d at 6 h." % (
+                    mname, pct(mean(ok(r) for r in le4)), len(le4), pct(mean(ok(r) for r in at6)), len(at6)))
+    md += ["", "By shape (pyramid, both methods):", ""]
+    g = []
+    for shape in sorted(set(r["shape"].rstrip("0123456789") for r in cap)):
+        for closed in (0, 1):
+            sel = [r for r in cap if r["shape"].rstrip("0123456789") == shape and r["closed"] == closed]
+            if sel:
+                g.append(("%s %s" % (shape, "closed" if closed else "open"), sel))
+    md.append(table(g, "case"))
+    svg_plot(os.path.join(outdir, "capture_range.svg"), "Captured cases vs seed offset (capture range)",
+             "seed offset (edge lengths)", "cases captured (%)", series, ymin=0, ymax=100, xticks=offsets)
+    return md
+
+
 def main():
     sweep_csv, bench_json, outdir = sys.argv[1], sys.argv[2], sys.argv[3]
     os.makedirs(outdir, exist_ok=True)
@@ -339,6 +386,13 @@ def main():
         dflt = [r for r in en if r["variant"] == "normal_variation/e2/c8" and r["noise"] in (0.0, 0.05)]
         groups = [("defaults (from stage energy)", dflt)] + [(k, by[k]) for k in sorted(by)]
         md.append(table(groups, "variant", os.path.join(outdir, "summary_params.csv")))
+
+    cap = [r for r in rows if r["stage"] == "capture"]
+    cap_csv = os.path.join(os.path.dirname(os.path.abspath(sweep_csv)), "capture.csv")
+    if os.path.exists(cap_csv):
+        cap += [r for r in load_sweep(cap_csv) if r["stage"] == "capture"]
+    if cap:
+        md += capture_section(cap, sweep_csv, outdir, headline)
 
     fd = [r for r in rows if r["stage"] == "fandisk"]
     if fd:
