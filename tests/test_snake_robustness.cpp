@@ -215,11 +215,10 @@ TEST_P(BalloonOntoRim, PositiveBalloonExpandsOntoTheRim)
         std::printf("balloon %.2f: %d samples, %d operations, converged %d, stopped %d: distance to the rim mean "
                     "%.3f, p95 %.3f, max %.3f local edges\n", balloon, s.SampleCount(), s.Stats().operations,
                     int(s.Converged()), int(s.Stats().stopped), e.mean, e.p95, e.max);
-        if (balloon == 0) { // tension alone shrinks it, 7 edge lengths from the rim: it stops, warned
-            EXPECT_TRUE(s.Stats().stopped);
-            continue;
-        }
-        // measured: mean 0.11 (embedding) and 0.14 (projection), p95 0.26 and 0.40 local edges
+        // without the balloon, printed only: before the energy pyramid (c9) it collapsed from here and
+        // stopped, warned; the pyramid's coarse levels now capture the rim from 7 h inside as well
+        if (balloon == 0) continue;
+        // measured: mean 0.11 (embedding) and 0.12 (projection), p95 0.24 and 0.35 local edges
         EXPECT_TRUE(s.Converged());
         EXPECT_FALSE(s.Stats().stopped);
         EXPECT_LT(e.mean, 0.2) << "p95 " << e.p95 << " max " << e.max;

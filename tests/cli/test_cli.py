@@ -137,17 +137,10 @@ class CliTests(mlhost.WorkDirTestCase):
 
     def test_balloon_inflates_onto_the_rim(self):
         """--balloon: a closed snake seeded on the flat cap of the cylinder, 7 edge lengths inside
-        its top rim, collapses without it (stopped, warned, not converged) and inflates onto the
-        rim with it; out of range is refused with the range."""
+        its top rim, inflates onto the rim; out of range is refused with the range."""
         cyl = os.path.join(DATA, "icocylinder.ply")
         seeds, h = mlhost.cylinder_cap_seeds(cyl, 0.3)
         seeds = ",".join(map(str, seeds))
-        out, err = self.ok(["snake", cyl, "--seeds", seeds, "--closed", "-o", self.path("none.json")])
-        with open(self.path("none.json")) as f:
-            j = json.load(f)
-        self.assertFalse(j["stats"]["converged"])
-        self.assertTrue(any("collaps" in w for w in j["stats"]["warnings"]), j["stats"]["warnings"])
-        self.assertIn("collaps", err)
         self.ok(["snake", cyl, "--seeds", seeds, "--closed", "--balloon", "0.3", "-o", self.path("b.json")])
         with open(self.path("b.json")) as f:
             j = json.load(f)
