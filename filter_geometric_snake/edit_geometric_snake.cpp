@@ -399,15 +399,16 @@ SnakeParams EditGeometricSnakePlugin::paramsFromDock() const
     p.beta = dock->beta->value();
     p.gamma = dock->gamma->value();
     p.externalWeight = dock->external->value();
+    p.balloon = dock->balloon->value();
     p.spacing = dock->spacing->value();
     return p;
 }
 
 void EditGeometricSnakePlugin::paramsToDock(const SnakeParams &p)
 {
-    QDoubleSpinBox *boxes[] = {dock->alpha, dock->beta, dock->gamma, dock->external, dock->spacing};
-    double vals[] = {p.alpha, p.beta, p.gamma, p.externalWeight, p.spacing};
-    for (int i = 0; i < 5; ++i) {
+    QDoubleSpinBox *boxes[] = {dock->alpha, dock->beta, dock->gamma, dock->external, dock->balloon, dock->spacing};
+    double vals[] = {p.alpha, p.beta, p.gamma, p.externalWeight, p.balloon, p.spacing};
+    for (int i = 0; i < 6; ++i) {
         QSignalBlocker b(boxes[i]);
         boxes[i]->setValue(vals[i]);
     }
@@ -439,7 +440,7 @@ void EditGeometricSnakePlugin::connectDock()
     });
     clicked(d->computeEnergy, [this] { computeEnergy(false); });
     clicked(d->showEnergy, [this] { computeEnergy(true); });
-    for (QDoubleSpinBox *s : {d->alpha, d->beta, d->gamma, d->external, d->spacing})
+    for (QDoubleSpinBox *s : {d->alpha, d->beta, d->gamma, d->external, d->balloon, d->spacing})
         connect(s, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double) { applyParams(); });
     clicked(d->step, [this] { stepOnce(); });
     connect(d->run, &QPushButton::toggled, this, [this](bool on) { setRunning(on); });

@@ -179,11 +179,15 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     beta = spin(0, 10000, 0.05, 3, 0.5, "Beta: rigidity (Eq. 2). Larger = smoother, straighter snake. Range [0, 10000].");
     gamma = spin(0.01, 1e6, 0.1, 2, 1.0, "Gamma: inverse time step (Eq. 4). Larger = smaller, stabler steps. Range (0, 1e6].");
     external = spin(0, 10000, 0.1, 2, 1.0, "External weight: strength of the feature force. Range [0, 10000].");
+    balloon = spin(-10, 10, 0.05, 2, 0.0, "Balloon: closed snakes only, a pressure along the curve's normal. "
+                   "> 0 inflates the snake towards a rim around it, < 0 deflates it; it fades on features. "
+                   "Try 0.1-0.3. Range [-10, 10].");
     spacing = spin(0.05, 1000, 0.1, 2, 1.0, "Sample spacing in mean edge lengths (used when a snake is built). Range [0.05, 1000].");
     lp->addRow("Alpha (tension)", alpha);
     lp->addRow("Beta (rigidity)", beta);
     lp->addRow("Gamma (1/step)", gamma);
     lp->addRow("External weight", external);
+    lp->addRow("Balloon (pressure)", balloon);
     lp->addRow("Spacing (edges)", spacing);
 
     v->addStretch(1);

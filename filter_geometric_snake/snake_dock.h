@@ -39,7 +39,7 @@ public:
     QSpinBox *smoothing;
     QPushButton *computeEnergy, *showEnergy;
     // parameters
-    QDoubleSpinBox *alpha, *beta, *gamma, *external, *spacing;
+    QDoubleSpinBox *alpha, *beta, *gamma, *external, *balloon, *spacing;
     // slithering
     QPushButton *step, *run; // run is checkable: Run / Stop
     QLabel *convergence;

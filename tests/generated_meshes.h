@@ -210,6 +210,41 @@ void MakeBumpPlate(M &m, int n, double size, double height, double sigma)
     detail::Finalize(m);
 }
 
+/// Grid plate (MakeGridPlate) lifted to the height field z = height(x, y): creases where the
+/// field's slope jumps, e.g. a chamfered step or a circular plateau. Its triangles straddle
+/// any crease that is not a mesh line.
+template <class M, class HeightFn>
+void MakeHeightPlate(M &m, int nx, int ny, double cellX, double cellY, double jitter, unsigned seed, HeightFn height)
+{
+    MakeGridPlate(m, nx, ny, cellX, cellY, jitter, seed);
+    for (auto &v : m.vert)
+        if (!v.IsD()) v.P()[2] = typename M::ScalarType(height(double(v.cP()[0]), double(v.cP()[1])));
+    detail::Finalize(m);
+}
+
+/// The rotated icosphere of MakeRotatedIcoCube with its vertices graded before the projection:
+/// a conformal (Moebius) map of the sphere crowds them towards one pole, so edge lengths vary
+/// `ratio` times between the finest and the coarsest part of the cube (like an adaptive remesh).
+template <class M>
+void MakeGradedIcoCube(M &m, int subdiv, double ratio, double half = 1.0)
+{
+    // stereographic projection from the south pole, scaling by k, back: lengths at the north
+    // pole shrink by k and at the south pole grow by k, k^2 = ratio in all
+    const double k = std::sqrt(ratio);
+    detail::MakeProjectedIcosphere(m, subdiv, [half, k](const vcg::Point3d &q) {
+        vcg::Point3d p = q / q.Norm();
+        const double den = 1 + p[2];
+        vcg::Point3d g = p;
+        if (den > 1e-12) {
+            const double X = p[0] / den / k, Y = p[1] / den / k, r2 = X * X + Y * Y;
+            g = vcg::Point3d(2 * X, 2 * Y, 1 - r2) / (1 + r2);
+        }
+        g = detail::Rotate(g); // the fine pole away from any symmetry of the cube
+        const double mx = std::max(std::fabs(g[0]), std::max(std::fabs(g[1]), std::fabs(g[2])));
+        return g / mx * half;
+    });
+}
+
 /// Median length of the mesh's edges (each counted from every face that has it).
 template <class M>
 double MedianEdgeLength(const M &m)

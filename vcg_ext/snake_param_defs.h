@@ -393,6 +393,11 @@ public:
             D::MakeReal("ExternalWeight", "external-weight", "External weight", p.externalWeight, 0, 1e4,
                 "Weight of the feature force (the gradient of the energy, which lies in [0,1]) against "
                 "the spline energy."),
+            D::MakeReal("Balloon", "balloon", "Balloon (pressure)", p.balloon, -10, 10,
+                "Closed snakes: a pressure along the curve's normal, as in image snakes: &gt; 0 inflates the "
+                "snake towards a rim around it, &lt; 0 deflates it towards a feature inside it; 0 (the "
+                "paper) none. It acts where the energy is high and fades on features, so a rim holds a "
+                "gently inflated snake: 0.1-0.3 is a good start. Open snakes ignore it."),
             D::MakeReal("Spacing", "spacing", "Sample spacing", p.spacing, 0.05, 1000,
                 "Distance between snake samples, in mean edge lengths of the mesh."),
             D::MakeInt("MaxOperations", "max-operations", "Max operations", 500, 0, 1000000,
@@ -438,6 +443,7 @@ public:
         p.gamma = v.Real("Gamma");
         p.externalWeight = v.Real("ExternalWeight");
         p.spacing = v.Real("Spacing");
+        p.balloon = v.Real("Balloon");
         p.method = SnakeMethod(v.Enum("Method"));
         p.Validate();
         return p;

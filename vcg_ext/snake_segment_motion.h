@@ -154,7 +154,9 @@ public:
                         f -= f.dot(t) * t;
                         // balloon (beyond the paper, as in image snakes): a pressure along the
                         // outward normal; f is a gradient, so it pushes against it
-                        if (fr.outside != 0) f -= st.params.balloon * fr.outside * Eigen::Vector2d(t.y(), -t.x());
+                        if (fr.outside != 0)
+                            f -= balloonPressure(st.params, fr, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j)))) *
+                                 Eigen::Vector2d(t.y(), -t.x());
                     }
                     F.row(j) = f.transpose();
                 }
@@ -165,10 +167,7 @@ public:
                     if (fixed[j]) continue;
                     Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
                     if (!d.allFinite()) continue;
-                    if (st.IsOpenEnd(seg.idx[j]) && k >= 2) { // open ends move across the curve only
-                        Eigen::Vector2d t = (X.row(j == 0 ? 1 : k - 2) - X.row(j)).transpose();
-                        if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
-                    }
+                    if (st.IsOpenEnd(seg.idx[j])) d = acrossEnd<Eigen::Vector2d>(X, j, d);
                     double len = d.norm();
                     double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(E, lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
@@ -263,7 +262,7 @@ public:
                         const FaceType &ff = m.face[st.samples[i].p.face];
                         vcg::Point3d n = vcg::Point3d::Construct((ff.cP(1) - ff.cP(0)) ^ (ff.cP(2) - ff.cP(0)));
                         Eigen::Vector3d o = t.cross(Eigen::Vector3d(n[0], n[1], n[2]));
-                        if (o.norm() > 0) F.row(i) -= st.params.balloon * fr.outside * o.normalized().transpose();
+                        if (o.norm() > 0) F.row(i) -= balloonPressure(st.params, fr, st.samples[i].p) * o.normalized().transpose();
                     }
                 }
             }
@@ -272,10 +271,7 @@ public:
                 if (fixed[i]) continue;
                 Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
                 if (!d.allFinite()) continue;
-                if (st.IsOpenEnd(i) && n >= 2) {
-                    Eigen::Vector3d t = (X.row(i == 0 ? 1 : n - 2) - X.row(i)).transpose();
-                    if (t.norm() > 0) { t.normalize(); d -= d.dot(t) * t; }
-                }
+                if (st.IsOpenEnd(i)) d = acrossEnd<Eigen::Vector3d>(X, i, d);
                 double len = d.norm();
                 double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
                 if (len > cap) d *= cap / len;
@@ -309,6 +305,35 @@ public:
     }
 
 private:
+    /// The end condition of an open snake: its end samples move only across the curve, so the
+    /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
+    /// "Across" is measured against the chord to the sample 3 places in, not to the next one:
+    /// while the snake still follows its seed path, a staircase of mesh edges, the first chord
+    /// can be 45 degrees off the feature, and moving across it slides the end along the feature.
+    template <class Vec>
+    static Vec acrossEnd(const Eigen::MatrixXd &X, int j, Vec d)
+    {
+        const int k = int(X.rows());
+        if (k < 2) return d;
+        const int q = j == 0 ? std::min(3, k - 1) : std::max(k - 4, 0);
+        Vec t = (X.row(q) - X.row(j)).transpose();
+        if (t.norm() > 0) {
+            t.normalize();
+            d -= d.dot(t) * t;
+        }
+        return d;
+    }
+
+    /// The balloon's pressure at p (signed: > 0 outwards), weighted by the precise (level 0)
+    /// energy there, as the edge-stopping term of geodesic active contours: full on flat ground
+    /// (energy 1), none on a feature (energy 0), so a rim holds a gently inflated snake (a
+    /// constant pressure of 0.4 pushed it past the rim). Level 0, not the coarse level the snake
+    /// may be on: a coarse level is low over a wide band and the pressure would fade early.
+    double balloonPressure(const SnakeParams &params, const SnakeMotionFrame &fr, const SurfacePoint &p) const
+    {
+        return params.balloon * fr.outside * surf->EnergyAt(0, p);
+    }
+
     template <class V>
     static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
 

@@ -74,7 +74,7 @@ class CliTests(mlhost.WorkDirTestCase):
         for cmd in ("energy", "snake", "path"):
             self.assertIn("geometric-snake %s MESH [--" % cmd, out)
         for opt in ("--type", "--smoothing", "--colorize", "--seeds", "--closed", "--cost", "--alpha", "--beta",
-                    "--gamma", "--external-weight", "--spacing", "--max-operations", "--method", "--use-quality",
+                    "--gamma", "--external-weight", "--balloon", "--spacing", "--max-operations", "--method", "--use-quality",
                     "--mesh-out", "--json-log", "--batch", "--jobs", "-o, --output"):
             self.assertIn(opt, out)
         # Defaults and ranges come from the shared definition (the filters' parameters).
@@ -134,6 +134,22 @@ class CliTests(mlhost.WorkDirTestCase):
         nv = int(re.search(r"element vertex (\d+)", head).group(1))
         ne = int(re.search(r"element edge (\d+)", head).group(1))
         self.assertEqual(ne, nv - 1)
+
+    def test_balloon_inflates_onto_the_rim(self):
+        """--balloon: a closed snake seeded on the flat cap of the cylinder, 7 edge lengths inside
+        its top rim, inflates onto the rim; out of range is refused with the range."""
+        cyl = os.path.join(DATA, "icocylinder.ply")
+        seeds, h = mlhost.cylinder_cap_seeds(cyl, 0.3)
+        seeds = ",".join(map(str, seeds))
+        self.ok(["snake", cyl, "--seeds", seeds, "--closed", "--balloon", "0.3", "-o", self.path("b.json")])
+        with open(self.path("b.json")) as f:
+            j = json.load(f)
+        self.assertTrue(j["stats"]["converged"])
+        self.assertAlmostEqual(j["params"]["balloon"], 0.3, places=6)
+        d = sorted(mlhost.cylinder_rim_distance(s["position"]) / h for s in j["samples"])
+        self.assertLess(d[int(0.95 * (len(d) - 1))], 0.6, d)
+        self.assert_error(["snake", cyl, "--seeds", seeds, "--closed", "--balloon", "11", "-o", self.path("x.json")],
+                          r"--balloon must be in \[-10, 10\], not 11", outputs=[self.path("x.json")])
 
     def test_snake_mesh_out_and_use_quality(self):
         """--mesh-out writes the energy in the quality; --use-quality runs on a file's quality."""

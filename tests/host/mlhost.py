@@ -61,7 +61,7 @@ DEFAULTS = {
     FILTER_ENERGY: {"CreaseAngle": 30.0, "MergeDuplicateVertices": False},
     FILTER_SEED_PATH: {"SeedPoints": "", "SeedFile": "", "MergeDuplicateVertices": False},
     FILTER_SNAKE: {"SeedPoints": "", "SeedFile": "", "EnergyType": 0, "CreaseAngle": 30.0,
-                   "MergeDuplicateVertices": False},
+                   "MergeDuplicateVertices": False, "Balloon": 0.0},
 }
 
 
@@ -309,6 +309,31 @@ def cube_edge_seeds(path, offset):
         target = (1.0, 1.0 - offset * h, z)
         seeds.append(min(range(len(pts)), key=lambda i: math.dist(pts[i], target)))
     return seeds, h
+
+
+def cylinder_cap_seeds(path, radius, count=6):
+    """For the rotated icosphere projected onto the capped cylinder x^2 + y^2 <= 1, |z| <= 1
+    (data/icocylinder.ply): the vertices nearest to `count` points on the circle of `radius` on
+    the top cap z = 1, and the mean edge length h. Returns (seeds, h)."""
+    ply = read_ply(path)
+    pts = [(v["x"], v["y"], v["z"]) for v in ply.vertices]
+    lengths = []
+    for f in ply.faces:
+        idx = next(iter(f.values()))
+        for i in range(3):
+            lengths.append(math.dist(pts[idx[i]], pts[idx[(i + 1) % 3]]))
+    h = sum(lengths) / len(lengths)
+    seeds = []
+    for k in range(count):
+        a = 2 * math.pi * k / count
+        target = (radius * math.cos(a), radius * math.sin(a), 1.0)
+        seeds.append(min(range(len(pts)), key=lambda i: math.dist(pts[i], target)))
+    return seeds, h
+
+
+def cylinder_rim_distance(p):
+    """Distance from p to the top rim (radius 1, z = 1) of the capped cylinder."""
+    return math.hypot(math.hypot(p[0], p[1]) - 1.0, p[2] - 1.0)
 
 
 def summary(path):

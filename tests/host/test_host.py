@@ -321,6 +321,22 @@ class HostTests(mlhost.WorkDirTestCase):
         ne = int(re.search(r"element edge (\d+)", head).group(1))
         self.assertEqual(ne, nv - 1)
 
+    def test_snake_balloon_parameter(self):
+        """The Balloon parameter in MeshLab: a closed snake seeded on the cylinder's flat cap, 7 edge
+        lengths inside the top rim, inflates onto the rim with Balloon = 0.3."""
+        cyl = os.path.join(DATA, "icocylinder.ply")
+        seeds, h = mlhost.cylinder_cap_seeds(cyl, 0.3)
+        seeds = ",".join(map(str, seeds))
+        out_json = self.path("balloon.json")
+        rc, out = self.run_script(cyl, [(FILTER_SNAKE, self.snake_params(seeds, closed=True, out=out_json,
+                                                                          Balloon=0.3))])
+        with open(out_json) as f:
+            j = json.load(f)
+        self.assertTrue(j["stats"]["converged"])
+        self.assertAlmostEqual(j["params"]["balloon"], 0.3, places=6)
+        d = sorted(mlhost.cylinder_rim_distance(s["position"]) / h for s in j["samples"])
+        self.assertLess(d[int(0.95 * (len(d) - 1))], 0.6, d)
+
     def test_snake_errors(self):
         seeds, _ = self.icocube_seeds(2.0)
         ok = ",".join(map(str, seeds))
