@@ -224,7 +224,7 @@ public:
             gap.faces.push_back(region.faces[lf[b]]);
             // straight in the plane is not shortest on the surface where the embedding is
             // distorted (slivers): the shortest path through the same faces (path_tighten.h)
-            PathTighten<MeshType>::Tighten(m, st.samples[seg.idx[a]].p, gap.crossings, st.samples[seg.idx[b]].p);
+            PathTighten<MeshType>::Tighten(surf->Mesh(), st.samples[seg.idx[a]].p, gap.crossings, st.samples[seg.idx[b]].p);
             gap.traced = true;
         }
     }
@@ -315,7 +315,7 @@ private:
     {
         const int k = int(X.rows());
         if (k < 2) return d;
-        const int q = j == 0 ? std::min(3, k - 1) : std::max(k - 4, 0);
+        const int q = j == 0 ? 1 : k - 2;
         Vec t = (X.row(q) - X.row(j)).transpose();
         if (t.norm() > 0) {
             t.normalize();
