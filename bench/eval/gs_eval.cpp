@@ -337,47 +337,16 @@ struct Chain
     double length = 0;
 };
 
+/// The sharp-edge chains of tests/capture_cases.h, longest first, with their lengths.
 std::vector<Chain> SharpChains(CMeshO &m, double minAngleDeg)
 {
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    const double cosT = std::cos(minAngleDeg * M_PI / 180.0);
-    std::map<int, std::set<int>> g;
-    for (auto &f : m.face) {
-        if (f.IsD()) continue;
-        for (int k = 0; k < 3; ++k) {
-            CFaceO *o = f.FFp(k);
-            if (o == &f || o < &f) continue;
-            double c = vcg::Point3d::Construct(f.cN()) * vcg::Point3d::Construct(o->cN());
-            if (c < cosT) {
-                int a = int(vcg::tri::Index(m, f.V(k))), b = int(vcg::tri::Index(m, f.V((k + 1) % 3)));
-                g[a].insert(b), g[b].insert(a);
-            }
-        }
-    }
-    std::set<std::pair<int, int>> used;
     std::vector<Chain> chains;
-    for (auto &kv : g) {
-        if (kv.second.size() == 2) continue; // chains start at ends and junctions
-        for (int nb : kv.second) {
-            if (used.count({kv.first, nb})) continue;
-            Chain c;
-            c.verts = {kv.first};
-            int prev = kv.first, cur = nb;
-            used.insert({prev, cur}), used.insert({cur, prev});
-            while (true) {
-                c.verts.push_back(cur);
-                c.length += vcg::Distance(m.vert[prev].cP(), m.vert[cur].cP());
-                if (g[cur].size() != 2) break;
-                int next = -1;
-                for (int x : g[cur]) if (x != prev) next = x;
-                if (next < 0 || used.count({cur, next})) break;
-                used.insert({cur, next}), used.insert({next, cur});
-                prev = cur, cur = next;
-            }
-            chains.push_back(c);
-        }
+    for (auto &v : gs_capture::SharpChains(m, minAngleDeg)) {
+        Chain c;
+        c.verts = v;
+        for (size_t i = 1; i < v.size(); ++i) c.length += vcg::Distance(m.vert[v[i - 1]].cP(), m.vert[v[i]].cP());
+        chains.push_back(c);
     }
-    std::sort(chains.begin(), chains.end(), [](const Chain &a, const Chain &b) { return a.length > b.length; });
     return chains;
 }
 
