@@ -108,8 +108,10 @@ TEST(AnyScale, OpenSnakeOnTheCubeEdgeIsTheSame)
     ExpectSameAtEveryScale(false, SnakeMethod::LocalEmbedding, 0.01); // measured 1e-6 at 1e+-30
 }
 
-// Disabled while the 3D update + projection method's open ends slide (e9's end condition with
-// c9's energy pyramid: 0.055 of the half size apart at 1e30); comes back with that fix (issue 9).
+// Disabled: at 1e+-30 (coordinates rounded to float differently) the 3D update + projection
+// method's open end can stop 0.4-0.6 edge lengths from where it stops at scale 1 (the scale-1
+// run leaves its last sample 0.8 edge lengths off the cube's edge): its ends are not stable
+// enough yet (issue 9). Power-of-two scales give the same snake exactly (checked by hand).
 TEST(AnyScale, DISABLED_ProjectionMethodIsTheSame)
 {
     ExpectSameAtEveryScale(false, SnakeMethod::Projection3D, 0.1); // measured 1e-3 at 1e+-30

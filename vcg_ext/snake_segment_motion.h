@@ -259,8 +259,7 @@ public:
                     t.normalize();
                     F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose();
                     if (fr.outside != 0) { // balloon: outward = tangent x face normal for a counter-clockwise curve
-                        const FaceType &ff = m.face[st.samples[i].p.face];
-                        vcg::Point3d n = vcg::Point3d::Construct((ff.cP(1) - ff.cP(0)) ^ (ff.cP(2) - ff.cP(0)));
+                        const vcg::Point3d n = faceNormal(st.samples[i].p.face);
                         Eigen::Vector3d o = t.cross(Eigen::Vector3d(n[0], n[1], n[2]));
                         if (o.norm() > 0) F.row(i) -= balloonPressure(st.params, fr, st.samples[i].p) * o.normalized().transpose();
                     }
@@ -271,7 +270,17 @@ public:
                 if (fixed[i]) continue;
                 Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
                 if (!d.allFinite()) continue;
-                if (st.IsOpenEnd(i)) d = acrossEnd<Eigen::Vector3d>(X, i, d);
+                if (st.IsOpenEnd(i)) {
+                    d = acrossEnd<Eigen::Vector3d>(X, i, d);
+                    // in space "across the chord" is a plane: keep only the direction across it
+                    // in the sample's tangent plane (the rest slides the end along a crease)
+                    const vcg::Point3d fn = faceNormal(st.samples[i].p.face);
+                    Eigen::Vector3d a = endTangent<Eigen::Vector3d>(X, i).cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
+                    if (a.norm() > 0) {
+                        a.normalize();
+                        d = d.dot(a) * a;
+                    }
+                }
                 double len = d.norm();
                 double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
                 if (len > cap) d *= cap / len;
@@ -279,6 +288,16 @@ public:
                 vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
                 SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
                                                                        d.norm() * h + 1.5 * h);
+                if (st.IsOpenEnd(i)) { // the projection, too, can slide an end along a crease: undo that
+                    Eigen::Vector3d t = endTangent<Eigen::Vector3d>(X, i);
+                    const vcg::Point3d y = np.Pd(m) / h;
+                    const double along = t.norm() > 0 ? (Eigen::Vector3d(y[0], y[1], y[2]) - X.row(i).transpose()).dot(t.normalized()) : 0;
+                    if (along != 0) {
+                        const Eigen::Vector3d q2 = q - along * t.normalized();
+                        np = SurfaceProjection<MeshType>::Closest(*surf, np.face, vcg::Point3d(q2[0] * h, q2[1] * h, q2[2] * h),
+                                                                  d.norm() * h + 1.5 * h + std::abs(along) * h);
+                    }
+                }
                 UpdateTrust(st.samples[i].trust, level, surf->EnergyAt(level, st.samples[i].p), surf->EnergyAt(level, np),
                             slope[i] * std::min(len, cap));
                 st.samples[i].p = np;
@@ -307,21 +326,41 @@ public:
 private:
     /// The end condition of an open snake: its end samples move only across the curve, so the
     /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
-    /// "Across" is measured against the chord to the sample 3 places in, not to the next one:
-    /// while the snake still follows its seed path, a staircase of mesh edges, the first chord
-    /// can be 45 degrees off the feature, and moving across it slides the end along the feature.
+    /// "Across" is measured against the direction over several samples (endTangent), not the
+    /// chord to the next one: while the snake still follows its seed path, a staircase of mesh
+    /// edges, the first chord can be 45 degrees off the feature, and moving across it slides the
+    /// end along the feature.
+    /// A face's normal (not normalized), in double: in float the cross product of a tiny
+    /// mesh's edges underflows (at 1e-30 it is about 1e-62).
+    vcg::Point3d faceNormal(int f) const
+    {
+        const FaceType &ff = surf->Mesh().face[f];
+        const vcg::Point3d a = vcg::Point3d::Construct(ff.cP(0));
+        return (vcg::Point3d::Construct(ff.cP(1)) - a) ^ (vcg::Point3d::Construct(ff.cP(2)) - a);
+    }
     template <class Vec>
     static Vec acrossEnd(const Eigen::MatrixXd &X, int j, Vec d)
     {
-        const int k = int(X.rows());
-        if (k < 2) return d;
-        const int q = j == 0 ? std::min(3, k - 1) : std::max(k - 4, 0);
-        Vec t = (X.row(q) - X.row(j)).transpose();
+        Vec t = endTangent<Vec>(X, j);
         if (t.norm() > 0) {
             t.normalize();
             d -= d.dot(t) * t;
         }
         return d;
+    }
+    /// The curve's direction at end sample j: the one-sided second-order difference over the
+    /// samples q and 2q in (q = 2), exact on a circle's arc. A chord alone is a secant: on a
+    /// curved feature "across" it has a part along the feature, and an end that bounces across
+    /// the feature while the samples settle walks along it (the arc shortens or grows).
+    template <class Vec>
+    static Vec endTangent(const Eigen::MatrixXd &X, int j)
+    {
+        const int k = int(X.rows());
+        if (k < 2) return Vec::Zero();
+        const int s = j == 0 ? 1 : -1;
+        if (k < 5) return (X.row(j + s) - X.row(j)).transpose(); // too short for more: the neighbour
+        const Vec c2 = (X.row(j + 2 * s) - X.row(j)).transpose(), c4 = (X.row(j + 4 * s) - X.row(j)).transpose();
+        return 4 * c2 - c4;
     }
 
     /// The balloon's pressure at p (signed: > 0 outwards), weighted by the precise (level 0)
