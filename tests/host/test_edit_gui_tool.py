@@ -23,69 +23,20 @@ import json
 import math
 import os
 import re
-import shutil
 import signal
-import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import test_edit_gui as g  # noqa: E402  (the MeshLab driver, screenshots, cube geometry)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gui as g  # noqa: E402  (the MeshLab driver, screenshots, cube geometry, the tool's JSON and Log)
+from gui import curve_state, run_lines, samples, snakes_of, wait_for, window_geometry  # noqa: E402
 
-WORK = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "test-artifacts",
-                                                                          "edit_gui_tool"))
-g.WORK = WORK
 check, log, xdo = g.check, g.log, g.xdo
 
 
-def snakes_of(path):
-    try:
-        return json.load(open(path))
-    except (OSError, ValueError):
-        return None
-
-
-def wait_for(pred, timeout, step=0.2):
-    t0 = time.time()
-    while time.time() - t0 < timeout:
-        v = pred()
-        if v:
-            return v
-        time.sleep(step)
-    return pred()
-
-
-def samples(j):
-    s = j["snakes"] if "snakes" in j else [j]
-    return s
-
-
-def curve_state(j):
-    """What the user sees of the snakes: samples (positions, pins), the curves, the counters."""
-    return [(x["closed"], x["samples"], x["polyline"], x["stats"]["operations"], x["stats"]["converged"])
-            for x in samples(j)]
-
-
-def window_geometry(win):
-    out = xdo("getwindowgeometry", win)
-    pos = re.search(r"Position: (-?\d+),(-?\d+)", out)
-    size = re.search(r"Geometry: (\d+)x(\d+)", out)
-    return (int(pos.group(1)), int(pos.group(2)), int(size.group(1)), int(size.group(2))) if pos and size else None
-
-
-def run_lines(text):
-    """The tool's Log lines of finished Runs: (state, operations, compute s, wall s)."""
-    return [(m.group(1), int(m.group(2)), float(m.group(3)), float(m.group(4))) for m in re.finditer(
-        r"Run (converged|stopped) after (\d+) operations: compute ([0-9.]+) s, wall ([0-9.]+) s", text)]
-
-
 def main():
-    if os.path.isdir(WORK):
-        shutil.rmtree(WORK)
-    os.makedirs(WORK)
-    mesh = os.path.join(WORK, "icocube.ply")
-    shutil.copy(os.path.join(g.DATA, "icocube.ply"), mesh)
+    WORK = g.start("edit_gui_tool")
+    mesh = g.copy_data("icocube.ply")
     V, F = g.mesh_ply(mesh)
     h = g.mean_edge(V, F)
     auto = os.path.join(WORK, "auto.json")
@@ -324,12 +275,7 @@ def main():
     finally:
         ml.kill()
 
-    log("artifacts in " + WORK)
-    if g.failures:
-        log("%d check(s) failed" % len(g.failures))
-        return 1
-    log("all checks passed")
-    return 0
+    return g.finish()
 
 
 if __name__ == "__main__":
