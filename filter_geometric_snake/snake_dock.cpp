@@ -300,8 +300,11 @@ StatusLine::StatusLine()
 
 QSize StatusLine::sizeHint() const
 {
-    const int m = 2 * frameWidth() + contentsMargins().top() + contentsMargins().bottom() + 2 * margin();
-    return QSize(100, Lines * fontMetrics().lineSpacing() + m + 2);
+    // as high as Lines lines of text drawn by the label, its frame and a little air
+    const QMargins c = contentsMargins();
+    const int text = fontMetrics().boundingRect(QRect(0, 0, 1000, 1000), Qt::AlignLeft | Qt::AlignTop,
+                                                QString("Ag\n").repeated(Lines - 1) + "Ag").height();
+    return QSize(100, text + c.top() + c.bottom() + 2 * margin() + 6);
 }
 
 QSize StatusLine::minimumSizeHint() const { return QSize(0, sizeHint().height()); }

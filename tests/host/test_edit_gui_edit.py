@@ -33,11 +33,11 @@ from gui import changed, read_bytes, samples, save_dialog, snakes_of, wait_for  
 check, log, xdo = g.check, g.log, g.xdo
 
 # Fixed positions in the 1280x1000 main window with the docked panel (see 20_panel.png)
-PANEL_EXPORT_SELECTED = (976, 612)
-PANEL_EXPORT_ALL = (1170, 612)
-PANEL_ADD_LAYER = (976, 644)
-PANEL_NEW = (976, 539)
-PANEL_LIST = (1073, 509)
+PANEL_EXPORT_SELECTED = (976, 628)
+PANEL_EXPORT_ALL = (1170, 628)
+PANEL_ADD_LAYER = (976, 660)
+PANEL_NEW = (976, 555)
+PANEL_LIST = (1073, 525)
 TAB_LAYERS = (909, 951)
 PANEL_TAB = (1020, 951)
 MENU_DELETE_MESH = (1040, 250)  # in the context menu of the first layer (26_layer_menu.png)

@@ -252,7 +252,7 @@ def main():
 
         # ------------------------------------------------------------ 5. layers
         # (fixed positions in this 1280x1000 window: the panel is the raised tab on the right)
-        xdo("mousemove", 976, 646, "click", 1)  # Output > Add as layer
+        xdo("mousemove", 976, 662, "click", 1)  # Output > Add as layer
         check(wait_for(lambda: "Geometric snake: added layer icocube snake 2" in ml.log_text(), 5),
               "Add as layer adds the selected (second) curve as a new layer")
         xdo("mousemove", 909, 951, "click", 1)  # the Project_1 tab: the layer dialog comes up
