@@ -348,6 +348,24 @@ def magenta_y(img, x):
     return ys
 
 
+def sample_near(img, x, y, r=25):
+    """The nearest sample marker (a white square on the curve) to (x, y) within r px, else (x, y):
+    a press starts a drag only on a sample (the tool picks the nearest one within 20 px)."""
+    best = None
+    for yy in range(max(0, y - r), min(img.h, y + r + 1)):
+        for xx in range(max(0, x - r), min(img.w, x + r + 1)):
+            if min(img.px(xx, yy)) >= 250:
+                d = (xx - x) ** 2 + (yy - y) ** 2
+                if best is None or d < best[0]:
+                    best = (d, xx, yy)
+    return (best[1], best[2]) if best else (x, y)
+
+
+def snake_rows(img, x):
+    """The selected snake's rows at column x, or beside it (a sample's marker may cover the curve)."""
+    return next((ys for ys in (magenta_y(img, x + dx) for dx in (0, 6, -6, 12, -12)) if ys), [])
+
+
 # ------------------------------------------------------------------ the tool's JSON and Log
 def snakes_of(path):
     try:

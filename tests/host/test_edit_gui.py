@@ -21,9 +21,9 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gui import (MAGENTA, Image, MeshLab, check, copy_data, dist_cube_edges, dist_polyline,  # noqa: E402
-                 edge_on_mesh, finish, front_face_extent, gl_box, log, magenta_y, mean_edge, mesh_ply,
-                 nearest_cube_edge, screenshot, start, wait_json, xdo)
+from gui import (MAGENTA, Image, MeshLab, check, copy_data, dist_cube_edges, dist_polyline, drag,  # noqa: E402
+                 edge_on_mesh, finish, front_face_extent, gl_box, log, mean_edge, mesh_ply,
+                 nearest_cube_edge, sample_near, screenshot, snake_rows, start, wait_json, xdo)
 
 
 def main():
@@ -85,17 +85,11 @@ def main():
 
         # drag the middle sample down onto the face and pin it (Edit samples mode is on)
         xm = (left + right) // 2
-        ym = magenta_y(img, xm)
+        ym = snake_rows(img, xm)
         check(bool(ym), "the snake is visible at the middle column")
         if ym:
-            y = ym[len(ym) // 2]
-            xdo("mousemove", xm, y)
-            time.sleep(0.3)
-            xdo("mousedown", 1)
-            for k in range(1, 11):
-                xdo("mousemove", xm, int(y + k * 0.35 * hpx))
-                time.sleep(0.05)
-            xdo("mouseup", 1)
+            x, y = sample_near(img, xm, ym[len(ym) // 2])
+            drag(x, y, 0, 3.5 * hpx, 10)  # 3.5 edge lengths down, in 10 mouse moves
             s = wait_json(auto, lambda s: any(x["fixed"] for x in s[0]["samples"]), 10)
             pins = [x for x in s[0]["samples"] if x["fixed"]]
             check(len(pins) == 1, "dragging a sample pins it (%d pinned)" % len(pins))

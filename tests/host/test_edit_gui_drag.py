@@ -46,7 +46,7 @@ def top_face_height(img, x, y_edge):
 
 def edge_y(img, x):
     """The snake's row at column x (it lies on the front face's top edge)."""
-    ys = next((ys for ys in (g.magenta_y(img, x + dx) for dx in (0, 6, -6, 12, -12)) if ys), [])
+    ys = g.snake_rows(img, x)
     return ys[len(ys) // 2] if ys else None
 
 
@@ -120,7 +120,8 @@ def main():
         log("pixel size %.4f = %.3f h; on the top face a pixel spans %.1f pixel sizes" % (pixel, pixel / h, grazing))
 
         # ---- the drag: 40 px up onto the top face, in 5 mouse moves
-        g.drag(xm, ye, 0, -DRAG_PX, DRAG_EVENTS, pause=0.15)
+        x, y = g.sample_near(img, xm, ye)
+        g.drag(x, y, 0, -DRAG_PX, DRAG_EVENTS, pause=0.15)
         dragged = wait_for(lambda: (lambda j: j if j and any(x["fixed"] for x in samples(j)[0]["samples"]) else None)(
             snakes_of(auto)), 10)
         if not check(bool(dragged), "the drag moves and pins a sample"):

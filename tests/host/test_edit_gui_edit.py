@@ -86,8 +86,7 @@ def main():
         # ------------------------------------------------------------ 1. keys: insert, pin, delete
         time.sleep(1.0)
         img = g.Image(g.screenshot("21_built.png"))
-        # (a sample's white marker may cover the curve at the middle column: look beside it too)
-        ym = next((y for y in (g.magenta_y(img, xm + dx) for dx in (0, 6, -6, 12, -12)) if y), [])
+        ym = g.snake_rows(img, xm)
         check(bool(ym), "the snake is drawn")
         xdo("mousemove", xm, ym[len(ym) // 2] if ym else int(top + 2.2 * hpx), "click", 1)  # selects a sample
         time.sleep(0.5)

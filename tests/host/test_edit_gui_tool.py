@@ -82,8 +82,7 @@ def main():
         n0 = len(samples(s)[0]["samples"])
         time.sleep(1.0)
         img = g.Image(g.screenshot("11_built.png"))
-        # (a sample's white marker may cover the curve at the middle column: look beside it too)
-        ym = next((y for y in (g.magenta_y(img, xm + dx) for dx in (0, 6, -6, 12, -12)) if y), [])
+        ym = g.snake_rows(img, xm)
         check(bool(ym), "the snake is drawn")
         ysnake = ym[len(ym) // 2] if ym else ys
         xdo("mousemove", xm, ysnake, "click", 1)  # selects the sample under the cursor
@@ -136,19 +135,15 @@ def main():
         converged = snakes_of(auto)
         g.screenshot("14_converged.png")
         img = g.Image(g.screenshot("14_converged.png"))
-        ym = g.magenta_y(img, xm)
+        ym = g.snake_rows(img, xm)
         if ym:
-            y = ym[len(ym) // 2]
-            xdo("mousemove", xm, y)
-            time.sleep(0.3)
-            xdo("mousedown", 1)
-            for k in range(1, 11):
-                xdo("mousemove", xm, int(y + k * 0.35 * hpx))
-                time.sleep(0.05)
-            xdo("mouseup", 1)
+            x, y = g.sample_near(img, xm, ym[len(ym) // 2])
+            log("dragging the sample at %d,%d down by %.0f px" % (x, y, 3.5 * hpx))
+            g.drag(x, y, 0, 3.5 * hpx, 10)  # 3.5 edge lengths down, in 10 mouse moves
         dragged = wait_for(lambda: (lambda j: j if j and any(x["fixed"] for x in samples(j)[0]["samples"]) else None)(
             snakes_of(auto)), 10)
         check(bool(dragged), "the drag moves and pins a sample")
+        g.screenshot("14b_dragged.png")
         xdo("key", "r")
         rerun = wait_for(lambda: (lambda j: j if j and samples(j)[0]["stats"]["converged"] else None)(snakes_of(auto)), 60)
         check(bool(rerun), "the second Run converges")
@@ -164,7 +159,7 @@ def main():
             json.dump(st, open(os.path.join(WORK, "undo%d.json" % (k + 1)), "w"), indent=1)
         for name, st in (("converged", converged), ("dragged", dragged), ("rerun", rerun)):
             json.dump(st, open(os.path.join(WORK, name + ".json"), "w"), indent=1)
-        if ok:
+        if ok and dragged:
             check(curve_state(states[0]) == curve_state(dragged), "Ctrl+Z 1 takes back the whole second Run")
             check(curve_state(states[1]) == curve_state(converged),
                   "Ctrl+Z 2 takes back the drag: the JSON equals the converged state before the drag")
