@@ -38,6 +38,7 @@
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/seed_path.h>
+#include <vcg_ext/snake_batch.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/seed_points.h>
@@ -480,34 +481,30 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
 
     const auto t0 = Clock::now();
     Controller ctl(m);
-    if (useQuality) {
-        ctl.UseQualityAsEnergy();
-    } else {
-        ctl.SetCreaseAngle(v.Real("CreaseAngle"));
-        ctl.SetEnergySettings(FeatureEnergyType(energyType), SnakeParamDefs::DefaultSmoothingSteps());
-    }
-    ctl.SetParams(p);
-    if (seedPts.empty()) {
-        ctl.SetSeeds(seeds);
-        ctl.CloseSeeds(closed);
-    } else {
-        ctl.CreateSnakeFromSeedPoints(Snap(job, m, seedPts, closed, source).points, closed);
-    }
-    json warnings = json::array();
-    for (const auto &w : ctl.EnergyWarnings()) warnings.push_back(w); // as the filter
-    GeometricSnake<CMeshO> &snake = ctl.Get(0);
+    SnakeBatch<CMeshO>::Settings b;
+    b.useQuality = useQuality;
+    b.energy = FeatureEnergyType(energyType);
+    b.smoothingSteps = SnakeParamDefs::DefaultSmoothingSteps();
+    b.creaseAngle = v.Real("CreaseAngle");
+    b.params = p;
+    b.seeds = seeds;
+    b.closed = closed;
+    b.maxOperations = maxOps;
+    if (!seedPts.empty()) b.seedPoints = Snap(job, m, seedPts, closed, source).points;
+    SnakeBatch<CMeshO>::Result res;
     {
         Progress bar(job.progress);
-        snake.Run(maxOps, [&](int op) {
+        res = SnakeBatch<CMeshO>::Run(ctl, b, [&](int op) {
             bar.Show(maxOps > 0 ? double(op + 1) / maxOps : 1.0, "snake");
             return true;
         });
     }
+    GeometricSnake<CMeshO> &snake = ctl.Get(0);
     const SnakeStats &st = snake.Stats();
-    const std::vector<vcg::Point3d> curve = snake.PolylinePositions();
-    for (const auto &x : curve)
-        if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-            throw SnakeError("The snake produced invalid coordinates (please report this with the mesh).");
+    json warnings = json::array(); // as the filter's Log
+    for (const auto &w : res.energyWarnings) warnings.push_back(w);
+    for (const auto &w : res.runWarnings)
+        warnings.push_back(w.second > 1 ? Fmt("%s (%d times in this run)", w.first.c_str(), w.second) : w.first);
     if (!job.output.empty()) {
         std::vector<GeometricSnake<CMeshO> *> list{&snake};
         SnakeIO<CMeshO>::WriteCurves(job.output, list, Keep(job));
@@ -516,10 +513,6 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
         namespace io = vcg::tri::io;
         SaveMeshPly(m, job.meshOut, io::Mask::IOM_VERTQUALITY | (mask & io::Mask::IOM_VERTCOLOR));
     }
-    double len = 0;
-    for (size_t i = 1; i < curve.size(); ++i) len += (curve[i] - curve[i - 1]).Norm();
-    if (closed && curve.size() > 2) len += (curve.front() - curve.back()).Norm();
-    for (const auto &w : st.warnings) warnings.push_back(w);
 
     r["closed"] = closed;
     r["method"] = v.Def("Method").choices[int(p.method)].key;
@@ -534,13 +527,14 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     r["ms_per_embedding"] = SnakeStats::Median(st.msEmbedding);
     r["ms_per_update"] = SnakeStats::Median(st.msUpdate);
     r["region_failures"] = st.regionFailures;
-    r["curve_points"] = curve.size();
-    r["length"] = len;
+    r["curve_points"] = res.curve.size();
+    r["length"] = res.length;
     r["warnings"] = warnings;
     Info(job, Fmt("Geometric snake (%s, %s): %d samples, %d operations, %s, curve of %d points and length %g, "
                   "%.1f ms.", closed ? "closed" : "open", p.method == SnakeMethod::LocalEmbedding ? "local embedding"
                   : "3D update + projection", snake.SampleCount(), st.operations,
-                  st.converged ? "converged" : "NOT converged (raise --max-operations?)", int(curve.size()), len,
+                  st.converged ? "converged" : st.stopped ? "STOPPED (see the warning)" : "NOT converged (raise --max-operations?)",
+                  int(res.curve.size()), res.length,
                   Since(t0) * 1e3));
     for (const auto &w : warnings) Info(job, "warning: " + w.get<std::string>());
     if (!job.output.empty()) Info(job, "Wrote " + job.output + ".");

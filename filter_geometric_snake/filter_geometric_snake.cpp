@@ -23,6 +23,7 @@
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/seed_path.h>
 #include <vcg_ext/seed_points.h>
+#include <vcg_ext/snake_batch.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/safe_file_write.h>
@@ -551,27 +552,25 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	QElapsedTimer timer;
 	timer.start();
 	Controller ctl(m.cm);
-	if (useQuality) {
-		ctl.UseQualityAsEnergy();
-	} else {
-		ctl.SetCreaseAngle(v.Real("CreaseAngle"));
-		ctl.SetEnergySettings(tri::FeatureEnergyType(energyType), kDefaultSmoothingSteps);
-		Log("Geometric snake: %s energy (%d smoothing steps) stored in the vertex quality.",
-		    tri::FeatureEnergyName(tri::FeatureEnergyType(energyType)), kDefaultSmoothingSteps);
-	}
-	ctl.SetParams(p);
-	if (seedPts.empty()) {
-		ctl.SetSeeds(seeds);
-		ctl.CloseSeeds(closed);
-	} else {
+	tri::SnakeBatch<CMeshO>::Settings b;
+	b.useQuality = useQuality;
+	b.energy = tri::FeatureEnergyType(energyType);
+	b.smoothingSteps = kDefaultSmoothingSteps;
+	b.creaseAngle = v.Real("CreaseAngle");
+	b.params = p;
+	b.seeds = seeds;
+	b.closed = closed;
+	b.maxOperations = maxOps;
+	if (!seedPts.empty()) {
 		const auto snap = tri::SeedPointSnap<CMeshO>::Snap(m.cm, seedPts, closed ? 3 : 2, closed);
 		logSnap(snap, pointSource);
-		ctl.CreateSnakeFromSeedPoints(snap.points, closed);
+		b.seedPoints = snap.points;
 	}
-	for (const auto &w : ctl.EnergyWarnings()) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
-	tri::GeometricSnake<CMeshO> &snake = ctl.Get(0);
+	if (!useQuality)
+		Log("Geometric snake: %s energy (%d smoothing steps) stored in the vertex quality.",
+		    tri::FeatureEnergyName(b.energy), kDefaultSmoothingSteps);
 	int shown = -1;
-	snake.Run(maxOps, [&](int op) {
+	const tri::SnakeBatch<CMeshO>::Result res = tri::SnakeBatch<CMeshO>::Run(ctl, b, [&](int op) {
 		const int pct = maxOps > 0 ? std::min(99, 100 * (op + 1) / maxOps) : 99;
 		if (cb != nullptr && pct / 10 != shown) { // meshlabserver prints every call: every 10 %
 			shown = pct / 10;
@@ -579,18 +578,16 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 		}
 		return true;
 	});
+	for (const auto &w : res.energyWarnings) Log(GLLogStream::WARNING, "Geometric snake: %s", w.c_str());
+	tri::GeometricSnake<CMeshO> &snake = ctl.Get(0);
 	const tri::SnakeStats &st = snake.Stats();
-	std::vector<vcg::Point3d> curve = snake.PolylinePositions();
-	for (const auto &x : curve)
-		if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-			return fail("The snake produced invalid coordinates (please report this with the mesh).");
 
 	if (!out.empty()) {
 		std::vector<tri::GeometricSnake<CMeshO> *> list{&snake};
 		tri::SnakeIO<CMeshO>::WriteCurves(out, list, keep);
 		Log("Wrote the curve to %s.", out.c_str());
 	}
-	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {curve}, {closed});
+	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {res.curve}, {closed});
 
 	// Keep the snake on the mesh with any the user already has there: curves are never lost.
 	nlohmann::json session = ctl.ToJson();
@@ -610,26 +607,17 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	}
 	tri::SnakeMeshStore<CMeshO>::Set(m.cm, session.dump());
 
-	double len = 0;
-	for (size_t i = 1; i < curve.size(); ++i) len += (curve[i] - curve[i - 1]).Norm();
 	Log("Geometric snake (%s, %s): %d samples, %d operations, %s, curve of %d points and length %g.",
 	    closed ? "closed" : "open", method == 0 ? "local embedding" : "3D update + projection", snake.SampleCount(),
 	    st.operations, st.converged ? "converged" : st.stopped ? "STOPPED (see the warning)" : "NOT converged (raise MaxOperations?)",
-	    int(curve.size()), len);
+	    int(res.curve.size()), res.length);
 	Log("Geometric snake length scale: %g (median edge length along the seed path; spacing, step caps and tolerances "
 	    "are measured in it; the mesh's mean edge length is %g).", snake.LengthScale(), ctl.EnsureSurface().MeanEdge());
 	Log("Geometric snake timing: %.1f ms total, median %.3f ms per operation, %.3f ms per embedding, %.4f ms per "
 	    "update (%d embeddings, %d updates).", timer.nsecsElapsed() * 1e-6,
 	    tri::SnakeStats::Median(st.msOperation), tri::SnakeStats::Median(st.msEmbedding),
 	    tri::SnakeStats::Median(st.msUpdate), st.embeddings, st.updates);
-	// Each distinct warning once per run (a frozen segment repeats it at every operation).
-	std::vector<std::pair<std::string, int>> distinct;
-	for (const auto &w : st.warnings) {
-		auto it = std::find_if(distinct.begin(), distinct.end(), [&](const std::pair<std::string, int> &d) { return d.first == w; });
-		if (it == distinct.end()) distinct.push_back({w, 1});
-		else ++it->second;
-	}
-	for (const auto &d : distinct)
+	for (const auto &d : res.runWarnings)
 		Log(GLLogStream::WARNING, "Geometric snake: %s%s", d.first.c_str(),
 		    d.second > 1 ? qUtf8Printable(QString(" (%1 times in this run)").arg(d.second)) : "");
 	return true;

@@ -348,7 +348,7 @@ private:
     {
         const int k = int(X.rows());
         if (k < 2) return d;
-        const int q = j == 0 ? 1 : k - 2;
+        const int q = j == 0 ? std::min(3, k - 1) : std::max(k - 4, 0);
         Vec t = (X.row(q) - X.row(j)).transpose();
         if (t.norm() > 0) {
             t.normalize();

@@ -185,14 +185,22 @@ def main():
         converged = snakes_of(auto)
         g.screenshot("14_converged.png")
         img = g.Image(g.screenshot("14_converged.png"))
-        ym = g.magenta_y(img, xm)
+        # grab the sample marker (white) on the curve nearest the middle column: the tool picks
+        # samples within 20 px, and where they sit along the curve depends on the run
+        ym, xd = [], xm
+        for dx in sorted(range(-60, 61), key=abs):
+            curve = g.magenta_y(img, xm + dx) or g.magenta_y(img, xm + dx + 4) or g.magenta_y(img, xm + dx - 4)
+            white = [y for y in range(curve[0] - 6, curve[-1] + 7) if min(img.px(xm + dx, y)) > 235] if curve else []
+            if len(white) >= 3:
+                xd, ym = xm + dx, white
+                break
         if ym:
             y = ym[len(ym) // 2]
-            xdo("mousemove", xm, y)
+            xdo("mousemove", xd, y)
             time.sleep(0.3)
             xdo("mousedown", 1)
             for k in range(1, 11):
-                xdo("mousemove", xm, int(y + k * 0.35 * hpx))
+                xdo("mousemove", xd, int(y + k * 0.35 * hpx))
                 time.sleep(0.05)
             xdo("mouseup", 1)
         dragged = wait_for(lambda: (lambda j: j if j and any(x["fixed"] for x in samples(j)[0]["samples"]) else None)(
