@@ -62,7 +62,7 @@ class GradedCube : public ::testing::TestWithParam<ScaleCase> {};
 // The cube's edge lengths vary 20x (5th to 95th percentile: the 100x conformal grading spreads
 // over the surface). The snake runs along the cube edge whose mesh grades the most along it
 // (about 3x between its ends), so one snake sees fine and coarse triangles at once.
-// DISABLED: fails (issue 9): final p95 0.42-1.14 local edges, the worst samples at the coarse
+// DISABLED: fails (issue 9): final p95 0.21-1.08 local edges, the worst samples at the coarse
 // end. The snake has one length unit (the median edge of its seed path, here from the fine
 // part), so at the coarse end the seeds lie 3 local edges but about 12 units off, beyond the
 // pyramid's reach in units; a per-sample length scale is the missing piece.

@@ -194,10 +194,10 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<EndCase> &i) { return std::string(i.param.name); });
 
 // Observed: on the chamfer's straight crease, on level 0 alone (no coarse level to mislead
-// it), the final curve turned by 12-29 degrees between consecutive segments: level 0 is linear
+// it), the final curve turned by 11-18 degrees between consecutive segments: level 0 is linear
 // in each face, its V-shaped wells pull every sample with full force onto the mesh's zigzag
-// fold line, and beta cannot straighten it. The slope across the curve is now averaged over a
-// triangle's width (snake_segment_motion.h, acrossSlope).
+// fold line, and beta cannot straighten it. The slope across the curve is now averaged over about
+// one and a half triangles (snake_segment_motion.h, acrossSlope).
 class StraightCreaseSmooth : public ::testing::TestWithParam<EndCase> {};
 
 TEST_P(StraightCreaseSmooth, TurnsStayBelowTenDegrees)
