@@ -206,15 +206,15 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         restoredFromFile = true;
     }
     if (side.unreadable) sidecarProblem = QString("Geometric snake: %1").arg(QString::fromStdString(side.message));
-    if (ctl->SnakeCount() > 0) {
+    // a restored session brings its parameters even when it holds only seeds so far
+    if (ctl->SnakeCount() > 0 || side.restored || fromStore) {
         paramsToDock(ctl->Params());
-        dock->editMode->setChecked(true);
         dock->energyType->setCurrentIndex(int(ctl->EnergyType()));
         dock->smoothing->setValue(ctl->EnergySmoothing());
     } else {
-        dock->seedMode->setChecked(true);
         try { ctl->SetParams(paramsFromDock()); } catch (const SnakeError &) {}
     }
+    (ctl->SnakeCount() > 0 ? dock->editMode : dock->seedMode)->setChecked(true);
     refreshDock();
     if (!sidecarProblem.isEmpty()) report(sidecarProblem, true); // stays in the status line, and goes to the Log
     else if (!restored.isEmpty()) report(restored, false);

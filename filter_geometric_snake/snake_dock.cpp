@@ -6,7 +6,9 @@
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QResizeEvent>
 #include <QScrollArea>
+#include <QTextLayout>
 #include <QVBoxLayout>
 #include <QPointer>
 #include <QTimer>
@@ -62,14 +64,7 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     convergence->setToolTip("Convergence indicator of the selected snake");
     hm->addWidget(convergence);
     top->addLayout(hm);
-    status = new QLabel;
-    status->setWordWrap(true);
-    status->setMinimumHeight(40);
-    status->setAlignment(Qt::AlignLeft | Qt::AlignTop);
-    status->setFrameStyle(QFrame::StyledPanel | QFrame::Sunken);
-    status->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    status->setToolTip("Status: samples, the running operation count, largest move and energy stage;\n"
-                       "errors in red (also in MeshLab's Log)");
+    status = new StatusLine;
     top->addWidget(status);
     QHBoxLayout *hb = new QHBoxLayout;
     run = button("Run", "Run operations until the snake converges; click again (or Esc) to stop.\n"
@@ -290,7 +285,75 @@ bool SnakeDock::eventFilter(QObject *o, QEvent *e)
 void SnakeDock::setStatus(const QString &text, bool error)
 {
     status->setStyleSheet(error ? "color: #b00000;" : "");
-    status->setText(text);
+    status->setMessage(text);
+}
+
+// ---------------------------------------------------------------------- StatusLine
+StatusLine::StatusLine()
+{
+    setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    setFrameStyle(QFrame::StyledPanel | QFrame::Sunken);
+    setTextInteractionFlags(Qt::TextSelectableByMouse);
+    setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed); // its text never sets the dock's width
+    setMessage("");
+}
+
+QSize StatusLine::sizeHint() const
+{
+    // as high as Lines lines of text drawn by the label, its frame and a little air
+    const QMargins c = contentsMargins();
+    const int text = fontMetrics().boundingRect(QRect(0, 0, 1000, 1000), Qt::AlignLeft | Qt::AlignTop,
+                                                QString("Ag\n").repeated(Lines - 1) + "Ag").height();
+    return QSize(100, text + c.top() + c.bottom() + 2 * margin() + 6);
+}
+
+QSize StatusLine::minimumSizeHint() const { return QSize(0, sizeHint().height()); }
+
+void StatusLine::setMessage(const QString &text)
+{
+    full = text;
+    setToolTip(text.isEmpty() ? QString("Status: samples, the running operation count, largest move and energy stage;\n"
+                                        "errors in red (also in MeshLab's Log)")
+                              : text);
+    setFixedHeight(sizeHint().height());
+    relayout();
+}
+
+void StatusLine::resizeEvent(QResizeEvent *e)
+{
+    QLabel::resizeEvent(e);
+    relayout();
+}
+
+// Wraps the message at word boundaries (anywhere inside a word longer than the line) into at
+// most Lines lines of the current width; the last one is elided.
+void StatusLine::relayout()
+{
+    const int w = contentsRect().width() - 2 * margin() - 2;
+    QString text = full;
+    text.replace('\n', ' ');
+    if (w <= 20) {
+        QLabel::setText(text);
+        return;
+    }
+    QTextLayout layout(text, font());
+    QTextOption opt;
+    opt.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    layout.setTextOption(opt);
+    layout.beginLayout();
+    QStringList lines;
+    for (int i = 0; i < Lines; ++i) {
+        QTextLine line = layout.createLine();
+        if (!line.isValid()) break;
+        line.setLineWidth(w);
+        if (i == Lines - 1) {
+            lines << fontMetrics().elidedText(text.mid(line.textStart()).trimmed(), Qt::ElideRight, w);
+            break;
+        }
+        lines << text.mid(line.textStart(), line.textLength()).trimmed();
+    }
+    layout.endLayout();
+    QLabel::setText(lines.join('\n'));
 }
 
 void SnakeDock::setConvergence(int state)

@@ -18,6 +18,28 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+/// The panel's status line: a fixed three lines, however long the message (a path has no spaces
+/// to wrap at). What does not fit ends in an ellipsis; the whole message is its tooltip (and
+/// MeshLab's Log has it). Its size never depends on the text, so a long message neither moves
+/// the buttons below it nor widens the dock.
+class StatusLine : public QLabel
+{
+public:
+    static constexpr int Lines = 3;
+    StatusLine();
+    void setMessage(const QString &text);
+    const QString &message() const { return full; }
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+
+protected:
+    void resizeEvent(QResizeEvent *e) override;
+
+private:
+    void relayout();
+    QString full;
+};
+
 class SnakeDock : public QDockWidget
 {
     Q_OBJECT
@@ -52,7 +74,7 @@ public:
     // output
     QPushButton *exportSelected, *exportAll, *addLayer, *saveSession;
     // status
-    QLabel *status;
+    StatusLine *status;
 
     void setStatus(const QString &text, bool error = false);
     void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running

@@ -262,11 +262,13 @@ public:
         double maxMove = curveMove(before, after) / st.unit;
         stats.lastMaxMove = maxMove;
         stats.operations++;
+        updateConvergence(maxMove, after);
+        checkCollapse(after);
+        // the operation's time includes the convergence and well tests (issue 12: they are
+        // part of what one operation costs)
         double ms = msSince(t0);
         stats.msOperation.push_back(ms);
         stats.secondsTotal += ms / 1000.0;
-        updateConvergence(maxMove, after);
-        checkCollapse(after);
         return maxMove;
     }
 
@@ -648,12 +650,15 @@ private:
 
     /// The samples sit in wells of `level`: across the curve, the energy rises on both sides
     /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
+    /// The probes stop as soon as the answer is known (it runs after most operations on a
+    /// coarse level: two projections per sample cost more than the operation itself).
     bool inWells(int level) const
     {
         const MeshType &m = surf->Mesh();
         const std::vector<vcg::Point3d> p = positions();
         const int n = int(p.size());
-        int in = 0, count = 0;
+        std::vector<std::pair<int, vcg::Point3d>> probes; // free samples with a direction across the curve
+        probes.reserve(n);
         for (int i = 0; i < n; ++i) {
             const SnakeSample &s = st.samples[i];
             if (s.fixed) continue;
@@ -664,14 +669,24 @@ private:
             const vcg::Point3d nrm = (vcg::Point3d::Construct(f.cP(1)) - c0) ^ (vcg::Point3d::Construct(f.cP(2)) - c0);
             vcg::Point3d across = nrm ^ (p[b] - p[a]);
             if (!(across.Norm() > 0)) continue;
-            across.Normalize();
-            ++count;
+            probes.emplace_back(i, across.Normalize());
+        }
+        const int count = int(probes.size());
+        const double need = 0.9 * count;
+        int in = 0;
+        for (int k = 0; k < count; ++k) {
+            if (in >= need) return true;
+            if (in + (count - k) < need) return false;
+            const int i = probes[k].first;
+            const vcg::Point3d &across = probes[k].second;
+            const SnakeSample &s = st.samples[i];
             const double e = surf->EnergyAt(level, s.p), d = st.unit;
             const SurfacePoint q1 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * d, 3 * d);
+            if (!(e <= surf->EnergyAt(level, q1) + 1e-6)) continue;
             const SurfacePoint q2 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] - across * d, 3 * d);
-            in += e <= surf->EnergyAt(level, q1) + 1e-6 && e <= surf->EnergyAt(level, q2) + 1e-6;
+            in += e <= surf->EnergyAt(level, q2) + 1e-6;
         }
-        return count == 0 || in >= 0.9 * count;
+        return count == 0 || in >= need;
     }
 
     /// How far the curve moved: each new sample's distance to the old curve near it. Sliding

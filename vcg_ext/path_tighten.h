@@ -70,7 +70,10 @@ public:
         }
         double scale = (pb - pa).Norm();
         for (int i = 0; i < n; ++i) scale = std::max(scale, (e1[i] - e0[i]).Norm());
-        const double eps = 1e-12 * std::max(scale, 1e-300);
+        // to 1e-7 of the strip's size, the precision of float coordinates (1e-12 took a fifth
+        // of a 300-sample operation: this runs for every traced gap of every operation, and a
+        // path near a vertex converges slowly)
+        const double eps = 1e-7 * std::max(scale, 1e-300);
         const int sweeps = 4 * n + 50;
         for (int it = 0; it < sweeps; ++it) {
             double moved = 0;

@@ -16,317 +16,19 @@ import json
 import math
 import os
 import re
-import shutil
 import signal
-import struct
-import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DATA = os.environ.get("GS_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
-WORK = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "test-artifacts", "edit_gui"))
-MAGENTA = (255, 0, 255)  # the selected snake's colour (edit_geometric_snake.cpp)
-failures = []
-
-
-def log(*a):
-    print(*a, flush=True)
-
-
-def check(cond, what):
-    log(("PASS " if cond else "FAIL ") + what)
-    if not cond:
-        failures.append(what)
-    return cond
-
-
-def xdo(*args):
-    return subprocess.run(["xdotool"] + [str(a) for a in args], capture_output=True, text=True).stdout.strip()
-
-
-def screenshot(name):
-    path = os.path.join(WORK, name)
-    subprocess.run(["import", "-window", "root", path], check=True)
-    return path
-
-
-class Image:
-    """A screenshot as RGB bytes (via ImageMagick's PPM output; no numpy needed)."""
-
-    def __init__(self, png):
-        raw = subprocess.run(["convert", png, "-alpha", "off", "-depth", "8", "ppm:-"], capture_output=True, check=True).stdout
-        fields, pos = [], 0
-        while len(fields) < 4:  # P6 w h maxval
-            while raw[pos:pos + 1].isspace():
-                pos += 1
-            end = pos
-            while not raw[end:end + 1].isspace():
-                end += 1
-            fields.append(raw[pos:end])
-            pos = end
-        self.w, self.h = int(fields[1]), int(fields[2])
-        self.data = raw[pos + 1:]
-
-    def px(self, x, y):
-        i = 3 * (y * self.w + x)
-        return tuple(self.data[i:i + 3])
-
-    def count(self, rgb, box):
-        x0, y0, x1, y1 = box
-        n = 0
-        for y in range(y0, y1):
-            row = self.data[3 * (y * self.w + x0):3 * (y * self.w + x1)]
-            for i in range(0, len(row), 3):
-                if abs(row[i] - rgb[0]) < 8 and abs(row[i + 1] - rgb[1]) < 8 and abs(row[i + 2] - rgb[2]) < 8:
-                    n += 1
-        return n
-
-
-def is_mesh(p):  # light grey flat shading of the mesh (the background is a dark blue gradient)
-    return p[0] > 120 and abs(p[0] - p[1]) < 12 and abs(p[1] - p[2]) < 12
-
-
-# ------------------------------------------------------------------ geometry of the check
-def mesh_ply(path):
-    f = open(path, "rb")
-    nv = nf = 0
-    while True:
-        l = f.readline().decode().strip()
-        if l.startswith("element vertex"):
-            nv = int(l.split()[2])
-        if l.startswith("element face"):
-            nf = int(l.split()[2])
-        if l == "end_header":
-            break
-    V = [struct.unpack("<3f", f.read(12)) for _ in range(nv)]
-    F = []
-    for _ in range(nf):
-        n = f.read(1)[0]
-        F.append(struct.unpack("<%di" % n, f.read(4 * n)))
-    return V, F
-
-
-def mean_edge(V, F):
-    E = set()
-    for t in F:
-        for k in range(3):
-            a, b = t[k], t[(k + 1) % 3]
-            E.add((min(a, b), max(a, b)))
-    return sum(math.dist(V[a], V[b]) for a, b in E) / len(E)
-
-
-def dist_seg(p, a, b):
-    d = [b[i] - a[i] for i in range(3)]
-    t = sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)
-    t = max(0.0, min(1.0, t))
-    return math.dist(p, [a[i] + d[i] * t for i in range(3)])
-
-
-def dist_cube_edges(p):
-    best = 1e9
-    for ax in range(3):
-        u, w = (ax + 1) % 3, (ax + 2) % 3
-        for s1 in (-1, 1):
-            for s2 in (-1, 1):
-                a, b = [0.0] * 3, [0.0] * 3
-                a[ax], b[ax] = -1.0, 1.0
-                a[u] = b[u] = s1
-                a[w] = b[w] = s2
-                best = min(best, dist_seg(p, a, b))
-    return best
-
-
-def closest_on_triangle(p, a, b, c):
-    """Ericson, Real-Time Collision Detection 5.1.5."""
-    sub = lambda u, v: (u[0] - v[0], u[1] - v[1], u[2] - v[2])
-    dot = lambda u, v: u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-    lerp = lambda u, d, t: (u[0] + d[0] * t, u[1] + d[1] * t, u[2] + d[2] * t)
-    ab, ac, ap = sub(b, a), sub(c, a), sub(p, a)
-    d1, d2 = dot(ab, ap), dot(ac, ap)
-    if d1 <= 0 and d2 <= 0:
-        return a
-    bp = sub(p, b)
-    d3, d4 = dot(ab, bp), dot(ac, bp)
-    if d3 >= 0 and d4 <= d3:
-        return b
-    vc = d1 * d4 - d3 * d2
-    if vc <= 0 and d1 >= 0 and d3 <= 0:
-        return lerp(a, ab, d1 / (d1 - d3))
-    cp = sub(p, c)
-    d5, d6 = dot(ab, cp), dot(ac, cp)
-    if d6 >= 0 and d5 <= d6:
-        return c
-    vb = d5 * d2 - d1 * d6
-    if vb <= 0 and d2 >= 0 and d6 <= 0:
-        return lerp(a, ac, d2 / (d2 - d6))
-    va = d3 * d6 - d5 * d4
-    if va <= 0 and (d4 - d3) >= 0 and (d5 - d6) >= 0:
-        return lerp(b, sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6)))
-    den = 1.0 / (va + vb + vc)
-    v, w = vb * den, vc * den
-    return (a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w, a[2] + ab[2] * v + ac[2] * w)
-
-
-def edge_on_mesh(V, F, h, a, b, n=200):
-    """The cube edge a-b as the mesh has it: points of the exact edge moved to their closest
-    point on the mesh (its straddling triangles chamfer the edge up to about h/2 deep)."""
-    cen = [tuple(sum(V[t[k]][i] for k in range(3)) / 3 for i in range(3)) for t in F]
-    out = []
-    for k in range(n + 1):
-        q = [a[i] + (b[i] - a[i]) * (0.05 + 0.9 * k / n) for i in range(3)]
-        best, bp = 1e9, None
-        for t, c in zip(F, cen):
-            if math.dist(c, q) > 3 * h:
-                continue
-            x = closest_on_triangle(q, V[t[0]], V[t[1]], V[t[2]])
-            d = math.dist(x, q)
-            if d < best:
-                best, bp = d, x
-        if bp:
-            out.append(bp)
-    return out
-
-
-def dist_polyline(p, pl):
-    return min(dist_seg(p, pl[i], pl[i + 1]) for i in range(len(pl) - 1))
-
-
-def nearest_cube_edge(p):
-    best, seg = 1e9, None
-    for ax in range(3):
-        u, w = (ax + 1) % 3, (ax + 2) % 3
-        for s1 in (-1, 1):
-            for s2 in (-1, 1):
-                a, b = [0.0] * 3, [0.0] * 3
-                a[ax], b[ax] = -1.0, 1.0
-                a[u] = b[u] = s1
-                a[w] = b[w] = s2
-                d = dist_seg(p, a, b)
-                if d < best:
-                    best, seg = d, (a, b)
-    return seg
-
-
-def load_snakes(path):
-    j = json.load(open(path))
-    return j["snakes"] if "snakes" in j else [j]
-
-
-def wait_json(path, pred, timeout):
-    t0 = time.time()
-    last = None
-    while time.time() - t0 < timeout:
-        try:
-            s = load_snakes(path)
-            last = s
-            if pred(s):
-                return s
-        except (OSError, ValueError, KeyError):
-            pass
-        time.sleep(0.3)
-    return last
-
-
-# ------------------------------------------------------------------ MeshLab
-class MeshLab:
-    def __init__(self, mesh, tag):
-        env = dict(os.environ)
-        env["LIBGL_ALWAYS_SOFTWARE"] = "1"
-        env["GS_SNAKE_AUTOEXPORT"] = os.path.join(WORK, "auto.json")
-        env["XDG_CONFIG_HOME"] = os.path.join(WORK, "config")  # fresh MeshLab settings
-        env["XDG_RUNTIME_DIR"] = os.path.join(WORK, "runtime")
-        os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
-        self.logpath = os.path.join(WORK, "meshlab_%s.log" % tag)
-        self.logf = open(self.logpath, "w")
-        self.p = subprocess.Popen(["meshlab", mesh], stdout=self.logf, stderr=subprocess.STDOUT, env=env,
-                                  start_new_session=True)
-        self.win = None
-        for _ in range(120):
-            time.sleep(0.5)
-            ids = xdo("search", "--name", "MeshLab 20").split()
-            if ids:
-                self.win = ids[-1]
-                break
-        if not self.win:
-            raise RuntimeError("MeshLab window did not appear")
-        time.sleep(2)
-        xdo("windowmove", self.win, 0, 0)
-        xdo("windowsize", self.win, 1280, 1000)
-        time.sleep(2)
-
-    def log_text(self):
-        self.logf.flush()
-        return open(self.logpath).read()
-
-    def start_tool(self):
-        # Edit menu -> "Geometric Snake" (second entry after "Align" in Debian's MeshLab 2020.09)
-        xdo("mousemove", 70, 10, "click", 1)
-        time.sleep(1)
-        screenshot("edit_menu.png")
-        xdo("mousemove", 141, 84, "click", 1)
-        for _ in range(20):
-            time.sleep(0.5)
-            if "Started Mode Geometric Snake" in self.log_text():
-                return True
-        return False
-
-    def kill(self, sig=signal.SIGTERM):
-        try:
-            os.killpg(self.p.pid, sig)
-        except ProcessLookupError:
-            pass
-        try:
-            self.p.wait(10)
-        except subprocess.TimeoutExpired:
-            os.killpg(self.p.pid, signal.SIGKILL)
-            self.p.wait(10)
-
-
-def gl_box(img):
-    """The GL area: left of the layer panel and above the info overlay (found by its mesh pixels)."""
-    return (0, 70, 850, 860)
-
-
-def longest_run(flags):
-    best, start = (0, 0, -1), None
-    for i, f in enumerate(flags + [False]):
-        if f and start is None:
-            start = i
-        if not f and start is not None:
-            if i - start > best[0]:
-                best = (i - start, start, i - 1)
-            start = None
-    return best[1], best[2]
-
-
-def front_face_extent(img):
-    """Pixel extent of the front face (the longest runs of mesh pixels through the middle)."""
-    x0, y0, x1, y1 = gl_box(img)
-    ymid = (y0 + y1) // 2
-    a, b = longest_run([is_mesh(img.px(x, ymid)) for x in range(x0, x1)])
-    left, right = x0 + a, x0 + b
-    xm = (left + right) // 2
-    a, b = longest_run([is_mesh(img.px(xm, y)) for y in range(y0 + 5, y1)])
-    return left, right, y0 + 5 + a, y0 + 5 + b
-
-
-def magenta_y(img, x):
-    x0, y0, x1, y1 = gl_box(img)
-    ys = [y for y in range(y0, y1) if img.count(MAGENTA, (x, y, x + 1, y + 1))]
-    return ys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gui import (MAGENTA, Image, MeshLab, check, copy_data, dist_cube_edges, dist_polyline, drag,  # noqa: E402
+                 edge_on_mesh, finish, front_face_extent, gl_box, log, mean_edge, mesh_ply,
+                 nearest_cube_edge, sample_near, screenshot, snake_rows, start, wait_json, xdo)
 
 
 def main():
-    if os.path.isdir(WORK):
-        shutil.rmtree(WORK)
-    os.makedirs(WORK)
-    mesh = os.path.join(WORK, "icocube.ply")
-    src = os.path.join(DATA, "icocube.ply")
-    if not os.path.exists(src):
-        log("data/icocube.ply missing")
-        return 1
-    shutil.copy(src, mesh)
+    WORK = start("edit_gui")
+    mesh = copy_data("icocube.ply")
     V, F = mesh_ply(mesh)
     h = mean_edge(V, F)
     auto = os.path.join(WORK, "auto.json")
@@ -383,17 +85,11 @@ def main():
 
         # drag the middle sample down onto the face and pin it (Edit samples mode is on)
         xm = (left + right) // 2
-        ym = magenta_y(img, xm)
+        ym = snake_rows(img, xm)
         check(bool(ym), "the snake is visible at the middle column")
         if ym:
-            y = ym[len(ym) // 2]
-            xdo("mousemove", xm, y)
-            time.sleep(0.3)
-            xdo("mousedown", 1)
-            for k in range(1, 11):
-                xdo("mousemove", xm, int(y + k * 0.35 * hpx))
-                time.sleep(0.05)
-            xdo("mouseup", 1)
+            x, y = sample_near(img, xm, ym[len(ym) // 2])
+            drag(x, y, 0, 3.5 * hpx, 10)  # 3.5 edge lengths down, in 10 mouse moves
             s = wait_json(auto, lambda s: any(x["fixed"] for x in s[0]["samples"]), 10)
             pins = [x for x in s[0]["samples"] if x["fixed"]]
             check(len(pins) == 1, "dragging a sample pins it (%d pinned)" % len(pins))
@@ -446,12 +142,7 @@ def main():
     finally:
         ml.kill()
 
-    log("artifacts in " + WORK)
-    if failures:
-        log("%d check(s) failed" % len(failures))
-        return 1
-    log("all checks passed")
-    return 0
+    return finish()
 
 
 if __name__ == "__main__":

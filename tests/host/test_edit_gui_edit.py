@@ -22,32 +22,27 @@ import json
 import math
 import os
 import re
-import shutil
 import signal
-import subprocess
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import test_edit_gui as g  # noqa: E402  (the MeshLab driver, screenshots, cube geometry)
-from test_edit_gui_tool import snakes_of, wait_for, samples, run_lines  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gui as g  # noqa: E402  (the MeshLab driver, screenshots, cube geometry, the tool's JSON and Log)
+from gui import changed, read_bytes, samples, save_dialog, snakes_of, wait_for  # noqa: E402
 
-WORK = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build", "test-artifacts",
-                                                                          "edit_gui_edit"))
-g.WORK = WORK
 check, log, xdo = g.check, g.log, g.xdo
 
 # Fixed positions in the 1280x1000 main window with the docked panel (see 20_panel.png)
-PANEL_EXPORT_SELECTED = (976, 612)
-PANEL_EXPORT_ALL = (1170, 612)
-PANEL_ADD_LAYER = (976, 644)
-PANEL_NEW = (976, 539)
-PANEL_LIST = (1073, 509)
+PANEL_EXPORT_SELECTED = (976, 628)
+PANEL_EXPORT_ALL = (1170, 628)
+PANEL_ADD_LAYER = (976, 660)
+PANEL_NEW = (976, 555)
+PANEL_LIST = (1073, 525)
 TAB_LAYERS = (909, 951)
 PANEL_TAB = (1020, 951)
 MENU_DELETE_MESH = (1040, 250)  # in the context menu of the first layer (26_layer_menu.png)
 LAYER_ROW = [(963, 114), (993, 145)]  # first and second layer in the layer dialog
+STATUS_BOTTOM = 110  # the status line's bottom edge, from the top of the panel
 
 
 def positions(j, k=0):
@@ -58,42 +53,13 @@ def pins(j, k=0):
     return [i for i, x in enumerate(samples(j)[k]["samples"]) if x["fixed"]]
 
 
-def changed(path, before, timeout=5):
-    return wait_for(lambda: (lambda j: j if j and j != before else None)(snakes_of(path)), timeout)
-
-
-def read_bytes(p):
-    with open(p, "rb") as f:
-        return f.read()
-
-
-def save_dialog(title, path, confirm_replace=False):
-    """Types `path` into a Qt file dialog titled `title` and accepts it."""
-    win = wait_for(lambda: xdo("search", "--name", title).split(), 10)
-    if not win:
-        return False
-    time.sleep(0.8)
-    xdo("key", "ctrl+a")
-    xdo("type", "--delay", "5", path)
-    time.sleep(0.3)
-    xdo("key", "Return")
-    if confirm_replace:  # "... already exists. Do you want to replace it?"
-        time.sleep(1.0)
-        g.screenshot("replace_%s.png" % os.path.basename(path))
-        xdo("key", "alt+y")
-    return True
-
-
 def close_to(a, b, tol=1e-5):
     return len(a) == len(b) and all(math.dist(p, q) <= tol for p, q in zip(a, b))
 
 
 def main():
-    if os.path.isdir(WORK):
-        shutil.rmtree(WORK)
-    os.makedirs(WORK)
-    mesh = os.path.join(WORK, "icocube.ply")
-    shutil.copy(os.path.join(g.DATA, "icocube.ply"), mesh)
+    WORK = g.start("edit_gui_edit")
+    mesh = g.copy_data("icocube.ply")
     mesh_bytes = read_bytes(mesh)
     V, F = g.mesh_ply(mesh)
     h = g.mean_edge(V, F)
@@ -120,8 +86,7 @@ def main():
         # ------------------------------------------------------------ 1. keys: insert, pin, delete
         time.sleep(1.0)
         img = g.Image(g.screenshot("21_built.png"))
-        # (a sample's white marker may cover the curve at the middle column: look beside it too)
-        ym = next((y for y in (g.magenta_y(img, xm + dx) for dx in (0, 6, -6, 12, -12)) if y), [])
+        ym = g.snake_rows(img, xm)
         check(bool(ym), "the snake is drawn")
         xdo("mousemove", xm, ym[len(ym) // 2] if ym else int(top + 2.2 * hpx), "click", 1)  # selects a sample
         time.sleep(0.5)
@@ -246,7 +211,11 @@ def main():
         time.sleep(0.5)
 
         # ------------------------------------------------------------ 3b. never over the mesh
-        # (last use of the panel's buttons: the long message then moves them down a line)
+        # and the long message that says so (it names the mesh's whole path) stays in the status
+        # line: the panel keeps its width and its buttons stay where they were
+        xdo("mousemove", 640, 990)  # no hover highlight on the panel in the screenshots
+        time.sleep(0.5)
+        panel_before = g.Image(g.screenshot("23b_panel_before.png"))
         xdo("mousemove", *PANEL_EXPORT_ALL, "click", 1)
         save_dialog("Export all snakes", mesh, confirm_replace=True)
         time.sleep(1.5)
@@ -254,6 +223,26 @@ def main():
         check(read_bytes(mesh) == mesh_bytes, "exporting over the mesh through the dialog leaves it unchanged")
         m = re.search(r"LOG: 1 (Refusing to write .*icocube\.ply.*)", text)
         check(bool(m), "... and the Log says why (%s)" % (m.group(1) if m else "no warning"))
+        xdo("mousemove", 640, 990)
+        time.sleep(0.5)
+        panel_after = g.Image(g.screenshot("23c_panel_long_message.png"))
+        pg = g.panel_geometry(text)
+        if check(bool(pg) and pg[0], "the panel is docked (its Log line)"):
+            _, px, py, pw, ph = pg
+            rows = [y for y in range(max(0, py - 4), min(panel_after.h, py + ph)) if any(
+                panel_before.px(x, y) != panel_after.px(x, y) for x in range(max(0, px - 40), min(panel_after.w, px + pw)))]
+            log("panel at %d,%d %dx%d; rows changed by the long message: %s" % (
+                px, py, pw, ph, "%d..%d" % (rows[0] - py, rows[-1] - py) if rows else "none"))
+            check(bool(rows), "the long message shows in the panel")
+            check(bool(rows) and rows[-1] - py < STATUS_BOTTOM,
+                  "only the status line changed: the dock kept its width and the buttons below did not move")
+            reds = g.red_pixels(os.path.join(WORK, "23c_panel_long_message.png"), px, py, pw, STATUS_BOTTOM)
+            check(reds > 40, "the status line shows the message in red (%d red pixels)" % reds)
+        xdo("mousemove", *PANEL_EXPORT_ALL, "click", 1)  # the button is where it was
+        check(bool(wait_for(lambda: xdo("search", "--name", "Export all snakes").split(), 5)),
+              "after the long message, Export all... still opens its dialog")
+        xdo("key", "Escape")
+        time.sleep(0.5)
 
         # ------------------------------------------------------------ 5. deleting the mesh
         count = lambda what: ml.log_text().count(what)
@@ -289,12 +278,7 @@ def main():
     finally:
         ml.kill(signal.SIGKILL)
 
-    log("artifacts in " + WORK)
-    if g.failures:
-        log("%d check(s) failed" % len(g.failures))
-        return 1
-    log("all checks passed")
-    return 0
+    return g.finish()
 
 
 if __name__ == "__main__":

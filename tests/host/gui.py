@@ -1,0 +1,462 @@
+"""Shared helpers of the GUI tests (tests/host/test_edit_gui*.py): the real MeshLab under an X
+server (Xvfb), driven by xdotool and photographed with ImageMagick's `import`.
+
+- checks and logging: check() records failures, finish() prints the verdict and the exit status;
+- the X server: xdo(), screenshot(), Image (a screenshot's pixels), window_geometry();
+- MeshLab: the MeshLab class starts it on a mesh with fresh settings and a Log file, starts the
+  Geometric Snake tool from the Edit menu; its GL area and panel positions in the 1280x1000 window;
+- the tool's JSON (written after every change to $GS_SNAKE_AUTOEXPORT) and its Log lines;
+- the cube's geometry (data/icocube.ply, [-1,1]^3): distances to its edges, as the mesh has them.
+
+A test sets its work folder with start(name) and ends with `return finish()`.
+"""
+import json
+import math
+import os
+import re
+import shutil
+import signal
+import struct
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.environ.get("GS_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
+WORK = None  # the test's work folder (artifacts: screenshots, JSON, MeshLab's Log); set by start()
+MAGENTA = (255, 0, 255)  # the selected snake's colour (edit_geometric_snake.cpp)
+failures = []
+
+
+def start(name):
+    """The work folder (the first argument, else build/test-artifacts/<name>), emptied."""
+    global WORK
+    WORK = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "..", "build",
+                                                                                "test-artifacts", name))
+    if os.path.isdir(WORK):
+        shutil.rmtree(WORK)
+    os.makedirs(WORK)
+    return WORK
+
+
+def finish():
+    """Prints the verdict; the exit status of the test script."""
+    log("artifacts in " + WORK)
+    if failures:
+        log("%d check(s) failed" % len(failures))
+        return 1
+    log("all checks passed")
+    return 0
+
+
+def copy_data(name):
+    """A copy of data/<name> in the work folder (the tests never write next to the repo's data)."""
+    path = os.path.join(WORK, name)
+    shutil.copy(os.path.join(DATA, name), path)
+    return path
+
+
+def log(*a):
+    print(*a, flush=True)
+
+
+def check(cond, what):
+    log(("PASS " if cond else "FAIL ") + what)
+    if not cond:
+        failures.append(what)
+    return cond
+
+
+def xdo(*args):
+    return subprocess.run(["xdotool"] + [str(a) for a in args], capture_output=True, text=True).stdout.strip()
+
+
+def screenshot(name):
+    path = os.path.join(WORK, name)
+    subprocess.run(["import", "-window", "root", path], check=True)
+    return path
+
+
+class Image:
+    """A screenshot as RGB bytes (via ImageMagick's PPM output; no numpy needed)."""
+
+    def __init__(self, png):
+        raw = subprocess.run(["convert", png, "-alpha", "off", "-depth", "8", "ppm:-"], capture_output=True, check=True).stdout
+        fields, pos = [], 0
+        while len(fields) < 4:  # P6 w h maxval
+            while raw[pos:pos + 1].isspace():
+                pos += 1
+            end = pos
+            while not raw[end:end + 1].isspace():
+                end += 1
+            fields.append(raw[pos:end])
+            pos = end
+        self.w, self.h = int(fields[1]), int(fields[2])
+        self.data = raw[pos + 1:]
+
+    def px(self, x, y):
+        i = 3 * (y * self.w + x)
+        return tuple(self.data[i:i + 3])
+
+    def count(self, rgb, box):
+        x0, y0, x1, y1 = box
+        n = 0
+        for y in range(y0, y1):
+            row = self.data[3 * (y * self.w + x0):3 * (y * self.w + x1)]
+            for i in range(0, len(row), 3):
+                if abs(row[i] - rgb[0]) < 8 and abs(row[i + 1] - rgb[1]) < 8 and abs(row[i + 2] - rgb[2]) < 8:
+                    n += 1
+        return n
+
+
+def is_mesh(p):  # light grey flat shading of the mesh (the background is a dark blue gradient)
+    return p[0] > 120 and abs(p[0] - p[1]) < 12 and abs(p[1] - p[2]) < 12
+
+
+# ------------------------------------------------------------------ geometry of the check
+def mesh_ply(path):
+    f = open(path, "rb")
+    nv = nf = 0
+    while True:
+        l = f.readline().decode().strip()
+        if l.startswith("element vertex"):
+            nv = int(l.split()[2])
+        if l.startswith("element face"):
+            nf = int(l.split()[2])
+        if l == "end_header":
+            break
+    V = [struct.unpack("<3f", f.read(12)) for _ in range(nv)]
+    F = []
+    for _ in range(nf):
+        n = f.read(1)[0]
+        F.append(struct.unpack("<%di" % n, f.read(4 * n)))
+    return V, F
+
+
+def mean_edge(V, F):
+    E = set()
+    for t in F:
+        for k in range(3):
+            a, b = t[k], t[(k + 1) % 3]
+            E.add((min(a, b), max(a, b)))
+    return sum(math.dist(V[a], V[b]) for a, b in E) / len(E)
+
+
+def dist_seg(p, a, b):
+    d = [b[i] - a[i] for i in range(3)]
+    t = sum((p[i] - a[i]) * d[i] for i in range(3)) / sum(x * x for x in d)
+    t = max(0.0, min(1.0, t))
+    return math.dist(p, [a[i] + d[i] * t for i in range(3)])
+
+
+def dist_cube_edges(p):
+    best = 1e9
+    for ax in range(3):
+        u, w = (ax + 1) % 3, (ax + 2) % 3
+        for s1 in (-1, 1):
+            for s2 in (-1, 1):
+                a, b = [0.0] * 3, [0.0] * 3
+                a[ax], b[ax] = -1.0, 1.0
+                a[u] = b[u] = s1
+                a[w] = b[w] = s2
+                best = min(best, dist_seg(p, a, b))
+    return best
+
+
+def closest_on_triangle(p, a, b, c):
+    """Ericson, Real-Time Collision Detection 5.1.5."""
+    sub = lambda u, v: (u[0] - v[0], u[1] - v[1], u[2] - v[2])
+    dot = lambda u, v: u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+    lerp = lambda u, d, t: (u[0] + d[0] * t, u[1] + d[1] * t, u[2] + d[2] * t)
+    ab, ac, ap = sub(b, a), sub(c, a), sub(p, a)
+    d1, d2 = dot(ab, ap), dot(ac, ap)
+    if d1 <= 0 and d2 <= 0:
+        return a
+    bp = sub(p, b)
+    d3, d4 = dot(ab, bp), dot(ac, bp)
+    if d3 >= 0 and d4 <= d3:
+        return b
+    vc = d1 * d4 - d3 * d2
+    if vc <= 0 and d1 >= 0 and d3 <= 0:
+        return lerp(a, ab, d1 / (d1 - d3))
+    cp = sub(p, c)
+    d5, d6 = dot(ab, cp), dot(ac, cp)
+    if d6 >= 0 and d5 <= d6:
+        return c
+    vb = d5 * d2 - d1 * d6
+    if vb <= 0 and d2 >= 0 and d6 <= 0:
+        return lerp(a, ac, d2 / (d2 - d6))
+    va = d3 * d6 - d5 * d4
+    if va <= 0 and (d4 - d3) >= 0 and (d5 - d6) >= 0:
+        return lerp(b, sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6)))
+    den = 1.0 / (va + vb + vc)
+    v, w = vb * den, vc * den
+    return (a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w, a[2] + ab[2] * v + ac[2] * w)
+
+
+def edge_on_mesh(V, F, h, a, b, n=200):
+    """The cube edge a-b as the mesh has it: points of the exact edge moved to their closest
+    point on the mesh (its straddling triangles chamfer the edge up to about h/2 deep)."""
+    cen = [tuple(sum(V[t[k]][i] for k in range(3)) / 3 for i in range(3)) for t in F]
+    out = []
+    for k in range(n + 1):
+        q = [a[i] + (b[i] - a[i]) * (0.05 + 0.9 * k / n) for i in range(3)]
+        best, bp = 1e9, None
+        for t, c in zip(F, cen):
+            if math.dist(c, q) > 3 * h:
+                continue
+            x = closest_on_triangle(q, V[t[0]], V[t[1]], V[t[2]])
+            d = math.dist(x, q)
+            if d < best:
+                best, bp = d, x
+        if bp:
+            out.append(bp)
+    return out
+
+
+def dist_polyline(p, pl):
+    return min(dist_seg(p, pl[i], pl[i + 1]) for i in range(len(pl) - 1))
+
+
+def nearest_cube_edge(p):
+    best, seg = 1e9, None
+    for ax in range(3):
+        u, w = (ax + 1) % 3, (ax + 2) % 3
+        for s1 in (-1, 1):
+            for s2 in (-1, 1):
+                a, b = [0.0] * 3, [0.0] * 3
+                a[ax], b[ax] = -1.0, 1.0
+                a[u] = b[u] = s1
+                a[w] = b[w] = s2
+                d = dist_seg(p, a, b)
+                if d < best:
+                    best, seg = d, (a, b)
+    return seg
+
+
+def load_snakes(path):
+    j = json.load(open(path))
+    return j["snakes"] if "snakes" in j else [j]
+
+
+def wait_json(path, pred, timeout):
+    t0 = time.time()
+    last = None
+    while time.time() - t0 < timeout:
+        try:
+            s = load_snakes(path)
+            last = s
+            if pred(s):
+                return s
+        except (OSError, ValueError, KeyError):
+            pass
+        time.sleep(0.3)
+    return last
+
+
+# ------------------------------------------------------------------ MeshLab
+class MeshLab:
+    """MeshLab on `mesh`, its window at 0,0 and 1280x1000, fresh settings, its Log (stdout) in
+    meshlab_<tag>.log. With `autoexport` the tool writes its JSON to WORK/auto.json after every
+    change (the test hook $GS_SNAKE_AUTOEXPORT)."""
+
+    def __init__(self, mesh, tag, autoexport=True):
+        env = dict(os.environ)
+        env["LIBGL_ALWAYS_SOFTWARE"] = "1"
+        if autoexport:
+            env["GS_SNAKE_AUTOEXPORT"] = os.path.join(WORK, "auto.json")
+        env["XDG_CONFIG_HOME"] = os.path.join(WORK, "config")  # fresh MeshLab settings
+        env["XDG_RUNTIME_DIR"] = os.path.join(WORK, "runtime")
+        os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
+        self.logpath = os.path.join(WORK, "meshlab_%s.log" % tag)
+        self.logf = open(self.logpath, "w")
+        self.p = subprocess.Popen(["meshlab", mesh], stdout=self.logf, stderr=subprocess.STDOUT, env=env,
+                                  start_new_session=True)
+        self.win = None
+        for _ in range(120):
+            time.sleep(0.5)
+            ids = xdo("search", "--name", "MeshLab 20").split()
+            if ids:
+                self.win = ids[-1]
+                break
+        if not self.win:
+            raise RuntimeError("MeshLab window did not appear")
+        time.sleep(2)
+        xdo("windowmove", self.win, 0, 0)
+        xdo("windowsize", self.win, 1280, 1000)
+        time.sleep(2)
+
+    def log_text(self):
+        self.logf.flush()
+        return open(self.logpath, errors="replace").read()
+
+    def start_tool(self):
+        # Edit menu -> "Geometric Snake" (second entry after "Align" in Debian's MeshLab 2020.09)
+        xdo("mousemove", 70, 10, "click", 1)
+        time.sleep(1)
+        screenshot("edit_menu.png")
+        xdo("mousemove", 141, 84, "click", 1)
+        for _ in range(20):
+            time.sleep(0.5)
+            if "Started Mode Geometric Snake" in self.log_text():
+                return True
+        return False
+
+    def kill(self, sig=signal.SIGTERM):
+        try:
+            os.killpg(self.p.pid, sig)
+        except ProcessLookupError:
+            pass
+        try:
+            self.p.wait(10)
+        except subprocess.TimeoutExpired:
+            os.killpg(self.p.pid, signal.SIGKILL)
+            self.p.wait(10)
+
+
+def gl_box(img):
+    """The GL area: left of the layer panel and above the info overlay (found by its mesh pixels)."""
+    return (0, 70, 850, 860)
+
+
+def longest_run(flags):
+    best, start = (0, 0, -1), None
+    for i, f in enumerate(flags + [False]):
+        if f and start is None:
+            start = i
+        if not f and start is not None:
+            if i - start > best[0]:
+                best = (i - start, start, i - 1)
+            start = None
+    return best[1], best[2]
+
+
+def front_face_extent(img):
+    """Pixel extent of the front face (the longest runs of mesh pixels through the middle)."""
+    x0, y0, x1, y1 = gl_box(img)
+    ymid = (y0 + y1) // 2
+    a, b = longest_run([is_mesh(img.px(x, ymid)) for x in range(x0, x1)])
+    left, right = x0 + a, x0 + b
+    xm = (left + right) // 2
+    a, b = longest_run([is_mesh(img.px(xm, y)) for y in range(y0 + 5, y1)])
+    return left, right, y0 + 5 + a, y0 + 5 + b
+
+
+def magenta_y(img, x):
+    x0, y0, x1, y1 = gl_box(img)
+    ys = [y for y in range(y0, y1) if img.count(MAGENTA, (x, y, x + 1, y + 1))]
+    return ys
+
+
+def sample_near(img, x, y, r=25):
+    """The nearest sample marker (a white square on the curve) to (x, y) within r px, else (x, y):
+    a press starts a drag only on a sample (the tool picks the nearest one within 20 px)."""
+    best = None
+    for yy in range(max(0, y - r), min(img.h, y + r + 1)):
+        for xx in range(max(0, x - r), min(img.w, x + r + 1)):
+            if min(img.px(xx, yy)) >= 250:
+                d = (xx - x) ** 2 + (yy - y) ** 2
+                if best is None or d < best[0]:
+                    best = (d, xx, yy)
+    return (best[1], best[2]) if best else (x, y)
+
+
+def snake_rows(img, x):
+    """The selected snake's rows at column x, or beside it (a sample's marker may cover the curve)."""
+    return next((ys for ys in (magenta_y(img, x + dx) for dx in (0, 6, -6, 12, -12)) if ys), [])
+
+
+# ------------------------------------------------------------------ the tool's JSON and Log
+def snakes_of(path):
+    try:
+        return json.load(open(path))
+    except (OSError, ValueError):
+        return None
+
+
+def wait_for(pred, timeout, step=0.2):
+    t0 = time.time()
+    while time.time() - t0 < timeout:
+        v = pred()
+        if v:
+            return v
+        time.sleep(step)
+    return pred()
+
+
+def samples(j):
+    """The snakes of an exported JSON (a session or one snake)."""
+    return j["snakes"] if "snakes" in j else [j]
+
+
+def changed(path, before, timeout=5):
+    """The JSON at `path` once it differs from `before` (None after `timeout` s)."""
+    return wait_for(lambda: (lambda j: j if j and j != before else None)(snakes_of(path)), timeout)
+
+
+def curve_state(j):
+    """What the user sees of the snakes: samples (positions, pins), the curves, the counters."""
+    return [(x["closed"], x["samples"], x["polyline"], x["stats"]["operations"], x["stats"]["converged"])
+            for x in samples(j)]
+
+
+def run_lines(text):
+    """The tool's Log lines of finished Runs: (state, operations, compute s, wall s)."""
+    return [(m.group(1), int(m.group(2)), float(m.group(3)), float(m.group(4))) for m in re.finditer(
+        r"Run (converged|stopped) after (\d+) operations: compute ([0-9.]+) s, wall ([0-9.]+) s", text)]
+
+
+def panel_geometry(text):
+    """Where the tool says its panel is (its Log line): (docked?, x, y, w, h) of the last one, or None."""
+    m = list(re.finditer(r"panel (docked|floating) in MeshLab's main window at (-?\d+),(-?\d+) size (\d+)x(\d+)", text))
+    if not m:
+        return None
+    m = m[-1]
+    return (m.group(1) == "docked",) + tuple(int(m.group(k)) for k in range(2, 6))
+
+
+def window_geometry(win):
+    out = xdo("getwindowgeometry", win)
+    pos = re.search(r"Position: (-?\d+),(-?\d+)", out)
+    size = re.search(r"Geometry: (\d+)x(\d+)", out)
+    return (int(pos.group(1)), int(pos.group(2)), int(size.group(1)), int(size.group(2))) if pos and size else None
+
+
+def red_pixels(png, x, y, w, h):
+    """Pixels of the error text colour (#b00000, anti-aliased) in a box of a screenshot."""
+    raw = subprocess.run(["convert", png, "-crop", "%dx%d+%d+%d" % (w, h, x, y), "+repage", "-alpha", "off",
+                          "-depth", "8", "rgb:-"], capture_output=True).stdout
+    return sum(1 for i in range(0, len(raw) - 2, 3) if raw[i] > 120 and raw[i + 1] < 70 and raw[i + 2] < 70)
+
+
+def read_bytes(p):
+    with open(p, "rb") as f:
+        return f.read()
+
+
+def save_dialog(title, path, confirm_replace=False):
+    """Types `path` into a Qt file dialog titled `title` and accepts it."""
+    win = wait_for(lambda: xdo("search", "--name", title).split(), 10)
+    if not win:
+        return False
+    time.sleep(0.8)
+    xdo("key", "ctrl+a")
+    xdo("type", "--delay", "5", path)
+    time.sleep(0.3)
+    xdo("key", "Return")
+    if confirm_replace:  # "... already exists. Do you want to replace it?"
+        time.sleep(1.0)
+        screenshot("replace_%s.png" % os.path.basename(path))
+        xdo("key", "alt+y")
+    return True
+
+
+def drag(x, y, dx, dy, steps, pause=0.05):
+    """A left-button drag from (x, y) by (dx, dy) in `steps` mouse moves (one motion event each)."""
+    xdo("mousemove", x, y)
+    time.sleep(0.3)
+    xdo("mousedown", 1)
+    for k in range(1, steps + 1):
+        xdo("mousemove", int(round(x + dx * k / steps)), int(round(y + dy * k / steps)))
+        time.sleep(pause)
+    xdo("mouseup", 1)
