@@ -104,6 +104,120 @@ std::shared_ptr<Surface> Prepare(CMeshO &m)
     return std::make_shared<Surface>(m);
 }
 
+// ----- a straight crease with a chamfer: a second, parallel crease `gap` cells beside it
+
+// The plate [0,80] x [0,40] of unit cells (a regular grid), folded along
+// the line through (40,20) at 17 degrees to the grid and again `gap` cells beside it: a
+// chamfered step, both creases cutting through triangles.
+struct ChamferPlate
+{
+    double ang = vcg::math::ToRad(17.0), gap = 3.0;
+    vcg::Point3d c{40, 20, 0};
+    vcg::Point3d dir() const { return vcg::Point3d(std::cos(ang), std::sin(ang), 0); }
+    double across(double x, double y) const { return -(x - c[0]) * std::sin(ang) + (y - c[1]) * std::cos(ang); }
+    double height(double x, double y) const
+    {
+        return std::tan(vcg::math::ToRad(kCreaseTurn)) * std::max(0.0, std::min(gap, across(x, y)));
+    }
+    void Make(CMeshO &m) const
+    {
+        gs_test::MakeHeightPlate(m, 80, 40, 1.0, 1.0, 0.0, 11, [this](double x, double y) { return height(x, y); });
+    }
+    /// Point at `along` cells along the crease and `off` cells across it (negative: the flat side).
+    vcg::Point3d At(double along, double off) const
+    {
+        vcg::Point3d n(-std::sin(ang), std::cos(ang), 0);
+        vcg::Point3d p = c + dir() * along + n * off;
+        p[2] = height(p[0], p[1]);
+        return p;
+    }
+};
+
+class StraightCreaseEnds : public ::testing::TestWithParam<EndCase> {};
+
+/// Runs an open snake seeded `offset` cells off the chamfer's first crease, on the side away
+/// from the second one, and measures its final curve. `fineOnly`: level 0 alone, no pyramid.
+EndReport RunOnChamfer(const EndCase &c, bool fineOnly = false)
+{
+    ChamferPlate plate;
+    CMeshO m;
+    plate.Make(m);
+    auto surf = Prepare(m);
+    if (fineOnly) surf->SetCaptureSmoothing(0);
+    std::vector<vcg::Point3d> line;
+    for (int i = 0; i <= 400; ++i) line.push_back(plate.At(-35 + 70.0 * i / 400, 0));
+    Feature f(m, line);
+    SnakeParams p;
+    p.method = c.method;
+    Snake s(surf, p);
+    std::vector<vcg::Point3d> picks;
+    for (double a : {-24.0, -8.0, 8.0, 24.0}) picks.push_back(plate.At(a, -c.offset));
+    std::vector<int> seeds = gs_test::NearestVertices(m, picks);
+    s.InitFromSeeds(seeds, false);
+    s.Run(500);
+    const vcg::Point3d first = vcg::Point3d::Construct(m.vert[seeds.front()].cP());
+    const vcg::Point3d last = vcg::Point3d::Construct(m.vert[seeds.back()].cP());
+    EndReport r = Measure(s, f, first, last);
+    std::printf("%s: %d samples, %d operations, converged %d: coverage %.3f, end %.3f, hook %.3f, p95 %.3f "
+                "local edges, largest turn %.1f deg\n", c.name, s.SampleCount(), s.Stats().operations,
+                int(s.Converged()), r.coverage, r.endDist, r.hook, r.p95, r.maxTurnDeg);
+    EXPECT_TRUE(s.Converged()) << c.name;
+    return r;
+}
+
+// Observed: the last 2-3 samples of an open snake hooked off towards the nearby second crease
+// (and whole stretches of the curve zigzagged between the two creases, or it ended on the
+// second crease: p95 4.1 local edges): the coarse levels merge the two creases into one well
+// between them, and the snake, pulled across the first crease into that well, rolls down
+// either side at the switch to level 0. DISABLED: not fixed yet (issue 9). A coarse move that
+// stops on a level-0 well across the curve fixes these cases (all pass, turns 7.9-9.6 deg) but
+// breaks the closed snakes' capture on the octahedron (branch r9-stop-wip).
+TEST_P(StraightCreaseEnds, DISABLED_EndsHoldSpanStaysNoHook)
+{
+    const EndCase c = GetParam();
+    const EndReport r = RunOnChamfer(c);
+    EXPECT_GE(r.coverage, 0.95) << c.name;
+    EXPECT_LT(r.endDist, 0.35) << c.name;
+    EXPECT_LT(r.hook, 0.35) << c.name << ": an end hooks off the crease";
+    EXPECT_LT(r.p95, 0.35) << c.name;
+    EXPECT_LT(r.maxTurnDeg, 10.0) << c.name << ": the curve is jagged";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Chamfer, StraightCreaseEnds,
+    ::testing::Values(EndCase{SnakeMethod::LocalEmbedding, 0, "embedding_on"},
+                      EndCase{SnakeMethod::LocalEmbedding, 2, "embedding_2off"},
+                      EndCase{SnakeMethod::LocalEmbedding, 3, "embedding_3off"},
+                      EndCase{SnakeMethod::Projection3D, 0, "projection_on"},
+                      EndCase{SnakeMethod::Projection3D, 2, "projection_2off"},
+                      EndCase{SnakeMethod::Projection3D, 3, "projection_3off"}),
+    [](const ::testing::TestParamInfo<EndCase> &i) { return std::string(i.param.name); });
+
+// Observed: on the chamfer's straight crease, on level 0 alone (no coarse level to mislead
+// it), the final curve turned by 11-18 degrees between consecutive segments: level 0 is linear
+// in each face, its V-shaped wells pull every sample with full force onto the mesh's zigzag
+// fold line, and beta cannot straighten it. The slope across the curve is now averaged over about
+// one and a half triangles (snake_segment_motion.h, acrossSlope).
+class StraightCreaseSmooth : public ::testing::TestWithParam<EndCase> {};
+
+TEST_P(StraightCreaseSmooth, TurnsStayBelowTenDegrees)
+{
+    const EndCase c = GetParam();
+    const EndReport r = RunOnChamfer(c, true);
+    EXPECT_LT(r.maxTurnDeg, 10.0) << c.name << ": the curve is jagged";
+    EXPECT_LT(r.p95, 0.35) << c.name;
+    EXPECT_LT(r.hook, 0.35) << c.name;
+    EXPECT_GE(r.coverage, 0.95) << c.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ChamferFineOnly, StraightCreaseSmooth,
+    ::testing::Values(EndCase{SnakeMethod::LocalEmbedding, 0, "embedding_on"},
+                      EndCase{SnakeMethod::LocalEmbedding, 1, "embedding_1off"},
+                      EndCase{SnakeMethod::Projection3D, 0, "projection_on"},
+                      EndCase{SnakeMethod::Projection3D, 1, "projection_1off"}),
+    [](const ::testing::TestParamInfo<EndCase> &i) { return std::string(i.param.name); });
+
 // ----- a curved crease: the top rim of the capped cylinder (rotated icosphere: triangles
 // straddle it), an open arc of 135 degrees seeded on or below it
 class CurvedCreaseEnds : public ::testing::TestWithParam<EndCase> {};

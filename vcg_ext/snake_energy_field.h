@@ -38,6 +38,11 @@ public:
     /// over which that level still pulls a snake towards it. 0 for a precise level. The
     /// engine scales a level's force by its reach (its slopes are that much gentler).
     virtual double Reach(int /*level*/) const { return 0; }
+    /// True when the field is linear inside each face (interpolated from vertex values): its
+    /// wells then follow the mesh's zigzag fold lines, and the engine averages level 0's slope
+    /// across the curve over about 1.5 triangles (SnakeSegmentMotion::acrossSlope). A field
+    /// evaluated at the point itself is exact there and is read as it is.
+    virtual bool FaceLinear() const { return false; }
 };
 
 /// The paper's energy (Sec. 6.1): values at the vertices, linear inside each face. Level 0
@@ -85,6 +90,7 @@ public:
         const int l = clampLevel(level);
         return l == 0 ? 0.0 : coarse[l - 1].reach;
     }
+    bool FaceLinear() const override { return true; }
     /// The value at vertex v on `level` (computes the coarse level's tile around v if needed).
     float VertexValue(int level, int v) const
     {
