@@ -149,8 +149,8 @@ def dist_seg(p, a, b):
     return math.dist(p, [a[i] + d[i] * t for i in range(3)])
 
 
-def dist_cube_edges(p):
-    best = 1e9
+def cube_edges():
+    """The 12 edges of the cube [-1, 1]^3 (data/icocube.ply), as point pairs."""
     for ax in range(3):
         u, w = (ax + 1) % 3, (ax + 2) % 3
         for s1 in (-1, 1):
@@ -159,8 +159,11 @@ def dist_cube_edges(p):
                 a[ax], b[ax] = -1.0, 1.0
                 a[u] = b[u] = s1
                 a[w] = b[w] = s2
-                best = min(best, dist_seg(p, a, b))
-    return best
+                yield a, b
+
+
+def dist_cube_edges(p):
+    return min(dist_seg(p, a, b) for a, b in cube_edges())
 
 
 def closest_on_triangle(p, a, b, c):
@@ -219,19 +222,7 @@ def dist_polyline(p, pl):
 
 
 def nearest_cube_edge(p):
-    best, seg = 1e9, None
-    for ax in range(3):
-        u, w = (ax + 1) % 3, (ax + 2) % 3
-        for s1 in (-1, 1):
-            for s2 in (-1, 1):
-                a, b = [0.0] * 3, [0.0] * 3
-                a[ax], b[ax] = -1.0, 1.0
-                a[u] = b[u] = s1
-                a[w] = b[w] = s2
-                d = dist_seg(p, a, b)
-                if d < best:
-                    best, seg = d, (a, b)
-    return seg
+    return min(cube_edges(), key=lambda e: dist_seg(p, *e))
 
 
 def load_snakes(path):
