@@ -583,9 +583,10 @@ private:
         for (const auto &x : p) c += x;
         c /= double(p.size());
         for (size_t i = 0; i < p.size(); ++i) area += (p[i] - c) ^ (p[(i + 1) % p.size()] - c);
-        for (const auto &s : st.samples) {
+        for (const auto &s : st.samples) { // in double: in float a tiny mesh's normal underflows to 0
             const FaceType &f = m.face[s.p.face];
-            normal += vcg::Point3d::Construct((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0)));
+            const vcg::Point3d a = vcg::Point3d::Construct(f.cP(0));
+            normal += (vcg::Point3d::Construct(f.cP(1)) - a) ^ (vcg::Point3d::Construct(f.cP(2)) - a);
         }
         return area * normal >= 0 ? 1.0 : -1.0;
     }

@@ -267,8 +267,7 @@ public:
                     t.normalize();
                     F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose();
                     if (level == 0 && faceLinear) { // the across slope, averaged (acrossSlope)
-                        const FaceType &ff = m.face[st.samples[i].p.face];
-                        const vcg::Point3d fn = vcg::Point3d::Construct((ff.cP(1) - ff.cP(0)) ^ (ff.cP(2) - ff.cP(0)));
+                        const vcg::Point3d fn = faceNormal(st.samples[i].p.face);
                         Eigen::Vector3d nrm = t.cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
                         double a;
                         if (nrm.norm() > 0 && acrossSlope(st.samples[i].p, nrm.normalized(), h, a))
@@ -287,15 +286,12 @@ public:
                 Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
                 if (!d.allFinite()) continue;
                 if (st.IsOpenEnd(i)) {
-                    d = acrossEnd<Eigen::Vector3d>(X, i, d);
-                    // in space "across the chord" is a plane: keep only the direction across it
-                    // in the sample's tangent plane (the rest slides the end along a crease)
+                    // in space "across the end tangent" is a plane: keep only the direction across
+                    // it in the sample's tangent plane (the rest slides the end along a crease)
                     const vcg::Point3d fn = faceNormal(st.samples[i].p.face);
                     Eigen::Vector3d a = endTangent<Eigen::Vector3d>(X, i).cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
-                    if (a.norm() > 0) {
-                        a.normalize();
-                        d = d.dot(a) * a;
-                    }
+                    if (a.norm() > 0) d = d.dot(a.normalized()) * a.normalized();
+                    else d = acrossEnd<Eigen::Vector3d>(X, i, d);
                 }
                 double len = d.norm();
                 double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
@@ -365,12 +361,6 @@ private:
         return true;
     }
 
-    /// The end condition of an open snake: its end samples move only across the curve, so the
-    /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
-    /// "Across" is measured against the direction over several samples (endTangent), not the
-    /// chord to the next one: while the snake still follows its seed path, a staircase of mesh
-    /// edges, the first chord can be 45 degrees off the feature, and moving across it slides the
-    /// end along the feature.
     /// A face's normal (not normalized), in double: in float the cross product of a tiny
     /// mesh's edges underflows (at 1e-30 it is about 1e-62).
     vcg::Point3d faceNormal(int f) const
@@ -379,6 +369,12 @@ private:
         const vcg::Point3d a = vcg::Point3d::Construct(ff.cP(0));
         return (vcg::Point3d::Construct(ff.cP(1)) - a) ^ (vcg::Point3d::Construct(ff.cP(2)) - a);
     }
+    /// The end condition of an open snake: its end samples move only across the curve, so the
+    /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
+    /// "Across" is measured against the direction over several samples (endTangent), not the
+    /// chord to the next one: while the snake still follows its seed path, a staircase of mesh
+    /// edges, the first chord can be 45 degrees off the feature, and moving across it slides the
+    /// end along the feature.
     template <class Vec>
     static Vec acrossEnd(const Eigen::MatrixXd &X, int j, Vec d)
     {
