@@ -262,13 +262,22 @@ TEST(EnergyField, SnakeFollowsAFieldEvaluatedAtSurfacePoints)
 }
 
 // ---------------------------------------------------------------- snake invariants
+// A closed loop 2.5 mean edges below the cylinder's rim.
+std::unique_ptr<Snake> LoopBelowRim(CMeshO &m, double &h)
+{
+    auto surf = PrepareCylinder(m);
+    h = surf->MeanEdge();
+    std::unique_ptr<Snake> s(new Snake(surf));
+    s->InitFromSeeds(CylinderRimSeeds(m, h, 2.5, 6), true);
+    return s;
+}
+
 TEST(GeometricSnake, FixedSamplesNeverMoveAndClosedStaysClosed)
 {
     CMeshO m;
-    auto surf = PrepareCylinder(m);
-    double h = surf->MeanEdge();
-    Snake s(surf);
-    s.InitFromSeeds(CylinderRimSeeds(m, h, 2.5, 6), true);
+    double h;
+    const auto snake = LoopBelowRim(m, h);
+    Snake &s = *snake;
     ASSERT_TRUE(s.Closed());
     int n = s.SampleCount();
     ASSERT_GT(n, 20);
@@ -318,34 +327,30 @@ TEST(GeometricSnake, TracedPolylineStaysOnSurface)
 TEST(GeometricSnake, PolylineIsTheShortestPathThroughItsFaces)
 {
     CMeshO m;
-    auto surf = PrepareCylinder(m);
-    double h = surf->MeanEdge();
-    Snake s(surf);
-    s.InitFromSeeds(CylinderRimSeeds(m, h, 2.5, 6), true);
+    double h;
+    const auto snake = LoopBelowRim(m, h);
+    Snake &s = *snake;
     for (int i = 0; i < 10; ++i) s.Step();
-    // before the polyline is read: re-tightening the traced crossings moves some of them
-    double before = 0;
-    for (const auto &g : s.Gaps()) {
-        if (!g.traced) continue;
-        std::vector<SurfacePoint> c = g.crossings;
-        PathTighten<CMeshO>::Tighten(m, g.tracedFrom, c, g.tracedTo);
-        for (size_t k = 0; k < c.size(); ++k) before = std::max(before, (c[k].Pd(m) - g.crossings[k].Pd(m)).Norm());
-    }
-    EXPECT_GT(before, 1e-4 * h);
-    const std::vector<SurfacePoint> pl = s.Polyline();
-    ASSERT_GT(pl.size(), s.Samples().size());
-    // read: every traced gap is already shortest (re-tightening moves nothing)
-    double after = 0;
+    // how far tightening the traced gaps again moves their crossings (and how many are traced)
+    auto retighten = [&](int &traced) {
+        double moved = 0;
+        traced = 0;
+        for (const auto &g : s.Gaps()) {
+            if (!g.traced) continue;
+            ++traced;
+            std::vector<SurfacePoint> c = g.crossings;
+            PathTighten<CMeshO>::Tighten(m, g.tracedFrom, c, g.tracedTo);
+            for (size_t k = 0; k < c.size(); ++k) moved = std::max(moved, (c[k].Pd(m) - g.crossings[k].Pd(m)).Norm());
+        }
+        return moved;
+    };
     int traced = 0;
-    for (const auto &g : s.Gaps()) {
-        if (!g.traced) continue;
-        ++traced;
-        std::vector<SurfacePoint> c = g.crossings;
-        PathTighten<CMeshO>::Tighten(m, g.tracedFrom, c, g.tracedTo);
-        for (size_t k = 0; k < c.size(); ++k) after = std::max(after, (c[k].Pd(m) - g.crossings[k].Pd(m)).Norm());
-    }
+    // before the polyline is read: the straight traces are off the shortest path
+    EXPECT_GT(retighten(traced), 1e-4 * h);
+    ASSERT_GT(s.Polyline().size(), s.Samples().size());
+    // read: every traced gap is already shortest
+    EXPECT_LT(retighten(traced), 1e-5 * h);
     EXPECT_GT(traced, 0);
-    EXPECT_LT(after, 1e-5 * h);
 }
 
 TEST(GeometricSnake, ScaleAndTranslationInvariant)
