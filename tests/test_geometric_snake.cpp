@@ -262,13 +262,22 @@ TEST(EnergyField, SnakeFollowsAFieldEvaluatedAtSurfacePoints)
 }
 
 // ---------------------------------------------------------------- snake invariants
+// A closed loop 2.5 mean edges below the cylinder's rim.
+std::unique_ptr<Snake> LoopBelowRim(CMeshO &m, double &h)
+{
+    auto surf = PrepareCylinder(m);
+    h = surf->MeanEdge();
+    std::unique_ptr<Snake> s(new Snake(surf));
+    s->InitFromSeeds(CylinderRimSeeds(m, h, 2.5, 6), true);
+    return s;
+}
+
 TEST(GeometricSnake, FixedSamplesNeverMoveAndClosedStaysClosed)
 {
     CMeshO m;
-    auto surf = PrepareCylinder(m);
-    double h = surf->MeanEdge();
-    Snake s(surf);
-    s.InitFromSeeds(CylinderRimSeeds(m, h, 2.5, 6), true);
+    double h;
+    const auto snake = LoopBelowRim(m, h);
+    Snake &s = *snake;
     ASSERT_TRUE(s.Closed());
     int n = s.SampleCount();
     ASSERT_GT(n, 20);
@@ -309,6 +318,39 @@ TEST(GeometricSnake, TracedPolylineStaysOnSurface)
         };
         EXPECT_TRUE(onFace(pl[i], b) || onFace(pl[i + 1], a)) << "polyline point " << i;
     }
+}
+
+// The motion leaves a gap's crossings on the straight segment of its embedding; the polyline
+// a caller reads is the shortest path through the same faces (issue 12: tightened where it is
+// read, between the samples the gap was traced between). On a cylinder the conformal map is not
+// an isometry, so the straight trace is measurably off that path.
+TEST(GeometricSnake, PolylineIsTheShortestPathThroughItsFaces)
+{
+    CMeshO m;
+    double h;
+    const auto snake = LoopBelowRim(m, h);
+    Snake &s = *snake;
+    for (int i = 0; i < 10; ++i) s.Step();
+    // how far tightening the traced gaps again moves their crossings (and how many are traced)
+    auto retighten = [&](int &traced) {
+        double moved = 0;
+        traced = 0;
+        for (const auto &g : s.Gaps()) {
+            if (!g.traced) continue;
+            ++traced;
+            std::vector<SurfacePoint> c = g.crossings;
+            PathTighten<CMeshO>::Tighten(m, g.tracedFrom, c, g.tracedTo);
+            for (size_t k = 0; k < c.size(); ++k) moved = std::max(moved, (c[k].Pd(m) - g.crossings[k].Pd(m)).Norm());
+        }
+        return moved;
+    };
+    int traced = 0;
+    // before the polyline is read: the straight traces are off the shortest path
+    EXPECT_GT(retighten(traced), 1e-4 * h);
+    ASSERT_GT(s.Polyline().size(), s.Samples().size());
+    // read: every traced gap is already shortest
+    EXPECT_LT(retighten(traced), 1e-5 * h);
+    EXPECT_GT(traced, 0);
 }
 
 TEST(GeometricSnake, ScaleAndTranslationInvariant)

@@ -315,6 +315,7 @@ public:
     int InsertSample(int gap)
     {
         if (gap < 0 || gap >= numGaps()) throw SnakeError("Geometric snake: no gap " + std::to_string(gap) + ".");
+        tightenGaps();
         std::vector<SurfacePoint> pts = gapPoints(gap);
         std::vector<vcg::Point3d> xyz;
         for (auto &p : pts) xyz.push_back(p.Pd(surf->Mesh()));
@@ -410,6 +411,8 @@ public:
     const std::vector<SurfacePoint> &SeedPoints() const { return seedPoints; }
     const std::vector<SnakeSample> &InitialSamples() const { return initialSamples; }
     const std::vector<SurfacePoint> &InitialPolyline() const { return initialPolyline; }
+    /// The traced gaps; their crossings are the shortest path through their faces only once
+    /// Polyline() has been read since the last operation (the motion reads their faces).
     const std::vector<Gap> &Gaps() const { return st.gaps; }
 
     std::vector<vcg::Point3d> positions() const
@@ -428,6 +431,7 @@ public:
         bool missing = false;
         for (const auto &g : st.gaps) missing |= !g.traced;
         if (missing && st.samples.size() >= 2) retrace();
+        tightenGaps();
         std::vector<SurfacePoint> out;
         int n = int(st.samples.size());
         for (int i = 0; i < n; ++i) {
@@ -792,6 +796,17 @@ private:
         vcg::Point3d pa = a.Pd(m), pb = b.Pd(m);
         vcg::Point3d q = pa * (1 - t) + pb * t;
         return SurfaceProjection<MeshType>::Closest(*surf, a.face, q, 2 * (pb - pa).Norm() + st.unit);
+    }
+
+    /// The shortest path through each traced gap's faces (path_tighten.h), once per trace,
+    /// where the polyline is read: the motion does not read the crossings.
+    void tightenGaps()
+    {
+        for (auto &gap : st.gaps)
+            if (gap.traced && gap.tightenPending) {
+                PathTighten<MeshType>::Tighten(surf->Mesh(), gap.tracedFrom, gap.crossings, gap.tracedTo);
+                gap.tightenPending = false;
+            }
     }
 
     /// Points strictly inside gap i (edge crossings); falls back to the shared-edge

@@ -96,6 +96,12 @@ struct SnakeGap
     std::vector<int> faces;
     std::vector<SurfacePoint> crossings;
     bool traced = false;
+    /// The crossings still lie on the straight segment of the embedding: the shortest path
+    /// through the same faces (path_tighten.h) is taken when the polyline is read, between the
+    /// ends the gap was traced between. The motion reads only `faces`, so tightening every
+    /// gap of every operation (half of an operation, issue 12) changed nothing it used.
+    bool tightenPending = false;
+    SurfacePoint tracedFrom, tracedTo;
 };
 
 /// The state of one snake that undo restores: samples, the traced gaps between them, the

@@ -16,7 +16,6 @@
 #include <vcg_ext/conformal_param.h>
 #include <vcg_ext/face_path.h>
 #include <vcg_ext/local_region.h>
-#include <vcg_ext/path_tighten.h>
 #include <vcg_ext/region_walk.h>
 #include <vcg_ext/snake_curve.h>
 #include <vcg_ext/snake_partition.h>
@@ -217,6 +216,7 @@ public:
             gap.faces.clear();
             gap.crossings.clear();
             gap.traced = false;
+            gap.tightenPending = false;
             if (w.exited) { // leaves the region (non-convex border): re-project next time
                 E.valid = false;
                 gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[a]].p.face, st.samples[seg.idx[b]].p.face);
@@ -230,8 +230,11 @@ public:
             gap.faces.push_back(region.faces[w.face]);
             gap.faces.push_back(region.faces[lf[b]]);
             // straight in the plane is not shortest on the surface where the embedding is
-            // distorted (slivers): the shortest path through the same faces (path_tighten.h)
-            PathTighten<MeshType>::Tighten(surf->Mesh(), st.samples[seg.idx[a]].p, gap.crossings, st.samples[seg.idx[b]].p);
+            // distorted (slivers): the shortest path through the same faces (path_tighten.h),
+            // taken when the polyline is read (GeometricSnake::tightenGaps)
+            gap.tightenPending = true;
+            gap.tracedFrom = st.samples[seg.idx[a]].p;
+            gap.tracedTo = st.samples[seg.idx[b]].p;
             gap.traced = true;
         }
     }
