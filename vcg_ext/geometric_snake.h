@@ -246,8 +246,7 @@ public:
     /// One snake operation (Sec. 4.3, Fig. 1): partition, then for every segment build the
     /// local region, embed it, map samples and energy gradients into the plane, do up to
     /// `updatesPerOperation` updates of Eq. 4 and map back; then the overlapping segments
-    /// across the borders. Returns the largest sample move, each in its local length unit
-    /// (LocalUnit(): LengthScale() where the mesh is as fine as along the seeds).
+    /// across the borders. Returns the largest sample move in local length units (LengthScale()).
     double Step()
     {
         if (st.samples.empty()) throw SnakeError("Geometric snake: the snake has no samples.");
@@ -260,7 +259,7 @@ public:
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
         else motion.StepProjection(st, stats, frame());
         std::vector<vcg::Point3d> after = positions();
-        double maxMove = curveMove(before, after, localUnits());
+        double maxMove = curveMove(before, after) / st.unit;
         stats.lastMaxMove = maxMove;
         stats.operations++;
         updateConvergence(maxMove, after);
@@ -396,19 +395,9 @@ public:
     int SampleCount() const { return int(st.samples.size()); }
     bool Closed() const { return st.closed; }
     const SnakeParams &Params() const { return st.params; }
-    /// The snake's length unit: spacing is measured in it. The median edge length of its seed
-    /// path (a local scale: meshes mix sizes).
+    /// The snake's length unit: spacing, step caps and tolerances are measured in it. The
+    /// median edge length of its seed path (a local scale: meshes mix sizes).
     double LengthScale() const { return st.unit; }
-    /// Sample i's local length unit: LengthScale() times how much coarser the energy field
-    /// (the mesh, for the vertex energy) is at the sample than along the seeds. The coarse
-    /// levels' probes, the span of level 0's across slope and the convergence tolerance of that
-    /// sample are measured in it, and its force is scaled by it (the step caps are the width
-    /// of its triangle, local already).
-    double LocalUnit(int i) const
-    {
-        checkIndex(i);
-        return st.unit * st.Local(surf->EnergyField().Scale(st.samples[i].p));
-    }
     const SnakeStats &Stats() const { return stats; }
     bool Converged() const { return stats.converged; }
     /// The level of the energy pyramid the snake slithers on: the coarsest while capturing,
@@ -577,10 +566,8 @@ private:
         SnakeMotionFrame f;
         f.level = energyLevel();
         f.unit = st.unit;
-        // a coarse level's slopes are gentler by its reach: scale its force back up. The reach at
-        // a sample is Reach * Scale(p), its unit st.unit * Scale(p) / scaleRef: their ratio is
-        // the same all along the snake.
-        const double reach = surf->EnergyField().Reach(f.level) * st.scaleRef;
+        // a coarse level's slopes are gentler by its reach: scale its force back up
+        const double reach = surf->EnergyField().Reach(f.level);
         if (reach > 0 && st.unit > 0) f.gain = std::min(16.0, std::max(1.0, reach / st.unit));
         if (st.closed && st.params.balloon != 0) f.outside = orientation();
         return f;
@@ -662,9 +649,7 @@ private:
     }
 
     /// The samples sit in wells of `level`: across the curve, the energy rises on both sides
-    /// (probes one local length unit away, projected onto the surface) at >= 90 % of the free
-    /// samples. Local: where the mesh is coarser than along the seeds, probes one seed unit away
-    /// stay inside the sample's triangle, where the energy is linear and never rises on both sides.
+    /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
     /// The probes stop as soon as the answer is known (it runs after most operations on a
     /// coarse level: two projections per sample cost more than the operation itself).
     bool inWells(int level) const
@@ -695,7 +680,7 @@ private:
             const int i = probes[k].first;
             const vcg::Point3d &across = probes[k].second;
             const SnakeSample &s = st.samples[i];
-            const double e = surf->EnergyAt(level, s.p), d = st.unit * st.Local(surf->EnergyField().Scale(s.p));
+            const double e = surf->EnergyAt(level, s.p), d = st.unit;
             const SurfacePoint q1 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * d, 3 * d);
             if (!(e <= surf->EnergyAt(level, q1) + 1e-6)) continue;
             const SurfacePoint q2 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] - across * d, 3 * d);
@@ -704,11 +689,9 @@ private:
         return count == 0 || in >= need;
     }
 
-    /// How far the curve moved: each new sample's distance to the old curve near it, in its
-    /// local unit (`units`, mesh lengths). Sliding along the curve does not change the curve,
-    /// so it does not count.
-    double curveMove(const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b,
-                     const std::vector<double> &units) const
+    /// How far the curve moved: each new sample's distance to the old curve near it. Sliding
+    /// along the curve does not change the curve, so it does not count.
+    double curveMove(const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b) const
     {
         const int n = int(a.size());
         if (int(b.size()) != n) return 1e9;
@@ -724,34 +707,13 @@ private:
                 double t = L2 > 0 ? std::max(0.0, std::min(1.0, ((b[i] - a[j0]) * d) / L2)) : 0.0;
                 best = std::min(best, (b[i] - (a[j0] + d * t)).Norm());
             }
-            worst = std::max(worst, best / units[i]);
+            worst = std::max(worst, best);
         }
         return worst;
     }
 
-    /// Every sample's local unit (LocalUnit), in mesh lengths.
-    std::vector<double> localUnits() const
-    {
-        std::vector<double> u;
-        u.reserve(st.samples.size());
-        for (const auto &s : st.samples) u.push_back(st.unit * st.Local(surf->EnergyField().Scale(s.p)));
-        return u;
-    }
-    /// The field's Scale where the samples are (median): their local units are relative to it.
-    /// Taken anew whenever a run restarts (new samples, edits, another energy field).
-    void takeScaleRef()
-    {
-        std::vector<double> v;
-        for (const auto &s : st.samples) v.push_back(surf->EnergyField().Scale(s.p));
-        v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !(x > 0) || !std::isfinite(x); }), v.end());
-        if (v.empty()) { st.scaleRef = 1; return; }
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        st.scaleRef = v[v.size() / 2];
-    }
-
     void resetRun()
     {
-        takeScaleRef();
         motion.ForgetEmbeddings(); // samples were placed anew: regions are built around them
         for (auto &smp : st.samples) smp.trust = 1.0;
         stage = -1;
@@ -911,7 +873,7 @@ private:
         if (int(posHistory.size()) == 2 * W + 1) {
             // net displacement of the curve over the window against the way travelled: a curve
             // that only jitters in place (a sample bouncing at a corner) has gone nowhere
-            double net = curveMove(posHistory.front(), posHistory.back(), localUnits());
+            double net = curveMove(posHistory.front(), posHistory.back()) / st.unit;
             double travelled = std::accumulate(travelHistory.begin(), travelHistory.end(), 0.0);
             oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
         }

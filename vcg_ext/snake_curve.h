@@ -106,14 +106,7 @@ struct SnakeCurve
     std::vector<SnakeGap> gaps;
     bool closed = false;
     SnakeParams params;
-    double unit = 1; ///< the length unit of positions and spacing (the scale along the seed path)
-    /// The energy field's Scale (SnakeEnergyField::Scale) where the samples were placed (median):
-    /// step caps, probes and tolerances of a sample at p are measured in its local unit,
-    /// unit * Local(Scale(p)), so that one snake runs over fine and coarse triangles alike.
-    double scaleRef = 1;
-    /// A sample's local unit relative to `unit` where the field's Scale is `scale` (1 on a mesh
-    /// of one size).
-    double Local(double scale) const { return scaleRef > 0 && scale > 0 && std::isfinite(scale) ? scale / scaleRef : 1; }
+    double unit = 1; ///< the length unit of positions, spacing, step caps and tolerances (local scale)
 
     int NumGaps() const
     {
@@ -138,7 +131,7 @@ struct SnakeCurve
 struct SnakeMotionFrame
 {
     int level = 0;
-    double gain = 1; ///< the level's, in a sample's local unit; the motion scales it by Local() (localGain)
+    double gain = 1;
     double unit = 1;
     double outside = 0;
 };

@@ -38,11 +38,6 @@ public:
     /// over which that level still pulls a snake towards it. 0 for a precise level. The
     /// engine scales a level's force by its reach (its slopes are that much gentler).
     virtual double Reach(int /*level*/) const { return 0; }
-    /// The field's local length at p relative to its nominal one (issue 9: meshes mix edge
-    /// lengths 10-100x): there the wells of `level` reach Reach(level) * Scale(p), and the
-    /// engine measures step caps, probes and tolerances of a sample at p in its own length unit
-    /// times Scale(p) / (Scale at its seeds). 1 for a field of one scale everywhere.
-    virtual double Scale(const SurfacePoint & /*p*/) const { return 1; }
     /// True when the field is linear inside each face (interpolated from vertex values): its
     /// wells then follow the mesh's zigzag fold lines, and the engine averages level 0's slope
     /// across the curve over about 1.5 triangles (SnakeSegmentMotion::acrossSlope). A field
@@ -61,21 +56,12 @@ public:
 /// decays like exp(-d / r) away from a feature: long tails, so a coarse level still has a
 /// slope several r away, where a Gaussian of the same width is flat.
 ///
-/// The reach can vary over the mesh (`scale`, one relative length per vertex, e.g. the local
-/// edge length over its median): r becomes r * scale on each face (r^2 weighs that face's
-/// cotangent terms, a diffusion of varying conductivity), so a level's wells reach as many
-/// local edge lengths where the mesh is coarse as where it is fine. With one reach for the
-/// whole mesh, a mesh graded 20x has coarse levels that reach 8 fine edges but less than one
-/// coarse one.
-///
 /// Coarse levels are computed lazily, tile by tile, only where a snake reads them (issue 12:
 /// solving them on the whole mesh took 6 s on 1.2M faces, for snakes that touch a few
 /// percent of it). Space is cut into cubes of side 6r (tiles, fixed by the mesh's bounding
 /// box, so a vertex's value does not depend on which snake asked first); a tile's values come
 /// from the heat step solved on the faces of the tile and its 26 neighbours, a margin of 6r
-/// where the kernel has decayed to exp(-6) = 0.25 %. With a varying reach, r is the reach at
-/// the 99th percentile of the vertex scales (where it is larger, its tail is cut at the
-/// margin: a slightly shallower well). When that neighbourhood holds half the
+/// where the kernel has decayed to exp(-6) = 0.25 %. When that neighbourhood holds half the
 /// mesh or more, the level is solved on the whole mesh at once. The renormalization needs the
 /// level's lowest and highest values: they are found where a box filter of the energy at
 /// scale r is lowest and highest (cells of side r), by solving the tiles there first.
@@ -88,31 +74,14 @@ public:
 
     /// `energy`: one value in [0,1] per mesh vertex (deleted vertices ignored).
     /// `reach`: the reach of each coarser level in mesh length units, increasing, e.g. {2h, 4h, 8h}.
-    /// `scale`: empty (one reach everywhere) or one relative length per vertex (> 0): the reach
-    /// at a vertex is reach * scale (see Scale()).
-    VertexEnergyField(const MeshType &m, std::vector<float> energy, const std::vector<double> &reach = {},
-                      std::vector<double> scale = {})
-        : mesh(m), base(std::move(energy)), vertScale(std::move(scale))
+    VertexEnergyField(const MeshType &m, std::vector<float> energy, const std::vector<double> &reach = {})
+        : mesh(m), base(std::move(energy))
     {
         for (double x : reach)
             if (x > 0 && std::isfinite(x) && (coarse.empty() || x > coarse.back().reach)) {
                 coarse.emplace_back();
                 coarse.back().reach = x;
             }
-        if (vertScale.size() != mesh.vert.size()) vertScale.clear();
-        for (double &x : vertScale)
-            if (!(x > 0) || !std::isfinite(x)) x = 1;
-        tileScale = 1;
-        if (!vertScale.empty()) { // the 99th percentile over live vertices
-            std::vector<double> v;
-            for (size_t i = 0; i < vertScale.size(); ++i)
-                if (!mesh.vert[i].IsD()) v.push_back(vertScale[i]);
-            if (!v.empty()) {
-                const size_t k = std::min(v.size() - 1, size_t(0.99 * double(v.size() - 1) + 0.5));
-                std::nth_element(v.begin(), v.begin() + k, v.end());
-                tileScale = std::max(1.0, v[k]);
-            }
-        }
     }
 
     int Levels() const override { return 1 + int(coarse.size()); }
@@ -122,15 +91,6 @@ public:
         return l == 0 ? 0.0 : coarse[l - 1].reach;
     }
     bool FaceLinear() const override { return true; }
-    /// The relative length at p: the vertex scales interpolated in p's face (1 without any).
-    double Scale(const SurfacePoint &p) const override
-    {
-        if (vertScale.empty()) return 1;
-        const FaceType &f = mesh.face[p.face];
-        double s = 0;
-        for (int k = 0; k < 3; ++k) s += p.bary[k] * vertScale[idx(f.cV(k))];
-        return s > 0 && std::isfinite(s) ? s : 1;
-    }
     /// The value at vertex v on `level` (computes the coarse level's tile around v if needed).
     float VertexValue(int level, int v) const
     {
@@ -223,8 +183,6 @@ private:
 
     const MeshType &mesh;
     std::vector<float> base;
-    std::vector<double> vertScale; // relative reach per vertex (empty: 1)
-    double tileScale = 1;          // the scale the tiles are sized for
     mutable std::vector<Level> coarse;
     // shared by the levels, built at the first read of a coarse level
     mutable vcg::Box3d box;
@@ -304,7 +262,7 @@ private:
         L.done.assign(nv, 0);
         for (size_t v = 0; v < nv; ++v)
             if (mesh.vert[v].IsD()) L.raw[v] = base[v], L.done[v] = 1;
-        L.tiles.Init(box, 6 * r * tileScale, MaxCells());
+        L.tiles.Init(box, 6 * r, MaxCells());
         L.binStart.assign(L.tiles.Count() + 1, 0);
         for (int fi : liveFaces) ++L.binStart[L.tiles.Cell(centre[fi]) + 1];
         for (int t = 0; t < L.tiles.Count(); ++t) L.binStart[t + 1] += L.binStart[t];
@@ -340,14 +298,13 @@ private:
         for (int v : {loV, hiV}) {
             if (v < 0) continue;
             std::vector<int> faces;
-            const double rv = r * (vertScale.empty() ? 1.0 : vertScale[v]);
-            vcg::Box3d around(vpos(v), 6 * rv);
+            vcg::Box3d around(vpos(v), 6 * r);
             const bool global = regionFaces(L, around, faces);
             std::vector<int> verts;
             Eigen::VectorXd u;
             heatStep(r, faces, verts, u);
             if (global) store(L, verts, u, -1);
-            const vcg::Box3d near(vpos(v), 2 * rv);
+            const vcg::Box3d near(vpos(v), 2 * r);
             for (size_t i = 0; i < verts.size(); ++i)
                 if (global || near.IsIn(vpos(verts[i]))) lo = std::min(lo, u[i]), hi = std::max(hi, u[i]);
             if (global) break; // exact range from the whole mesh
@@ -401,8 +358,7 @@ private:
         store(L, verts, u, global ? -1 : t);
     }
 
-    /// (M + r^2 L) u = M e on the given faces (r times the face's mean vertex scale on each
-    /// face; the cut is a free, zero-flux border), by
+    /// (M + r^2 L) u = M e on the given faces (the cut is a free, zero-flux border), by
     /// conjugate gradients from u = e. `verts` receives the vertices, in the order of u.
     void heatStep(double r, const std::vector<int> &faces, std::vector<int> &verts, Eigen::VectorXd &u) const
     {
@@ -427,16 +383,11 @@ private:
             const double a2 = ((q[1] - q[0]) ^ (q[2] - q[0])).Norm();
             if (!(a2 > 0) || !std::isfinite(a2)) continue;
             areaSum += a2 / 2, ++used;
-            double rf2 = r2;
-            if (!vertScale.empty()) {
-                const double sf = (vertScale[idx(f.cV(0))] + vertScale[idx(f.cV(1))] + vertScale[idx(f.cV(2))]) / 3;
-                rf2 = r2 * sf * sf;
-            }
             for (int k = 0; k < 3; ++k) {
                 mass[vi[k]] += a2 / 6;
                 const int a = vi[(k + 1) % 3], b = vi[(k + 2) % 3];
                 const double c = (q[(k + 1) % 3] - q[k]) * (q[(k + 2) % 3] - q[k]) / a2; // cot of the angle at k
-                const double w = 0.5 * std::min(1e3, std::max(0.0, c)) * rf2;
+                const double w = 0.5 * std::min(1e3, std::max(0.0, c)) * r2;
                 t.emplace_back(a, b, -w), t.emplace_back(b, a, -w);
                 t.emplace_back(a, a, w), t.emplace_back(b, b, w);
             }

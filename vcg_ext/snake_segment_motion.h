@@ -147,9 +147,7 @@ public:
                     // samples towards the strongest spots (corners) and bunch them there.
                     const Eigen::Vector2d g = gradient(lf[j], B.row(j));
                     slope[j] = g.norm();
-                    const double loc = st.Local(surf->EnergyField().Scale(SurfacePoint(region.faces[lf[j]], toPoint(B.row(j)))));
-                    const double w = st.params.externalWeight * fr.gain * localGain(loc);
-                    Eigen::Vector2d f = w * g;
+                    Eigen::Vector2d f = st.params.externalWeight * fr.gain * g;
                     Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
                                          X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
                     if (t.norm() > 0) {
@@ -158,7 +156,8 @@ public:
                         if (level == 0 && faceLinear) { // the across slope, averaged (see acrossSlope)
                             const Eigen::Vector2d nrm(t.y(), -t.x());
                             double a;
-                            if (acrossSlope(E, lf[j], X.row(j).transpose(), nrm, loc, a)) f = w * a * nrm;
+                            if (acrossSlope(E, lf[j], X.row(j).transpose(), nrm, a))
+                                f = st.params.externalWeight * fr.gain * a * nrm;
                         }
                         // balloon (beyond the paper, as in image snakes): a pressure along the
                         // outward normal; f is a gradient, so it pushes against it
@@ -250,7 +249,7 @@ public:
         for (int i = 0; i < n; ++i) fixed[i] = st.samples[i].fixed;
         SnakeSpline &spline = splineFor(st.params, n, st.closed, fixed);
         Eigen::MatrixXd X(n, 3), F(n, 3);
-        std::vector<double> slope(n, 0.0), loc(n, 1.0);
+        std::vector<double> slope(n, 0.0);
         for (int u = 0; u < st.params.updatesPerOperation; ++u) {
             auto tu = clock::now();
             for (int i = 0; i < n; ++i) {
@@ -258,8 +257,7 @@ public:
                 X.row(i) << p[0], p[1], p[2];
                 vcg::Point3d g = surf->EnergyGradient(level, st.samples[i].p) * h; // per edge length
                 slope[i] = g.Norm();
-                loc[i] = st.Local(surf->EnergyField().Scale(st.samples[i].p));
-                g *= st.params.externalWeight * fr.gain * localGain(loc[i]);
+                g *= st.params.externalWeight * fr.gain;
                 F.row(i) << g[0], g[1], g[2];
             }
             for (int i = 0; i < n; ++i) { // the feature force across the curve only (see moveSegment)
@@ -273,9 +271,8 @@ public:
                         const vcg::Point3d fn = vcg::Point3d::Construct((ff.cP(1) - ff.cP(0)) ^ (ff.cP(2) - ff.cP(0)));
                         Eigen::Vector3d nrm = t.cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
                         double a;
-                        if (nrm.norm() > 0 && acrossSlope(st.samples[i].p, nrm.normalized(), h * loc[i], a))
-                            F.row(i) = st.params.externalWeight * fr.gain * localGain(loc[i]) * a * h *
-                                       nrm.normalized().transpose();
+                        if (nrm.norm() > 0 && acrossSlope(st.samples[i].p, nrm.normalized(), h, a))
+                            F.row(i) = st.params.externalWeight * fr.gain * a * h * nrm.normalized().transpose();
                     }
                     if (fr.outside != 0) { // balloon: outward = tangent x face normal for a counter-clockwise curve
                         const vcg::Point3d n = faceNormal(st.samples[i].p.face);
@@ -306,7 +303,7 @@ public:
                 Eigen::Vector3d q = X.row(i).transpose() + d;
                 vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
                 SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
-                                                                       d.norm() * h + 1.5 * h * loc[i]);
+                                                                       d.norm() * h + 1.5 * h);
                 if (st.IsOpenEnd(i)) { // the projection, too, can slide an end along a crease: undo that
                     Eigen::Vector3d t = endTangent<Eigen::Vector3d>(X, i);
                     const vcg::Point3d y = np.Pd(m) / h;
@@ -314,7 +311,7 @@ public:
                     if (along != 0) {
                         const Eigen::Vector3d q2 = q - along * t.normalized();
                         np = SurfaceProjection<MeshType>::Closest(*surf, np.face, vcg::Point3d(q2[0] * h, q2[1] * h, q2[2] * h),
-                                                                  d.norm() * h + 1.5 * h * loc[i] + std::abs(along) * h);
+                                                                  d.norm() * h + 1.5 * h + std::abs(along) * h);
                     }
                 }
                 UpdateTrust(st.samples[i].trust, level, surf->EnergyAt(level, st.samples[i].p), surf->EnergyAt(level, np),
@@ -326,14 +323,6 @@ public:
         }
         for (auto &g : st.gaps) g = SnakeGap(); // traced lazily by Polyline()
     }
-
-    /// The force of a sample whose local unit is `loc` times the snake's (SnakeCurve::Local) is
-    /// scaled by loc: its slope per plane unit is loc times gentler than where the mesh is as
-    /// fine as along the seeds, so Eq. 4 moves it as far per update (in plane units) as a
-    /// sample there. loc^2 (as many of its own edge lengths) was tried on the graded cube: the
-    /// coarse end, pulled that hard, flowed round the nearby cube corner (p95 2.6 and 4.3 local
-    /// edges with the embedding, against 0.5 and 1.2 with loc).
-    static double localGain(double loc) { return loc; }
 
     /// Step control (both methods). The energy is piecewise linear, so its force does not
     /// vanish at the bottom of a well and a sample would bounce across it by |f|/gamma: a move
@@ -366,7 +355,7 @@ private:
         hi = surf->EnergyAt(0, SurfaceProjection<MeshType>::Closest(*surf, p.face, x + n * r, 2 * r));
         return true;
     }
-    /// acrossSlope for the projection method (`unit`: the sample's local length unit).
+    /// acrossSlope for the projection method (`unit`: the snake's length unit).
     bool acrossSlope(const SurfacePoint &p, const Eigen::Vector3d &nrm, double unit, double &slope) const
     {
         const double r = kAcrossReach * std::min(faceWidth(p.face, nrm), unit);
@@ -597,14 +586,13 @@ private:
     /// (beta) cannot straighten the curve: turns of 11-18 degrees between segments on a
     /// straight crease (level 0 alone). The slope across the curve is taken instead as the central difference
     /// of the energy from -r to +r, r = kAcrossReach times the width of the sample's triangle
-    /// in that direction (at most that times the local unit): the mean slope over that
+    /// in that direction (at most that times the length unit): the mean slope over that
     /// stretch, i.e. level 0 box-smoothed across the curve over about one and a half triangles.
     /// Near the bottom it fades linearly, a spring, and beta wins against the zigzag; farther
     /// out it is the slope itself. False when a probe leaves the region.
-    bool acrossSlope(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &nrm, double loc,
-                     double &slope)
+    bool acrossSlope(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &nrm, double &slope)
     {
-        const double r = kAcrossReach * std::min(widthAlong(E, t, nrm), loc); // plane units: loc = the local unit
+        const double r = kAcrossReach * std::min(widthAlong(E, t, nrm), 1.0); // plane units: 1 = the length unit
         double lo, hi;
         if (!acrossEnergies(E, t, x, nrm, r, lo, hi)) return false;
         slope = (hi - lo) / (2 * r);

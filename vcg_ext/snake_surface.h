@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -45,7 +44,6 @@ public:
         if (!VertexFaceCurrent(m)) tri::UpdateTopology<MeshType>::VertexFace(m);
         tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
         meanEdge = MeshValidation<MeshType>::MeanEdgeLength(m);
-        computeLocalEdge();
         faceCount = int(m.face.size());
         vertCount = int(m.vert.size());
         faceStamp.assign(m.face.size(), 0);
@@ -112,11 +110,8 @@ public:
 
     /// Coarse-to-fine capture (beyond the paper): besides the energy E read from quality
     /// (level 0, precise), a pyramid of smoothings of E (Sec. 6.3, by distance: see
-    /// VertexEnergyField) whose wells reach `steps` local edge lengths on the coarsest level,
-    /// half that on the next, ... down to about 2 (at most 4 coarse levels): the nominal reach
-    /// (Reach(level)) in mean edge lengths, times LocalEdge over the mean edge at each vertex
-    /// (the field's Scale), so that on a mesh graded 20x the coarse part is captured from as
-    /// many of its own edges away as the fine part. Snakes first
+    /// VertexEnergyField) whose wells reach `steps` mean edge lengths on the coarsest level,
+    /// half that on the next, ... down to about 2 (at most 4 coarse levels). Snakes first
     /// slither on the coarsest level, whose wide basins capture features several edge lengths
     /// away, and step down a level each time they sit in its wells, ending on level 0, whose
     /// narrow wells localize the feature. 0: one level only. Replaces a field set by SetEnergyField.
@@ -126,7 +121,7 @@ public:
         captureSteps = steps;
         std::vector<double> reach;
         for (double r = steps; r >= 1.5 && reach.size() < 4; r /= 2) reach.insert(reach.begin(), r * meanEdge);
-        field = std::make_shared<VertexEnergyField<MeshType>>(mesh, energy, reach, relativeEdge);
+        field = std::make_shared<VertexEnergyField<MeshType>>(mesh, energy, reach);
     }
     int CaptureSmoothing() const { return captureSteps; }
 
@@ -147,8 +142,6 @@ public:
     MeshType &Mesh() { return mesh; }
     const MeshType &Mesh() const { return mesh; }
     double MeanEdge() const { return meanEdge; }
-    /// The mesh's local edge length at each vertex (see computeLocalEdge), in double.
-    const std::vector<double> &LocalEdge() const { return localEdge; }
     /// The vertex energy read from quality, in [0,1] (level 0 of the default field).
     const std::vector<float> &Energy() const { return energy; }
     /// Warnings about the energy (constant field, NaN values), for the Log.
@@ -198,62 +191,6 @@ private:
     std::vector<float> energy;
     std::shared_ptr<const SnakeEnergyField<MeshType>> field;
     std::vector<std::string> warnings;
-    std::vector<double> localEdge, relativeEdge; // per vertex; relative: over the mean edge
-
-    /// A robust local edge length per vertex (issue 9: meshes mix sizes 10-100x): the median
-    /// length of the edges of the faces around it (one sliver does not move it), then averaged
-    /// twice over the faces around it in log (a geometric mean: the field varies over a few
-    /// rings, not from one triangle to the next), times the median over the vertices of their
-    /// edges' mean over median (the triangles' shape: 1 for equilateral ones, 1.14 for a grid's
-    /// right triangles), so that on a uniform mesh it is the mean edge length. Relative to that:
-    /// the field's Scale, 1 on a uniform mesh, where the pyramid is the one of one reach.
-    /// Vertices on no face get the mean edge.
-    void computeLocalEdge()
-    {
-        const size_t nv = mesh.vert.size();
-        localEdge.assign(nv, meanEdge);
-        // in log of the length over the mean edge: exact under a power-of-two scaling of the mesh
-        // (test_any_scale), which the log of the length itself is not
-        const double h = meanEdge > 0 && std::isfinite(meanEdge) ? meanEdge : 1.0;
-        std::vector<double> logL(nv, 0.0), l, shape;
-        for (size_t v = 0; v < nv; ++v) {
-            if (mesh.vert[v].IsD()) continue;
-            l.clear();
-            for (vcg::face::VFIterator<FaceType> vfi(&mesh.vert[v]); !vfi.End(); ++vfi)
-                for (int k = 0; k < 3; ++k)
-                    l.push_back(vcg::Distance(vcg::Point3d::Construct(vfi.F()->cP(k)),
-                                              vcg::Point3d::Construct(vfi.F()->cP((k + 1) % 3))));
-            l.erase(std::remove_if(l.begin(), l.end(), [](double x) { return !(x > 0) || !std::isfinite(x); }), l.end());
-            if (l.empty()) continue;
-            std::nth_element(l.begin(), l.begin() + l.size() / 2, l.end());
-            const double med = l[l.size() / 2];
-            logL[v] = std::log(med / h);
-            shape.push_back(std::accumulate(l.begin(), l.end(), 0.0) / double(l.size()) / med);
-        }
-        double form = 1; // the triangles' shape factor (mean over median)
-        if (!shape.empty()) {
-            std::nth_element(shape.begin(), shape.begin() + shape.size() / 2, shape.end());
-            if (shape[shape.size() / 2] > 0 && std::isfinite(shape[shape.size() / 2])) form = shape[shape.size() / 2];
-        }
-        std::vector<double> sum(nv), cnt(nv);
-        for (int pass = 0; pass < 2; ++pass) {
-            std::fill(sum.begin(), sum.end(), 0.0);
-            std::fill(cnt.begin(), cnt.end(), 0.0);
-            for (const FaceType &f : mesh.face) {
-                if (f.IsD()) continue;
-                const double mean = (logL[Idx(f.cV(0))] + logL[Idx(f.cV(1))] + logL[Idx(f.cV(2))]) / 3;
-                for (int k = 0; k < 3; ++k) sum[Idx(f.cV(k))] += mean, cnt[Idx(f.cV(k))] += 1;
-            }
-            for (size_t v = 0; v < nv; ++v)
-                if (cnt[v] > 0) logL[v] = sum[v] / cnt[v];
-        }
-        relativeEdge.assign(nv, 1.0);
-        for (size_t v = 0; v < nv; ++v) {
-            const double rel = form * std::exp(logL[v]);
-            if (cnt[v] > 0 && rel > 0 && std::isfinite(rel)) relativeEdge[v] = rel;
-            localEdge[v] = relativeEdge[v] * h;
-        }
-    }
 
     /// Quality -> energy in [0,1] and warnings (see SetEnergyFromQuality).
     void readQuality()
