@@ -167,12 +167,12 @@ EndReport RunOnChamfer(const EndCase &c, bool fineOnly = false)
 
 // Observed: the last 2-3 samples of an open snake hooked off towards the nearby second crease
 // (and whole stretches of the curve zigzagged between the two creases, or it ended on the
-// second crease: p95 4.1 local edges): the coarse levels merge the two creases into one well
-// between them, and the snake, pulled across the first crease into that well, rolls down
-// either side at the switch to level 0. DISABLED: not fixed yet (issue 9). A coarse move that
-// stops on a level-0 well across the curve fixes these cases (all pass, turns 7.9-9.6 deg) but
-// breaks the closed snakes' capture on the octahedron (branch r9-stop-wip).
-TEST_P(StraightCreaseEnds, DISABLED_EndsHoldSpanStaysNoHook)
+// second crease: p95 4.0-4.1 local edges): the coarse levels merge the two creases into one well
+// between them, and the snake, pulled across the first crease into that well, rolled down
+// either side at the switch to level 0. Now a sample of an open snake that crosses a
+// feature-like level-0 well running along the curve, which the coarse level leads past, is held
+// on level 0 (SnakeSegmentMotion::HoldAtWell).
+TEST_P(StraightCreaseEnds, EndsHoldSpanStaysNoHook)
 {
     const EndCase c = GetParam();
     const EndReport r = RunOnChamfer(c);
@@ -189,8 +189,17 @@ INSTANTIATE_TEST_SUITE_P(
                       EndCase{SnakeMethod::LocalEmbedding, 2, "embedding_2off"},
                       EndCase{SnakeMethod::LocalEmbedding, 3, "embedding_3off"},
                       EndCase{SnakeMethod::Projection3D, 0, "projection_on"},
-                      EndCase{SnakeMethod::Projection3D, 2, "projection_2off"},
-                      EndCase{SnakeMethod::Projection3D, 3, "projection_3off"}),
+                      EndCase{SnakeMethod::Projection3D, 2, "projection_2off"}),
+    [](const ::testing::TestParamInfo<EndCase> &i) { return std::string(i.param.name); });
+
+// DISABLED: not fixed yet (issue 9). The curve holds the crease (end 0.21, hook 0.22, p95 0.18
+// local edges, turns 8.2 deg) but covers 0.943 of the seeded span: in the first two coarse
+// operations the first end slides 2 cells along the crease while it moves 3 across. The end
+// moves across its tangent (endTangent), and on the seed path, a staircase of grid edges, that
+// tangent is up to 28 degrees off the crease until the curve straightens.
+INSTANTIATE_TEST_SUITE_P(
+    DISABLED_ChamferFar, StraightCreaseEnds,
+    ::testing::Values(EndCase{SnakeMethod::Projection3D, 3, "projection_3off"}),
     [](const ::testing::TestParamInfo<EndCase> &i) { return std::string(i.param.name); });
 
 // Observed: on the chamfer's straight crease, on level 0 alone (no coarse level to mislead
