@@ -180,13 +180,8 @@ public:
             byOld.resize(nf);
             for (int v : order)
                 if (slot[v] >= 0) byOld[slot[v]] = v;
-            int k = 0;
-            for (int s = 0; s < nf; ++s) {
-                const int v = byOld[w.perm.indices()[s]];
-                order[k++] = v;
-            }
-            order.resize(k);
-            for (int s = 0; s < nf; ++s) slot[order[s]] = s;
+            order.resize(nf); // the pins drop out: columns are the free vertices only
+            for (int s = 0; s < nf; ++s) slot[order[s] = byOld[w.perm.indices()[s]]] = s;
         }
         // The lower triangle of the interleaved (u, v) system, column by column, straight into
         // compressed storage; pinned neighbours go to the right-hand side.

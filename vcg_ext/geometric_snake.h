@@ -581,17 +581,12 @@ private:
     /// encloses (its vector area agrees with the normals of the faces under it), else -1.
     double orientation() const
     {
-        const MeshType &m = surf->Mesh();
         std::vector<vcg::Point3d> p = positions();
         vcg::Point3d area(0, 0, 0), normal(0, 0, 0), c(0, 0, 0);
         for (const auto &x : p) c += x;
         c /= double(p.size());
         for (size_t i = 0; i < p.size(); ++i) area += (p[i] - c) ^ (p[(i + 1) % p.size()] - c);
-        for (const auto &s : st.samples) { // in double: in float a tiny mesh's normal underflows to 0
-            const FaceType &f = m.face[s.p.face];
-            const vcg::Point3d a = vcg::Point3d::Construct(f.cP(0));
-            normal += (vcg::Point3d::Construct(f.cP(1)) - a) ^ (vcg::Point3d::Construct(f.cP(2)) - a);
-        }
+        for (const auto &s : st.samples) normal += surf->FaceNormal(s.p.face);
         return area * normal >= 0 ? 1.0 : -1.0;
     }
 
@@ -659,7 +654,6 @@ private:
     /// coarse level: two projections per sample cost more than the operation itself).
     bool inWells(int level) const
     {
-        const MeshType &m = surf->Mesh();
         const std::vector<vcg::Point3d> p = positions();
         const int n = int(p.size());
         std::vector<std::pair<int, vcg::Point3d>> probes; // free samples with a direction across the curve
@@ -669,10 +663,7 @@ private:
             if (s.fixed) continue;
             const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
             const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
-            const FaceType &f = m.face[s.p.face];
-            const vcg::Point3d c0 = vcg::Point3d::Construct(f.cP(0)); // in double: float squares under/overflow
-            const vcg::Point3d nrm = (vcg::Point3d::Construct(f.cP(1)) - c0) ^ (vcg::Point3d::Construct(f.cP(2)) - c0);
-            vcg::Point3d across = nrm ^ (p[b] - p[a]);
+            vcg::Point3d across = surf->FaceNormal(s.p.face) ^ (p[b] - p[a]);
             if (!(across.Norm() > 0)) continue;
             probes.emplace_back(i, across.Normalize());
         }

@@ -270,14 +270,14 @@ public:
                     t.normalize();
                     F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose();
                     if (level == 0 && faceLinear) { // the across slope, averaged (acrossSlope)
-                        const vcg::Point3d fn = faceNormal(st.samples[i].p.face);
+                        const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
                         Eigen::Vector3d nrm = t.cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
                         double a;
                         if (nrm.norm() > 0 && acrossSlope(st.samples[i].p, nrm.normalized(), h, a))
                             F.row(i) = st.params.externalWeight * fr.gain * a * h * nrm.normalized().transpose();
                     }
                     if (fr.outside != 0) { // balloon: outward = tangent x face normal for a counter-clockwise curve
-                        const vcg::Point3d n = faceNormal(st.samples[i].p.face);
+                        const vcg::Point3d n = surf->FaceNormal(st.samples[i].p.face);
                         Eigen::Vector3d o = t.cross(Eigen::Vector3d(n[0], n[1], n[2]));
                         if (o.norm() > 0) F.row(i) -= balloonPressure(st.params, fr, st.samples[i].p) * o.normalized().transpose();
                     }
@@ -291,7 +291,7 @@ public:
                 if (st.IsOpenEnd(i)) {
                     // in space "across the end tangent" is a plane: keep only the direction across
                     // it in the sample's tangent plane (the rest slides the end along a crease)
-                    const vcg::Point3d fn = faceNormal(st.samples[i].p.face);
+                    const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
                     Eigen::Vector3d a = endTangent<Eigen::Vector3d>(X, i).cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
                     if (a.norm() > 0) d = d.dot(a.normalized()) * a.normalized();
                     else d = acrossEnd<Eigen::Vector3d>(X, i, d);
@@ -364,14 +364,6 @@ private:
         return true;
     }
 
-    /// A face's normal (not normalized), in double: in float the cross product of a tiny
-    /// mesh's edges underflows (at 1e-30 it is about 1e-62).
-    vcg::Point3d faceNormal(int f) const
-    {
-        const FaceType &ff = surf->Mesh().face[f];
-        const vcg::Point3d a = vcg::Point3d::Construct(ff.cP(0));
-        return (vcg::Point3d::Construct(ff.cP(1)) - a) ^ (vcg::Point3d::Construct(ff.cP(2)) - a);
-    }
     /// The end condition of an open snake: its end samples move only across the curve, so the
     /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
     /// "Across" is measured against the direction over several samples (endTangent), not the

@@ -142,6 +142,14 @@ public:
     MeshType &Mesh() { return mesh; }
     const MeshType &Mesh() const { return mesh; }
     double MeanEdge() const { return meanEdge; }
+    /// Face f's normal (not normalized), in double: in float the cross product of a tiny mesh's
+    /// edges underflows (about 1e-62 at 1e-30) and a huge one's overflows (2^200 at 2^100).
+    vcg::Point3d FaceNormal(int f) const
+    {
+        const FaceType &ff = Mesh().face[f];
+        const vcg::Point3d a = vcg::Point3d::Construct(ff.cP(0));
+        return (vcg::Point3d::Construct(ff.cP(1)) - a) ^ (vcg::Point3d::Construct(ff.cP(2)) - a);
+    }
     /// The vertex energy read from quality, in [0,1] (level 0 of the default field).
     const std::vector<float> &Energy() const { return energy; }
     /// Warnings about the energy (constant field, NaN values), for the Log.
