@@ -167,12 +167,15 @@ EndReport RunOnChamfer(const EndCase &c, bool fineOnly = false)
 
 // Observed: the last 2-3 samples of an open snake hooked off towards the nearby second crease
 // (and whole stretches of the curve zigzagged between the two creases, or it ended on the
-// second crease: p95 4.1 local edges): the coarse levels merge the two creases into one well
-// between them, and the snake, pulled across the first crease into that well, rolls down
-// either side at the switch to level 0. DISABLED: not fixed yet (issue 9). A coarse move that
-// stops on a level-0 well across the curve fixes these cases (all pass, turns 7.9-9.6 deg) but
-// breaks the closed snakes' capture on the octahedron (branch r9-stop-wip).
-TEST_P(StraightCreaseEnds, DISABLED_EndsHoldSpanStaysNoHook)
+// second crease: p95 4.0-4.1 local edges): the coarse levels merge the two creases into one well
+// between them, and the snake, pulled across the first crease into that well, rolled down
+// either side at the switch to level 0. Now a sample of an open snake that crosses a
+// feature-like level-0 well running along the curve, which the coarse level leads past, is held
+// on level 0 (SnakeSegmentMotion::HoldAtWell). Seeded 3 cells off, the ends then still slid 2
+// cells along the crease in the first coarse operations (coverage 0.943): they moved across
+// their tangent, up to 28 degrees off the crease on the seed path's staircase; on coarse levels
+// an end now moves along the coarse gradient (SnakeSegmentMotion::alongPull).
+TEST_P(StraightCreaseEnds, EndsHoldSpanStaysNoHook)
 {
     const EndCase c = GetParam();
     const EndReport r = RunOnChamfer(c);

@@ -652,15 +652,21 @@ private:
     /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
     /// The probes stop as soon as the answer is known (it runs after most operations on a
     /// coarse level: two projections per sample cost more than the operation itself).
+    /// On a coarse level, samples held at level-0 wells (SnakeSample::heldFine) count as in.
     bool inWells(int level) const
     {
         const std::vector<vcg::Point3d> p = positions();
         const int n = int(p.size());
         std::vector<std::pair<int, vcg::Point3d>> probes; // free samples with a direction across the curve
         probes.reserve(n);
+        int held = 0;
         for (int i = 0; i < n; ++i) {
             const SnakeSample &s = st.samples[i];
             if (s.fixed) continue;
+            if (level > 0 && s.heldFine) {
+                ++held;
+                continue;
+            }
             const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
             const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
             vcg::Point3d across = surf->FaceNormal(s.p.face) ^ (p[b] - p[a]);
@@ -668,8 +674,8 @@ private:
             probes.emplace_back(i, across.Normalize());
         }
         const int count = int(probes.size());
-        const double need = 0.9 * count;
-        int in = 0;
+        const double need = 0.9 * (count + held);
+        int in = held;
         for (int k = 0; k < count; ++k) {
             if (in >= need) return true;
             if (in + (count - k) < need) return false;
@@ -683,6 +689,15 @@ private:
             in += e <= surf->EnergyAt(level, q2) + 1e-6;
         }
         return count == 0 || in >= need;
+    }
+
+    /// The share of the free samples held on level 0 (SnakeSample::heldFine).
+    double heldShare() const
+    {
+        int free = 0, held = 0;
+        for (const auto &s : st.samples)
+            if (!s.fixed) ++free, held += s.heldFine;
+        return free ? double(held) / free : 0.0;
     }
 
     /// How far the curve moved: each new sample's distance to the old curve near it. Sliding
@@ -711,7 +726,10 @@ private:
     void resetRun()
     {
         motion.ForgetEmbeddings(); // samples were placed anew: regions are built around them
-        for (auto &smp : st.samples) smp.trust = 1.0;
+        for (auto &smp : st.samples) {
+            smp.trust = 1.0;
+            smp.heldFine = false;
+        }
         stage = -1;
         settledOutside = false;
         stats.converged = false;
@@ -894,8 +912,15 @@ private:
             // across the chamfer that triangles straddling a crease cut, so samples stay about
             // where they land in it. Settling outside the wells is a stall: retry once with full
             // steps, then step down anyway (a snake held by its own tension, or no well there).
+            // Samples held at level-0 wells (SnakeSegmentMotion::HoldAtWell) already move on level
+            // 0 and count as in the wells; once all are held, the whole snake goes there. Not
+            // sooner: stretches that lag behind (a loop seeded far up an octahedron's corners
+            // while its middle reached the equator) need the coarse levels' reach.
             // Every switch resets the step control.
-            if (((level == 1 ? stats.converged : maxMove < 0.3) && inWells(level)) || (stats.converged && settledOutside)) {
+            if (heldShare() >= 1.0) {
+                stage = 0;
+                settledOutside = false;
+            } else if (((level == 1 ? stats.converged : maxMove < 0.3) && inWells(level)) || (stats.converged && settledOutside)) {
                 stage = level - 1;
                 settledOutside = false;
             } else if (stats.converged) {

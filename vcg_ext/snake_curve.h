@@ -67,6 +67,9 @@ struct SnakeSample
     /// its energy by more than the noise (it overshot a well) and grows back otherwise, so
     /// samples settle in wells; reset to 1 whenever the energy level changes.
     double trust = 1.0;
+    /// Held on level 0 while the snake is still on a coarse level (not saved): the sample
+    /// crossed a feature-like well of level 0 across the curve (SnakeSegmentMotion::HoldAtWell).
+    bool heldFine = false;
 };
 
 /// Timings and counters, for the Log, the JSON output and the benchmarks.

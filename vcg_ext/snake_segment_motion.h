@@ -118,9 +118,9 @@ public:
         // Sec. 6.2: the energy gradient at a sample, mapped into the plane. The field gives it
         // in space; its derivatives along two face edges are invariant, so in the plane it is
         // J^-T (g . e1, g . e2) with J the embedded edges. J^-T is kept per face with the embedding.
-        auto gradient = [&](int t, const Eigen::RowVector3d &bary) -> Eigen::Vector2d {
+        auto gradient = [&](int lev, int t, const Eigen::RowVector3d &bary) -> Eigen::Vector2d {
             const auto &T = region.tri[t];
-            vcg::Point3d g = surf->EnergyGradient(level, SurfacePoint(region.faces[t], toPoint(bary)));
+            vcg::Point3d g = surf->EnergyGradient(lev, SurfacePoint(region.faces[t], toPoint(bary)));
             Eigen::Vector2d d(g * (region.pos[T[1]] - region.pos[T[0]]), g * (region.pos[T[2]] - region.pos[T[0]]));
             return E.JinvT(t) * d;
         };
@@ -138,25 +138,32 @@ public:
             Eigen::MatrixXd &F = work.F;
             F.resize(k, 2);
             std::vector<double> slope(k, 0.0);
+            std::vector<Eigen::Vector2d> &across = work.across, &pull = work.pull;
+            across.assign(k, Eigen::Vector2d::Zero());
+            pull.assign(k, Eigen::Vector2d::Zero());
             for (int u = 0; u < updates; ++u) {
                 auto tu = clock::now();
                 for (int j = 0; j < k; ++j) {
                     // Only the feature force across the curve: along a feature valley the
                     // energy still varies a little, and its tangential part would slide the
                     // samples towards the strongest spots (corners) and bunch them there.
-                    const Eigen::Vector2d g = gradient(lf[j], B.row(j));
+                    const int lev = SampleLevel(st.samples[seg.idx[j]], level);
+                    const double gain = lev == level ? fr.gain : 1.0;
+                    const Eigen::Vector2d g = gradient(lev, lf[j], B.row(j));
                     slope[j] = g.norm();
-                    Eigen::Vector2d f = st.params.externalWeight * fr.gain * g;
+                    if (lev > 0 && faceLinear) pull[j] = g; // alongPull
+                    Eigen::Vector2d f = st.params.externalWeight * gain * g;
                     Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
                                          X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
                     if (t.norm() > 0) {
                         t.normalize();
                         f -= f.dot(t) * t;
-                        if (level == 0 && faceLinear) { // the across slope, averaged (see acrossSlope)
+                        across[j] = Eigen::Vector2d(t.y(), -t.x());
+                        if (lev == 0 && faceLinear) { // the across slope, averaged (see acrossSlope)
                             const Eigen::Vector2d nrm(t.y(), -t.x());
                             double a;
                             if (acrossSlope(E, lf[j], X.row(j).transpose(), nrm, a))
-                                f = st.params.externalWeight * fr.gain * a * nrm;
+                                f = st.params.externalWeight * gain * a * nrm;
                         }
                         // balloon (beyond the paper, as in image snakes): a pressure along the
                         // outward normal; f is a gradient, so it pushes against it
@@ -173,7 +180,8 @@ public:
                     if (fixed[j]) continue;
                     Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
                     if (!d.allFinite()) continue;
-                    if (st.IsOpenEnd(seg.idx[j])) d = acrossEnd<Eigen::Vector2d>(X, j, d);
+                    if (st.IsOpenEnd(seg.idx[j]))
+                        d = pull[j].norm() > 0 ? alongPull(d, pull[j]) : acrossEnd<Eigen::Vector2d>(X, j, d);
                     double len = d.norm();
                     double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(E, lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
@@ -181,9 +189,20 @@ public:
                     RegionWalk::Result &w = work.walk;
                     RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(), X.row(j).transpose() + d,
                                      false, w);
-                    double eOld = surf->EnergyAt(level, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j))));
-                    double eNew = surf->EnergyAt(level, SurfacePoint(region.faces[w.face], toPoint(w.bary)));
-                    UpdateTrust(st.samples[seg.idx[j]].trust, level, eOld, eNew, slope[j] * std::min(len, cap));
+                    SnakeSample &smp = st.samples[seg.idx[j]];
+                    const int lev = SampleLevel(smp, level);
+                    const SurfacePoint pOld(region.faces[lf[j]], toPoint(B.row(j))), pNew(region.faces[w.face], toPoint(w.bary));
+                    double eOld = surf->EnergyAt(lev, pOld);
+                    double eNew = surf->EnergyAt(lev, pNew);
+                    UpdateTrust(smp.trust, lev, eOld, eNew, slope[j] * std::min(len, cap));
+                    if (level > 0 && !st.closed) { // open snakes only (HoldAtWell)
+                        const Eigen::Vector2d x1 = toPlane(E, w.face, toPoint(w.bary));
+                        const Eigen::Vector2d x0 = X.row(j).transpose();
+                        smp.heldFine = HoldAtWell(smp.heldFine, pOld, pNew, d, across[j], Eigen::Vector2d(-across[j].y(), across[j].x()),
+                                                  level, [&](const Eigen::Vector2d &v, bool ahead, SurfacePoint &q) {
+                                                      return planeProbe(E, ahead ? w.face : lf[j], ahead ? x1 : x0, v, q);
+                                                  });
+                    }
                     lf[j] = w.face;
                     B.row(j) = w.bary.transpose();
                     X.row(j) = toPlane(E, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
@@ -253,14 +272,18 @@ public:
         SnakeSpline &spline = splineFor(st.params, n, st.closed, fixed);
         Eigen::MatrixXd X(n, 3), F(n, 3);
         std::vector<double> slope(n, 0.0);
+        std::vector<Eigen::Vector3d> across(n, Eigen::Vector3d::Zero()), tangent(n, Eigen::Vector3d::Zero()); // the curve's frame
+        std::vector<Eigen::Vector3d> pull(n, Eigen::Vector3d::Zero()); // the coarse gradient (alongPull)
         for (int u = 0; u < st.params.updatesPerOperation; ++u) {
             auto tu = clock::now();
             for (int i = 0; i < n; ++i) {
                 vcg::Point3d p = st.samples[i].p.Pd(m) / h;
                 X.row(i) << p[0], p[1], p[2];
-                vcg::Point3d g = surf->EnergyGradient(level, st.samples[i].p) * h; // per edge length
+                const int lev = SampleLevel(st.samples[i], level);
+                vcg::Point3d g = surf->EnergyGradient(lev, st.samples[i].p) * h; // per edge length
                 slope[i] = g.Norm();
-                g *= st.params.externalWeight * fr.gain;
+                if (lev > 0 && faceLinear) pull[i] = Eigen::Vector3d(g[0], g[1], g[2]); // alongPull
+                g *= st.params.externalWeight * (lev == level ? fr.gain : 1.0);
                 F.row(i) << g[0], g[1], g[2];
             }
             for (int i = 0; i < n; ++i) { // the feature force across the curve only (see moveSegment)
@@ -269,12 +292,15 @@ public:
                 if (t.norm() > 0) {
                     t.normalize();
                     F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose();
-                    if (level == 0 && faceLinear) { // the across slope, averaged (acrossSlope)
-                        const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
-                        Eigen::Vector3d nrm = t.cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
+                    const int lev = SampleLevel(st.samples[i], level);
+                    const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
+                    Eigen::Vector3d nrm = t.cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
+                    if (nrm.norm() > 0) across[i] = nrm.normalized(), tangent[i] = t;
+                    if (lev == 0 && faceLinear) { // the across slope, averaged (acrossSlope)
                         double a;
                         if (nrm.norm() > 0 && acrossSlope(st.samples[i].p, nrm.normalized(), h, a))
-                            F.row(i) = st.params.externalWeight * fr.gain * a * h * nrm.normalized().transpose();
+                            F.row(i) = st.params.externalWeight * (lev == level ? fr.gain : 1.0) * a * h *
+                                       nrm.normalized().transpose();
                     }
                     if (fr.outside != 0) { // balloon: outward = tangent x face normal for a counter-clockwise curve
                         const vcg::Point3d n = surf->FaceNormal(st.samples[i].p.face);
@@ -288,7 +314,9 @@ public:
                 if (fixed[i]) continue;
                 Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
                 if (!d.allFinite()) continue;
-                if (st.IsOpenEnd(i)) {
+                const bool pulled = st.IsOpenEnd(i) && pull[i].norm() > 0;
+                if (pulled) d = alongPull(d, pull[i]);
+                else if (st.IsOpenEnd(i)) {
                     // in space "across the end tangent" is a plane: keep only the direction across
                     // it in the sample's tangent plane (the rest slides the end along a crease)
                     const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
@@ -303,7 +331,7 @@ public:
                 vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
                 SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
                                                                        d.norm() * h + 1.5 * h);
-                if (st.IsOpenEnd(i)) { // the projection, too, can slide an end along a crease: undo that
+                if (st.IsOpenEnd(i) && !pulled) { // the projection, too, can slide an end along a crease: undo that
                     Eigen::Vector3d t = endTangent<Eigen::Vector3d>(X, i);
                     const vcg::Point3d y = np.Pd(m) / h;
                     const double along = t.norm() > 0 ? (Eigen::Vector3d(y[0], y[1], y[2]) - X.row(i).transpose()).dot(t.normalized()) : 0;
@@ -313,8 +341,20 @@ public:
                                                                   d.norm() * h + 1.5 * h + std::abs(along) * h);
                     }
                 }
-                UpdateTrust(st.samples[i].trust, level, surf->EnergyAt(level, st.samples[i].p), surf->EnergyAt(level, np),
+                const int lev = SampleLevel(st.samples[i], level);
+                UpdateTrust(st.samples[i].trust, lev, surf->EnergyAt(lev, st.samples[i].p), surf->EnergyAt(lev, np),
                             slope[i] * std::min(len, cap));
+                if (level > 0 && !st.closed) { // open snakes only (HoldAtWell)
+                    const SurfacePoint pOld = st.samples[i].p;
+                    st.samples[i].heldFine =
+                        HoldAtWell(st.samples[i].heldFine, pOld, np, d, across[i], tangent[i], level,
+                                   [&](const Eigen::Vector3d &v, bool ahead, SurfacePoint &q) {
+                            const SurfacePoint &base = ahead ? np : pOld;
+                            const vcg::Point3d x = base.Pd(m) + vcg::Point3d(v[0], v[1], v[2]) * h;
+                            q = SurfaceProjection<MeshType>::Closest(*surf, base.face, x, 2 * v.norm() * h);
+                            return true;
+                        });
+                }
                 st.samples[i].p = np;
             }
             stats.updates++;
@@ -338,12 +378,64 @@ public:
         trust = eNew > eOld + noise ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
     }
 
+    /// The level a sample moves on: 0 once held at a level-0 well (HoldAtWell), else the snake's.
+    static int SampleLevel(const SnakeSample &s, int level) { return s.heldFine ? 0 : level; }
+
+    /// Whether a sample of an open snake that moved from pOld to pNew on a coarse level (by d,
+    /// mostly across the curve: nrm is the curve's normal there, tan its tangent) is held on
+    /// level 0 from now on. A coarse level merges a feature with a parallel one a few edges away
+    /// into one well between them (the chamfer: two creases 3 edges apart); a snake pulled
+    /// across the first feature into that well rolls down either side of it at the switch to
+    /// level 0 (ends on the second feature, or zigzags between the two). A sample is held where
+    /// it crosses, or lands in, a well of level 0 that
+    ///  - is feature-like: level-0 energy below kWellEnergy at the lower end of the move;
+    ///  - is a well across the curve: kWellProbe length units behind and beyond the move the
+    ///    energy is at least kWellDepth higher on both sides;
+    ///  - runs along the curve: kWellProbe along the curve from where it lands, the energy stays
+    ///    below those rims (a feature crossing the curve rises there);
+    ///  - is one the coarse level leads past: its energy still falls beyond the move. Where the
+    ///    coarse well and the level-0 well coincide the coarse level does not mislead.
+    /// Closed snakes are not held (callers): a loop seeded over an octahedron's corners lies
+    /// along its diagonal creases and must slide down them onto the equator on the coarse
+    /// levels; holding it there broke capture (0.70-0.88 of the loop captured at offsets 2-6).
+    /// A held sample is released when dragged out of the well (level-0 energy above kWellEnergy).
+    /// `probe(v, ahead, q)`: the surface point at pNew + v (ahead) or pOld + v; false if unknown.
+    template <class Vec, class Probe>
+    bool HoldAtWell(bool held, const SurfacePoint &pOld, const SurfacePoint &pNew, const Vec &d, const Vec &nrm,
+                    const Vec &tan, int level, const Probe &probe) const
+    {
+        const double eNew = surf->EnergyAt(0, pNew);
+        if (held) return eNew < kWellEnergy;
+        const double len = d.norm(), dn = d.dot(nrm);
+        if (!(len > 0) || !(std::abs(dn) >= 0.5 * len)) return false;
+        const double eMin = std::min(surf->EnergyAt(0, pOld), eNew);
+        if (!(eMin < kWellEnergy)) return false;
+        const Vec dir = nrm * (dn > 0 ? kWellProbe : -kWellProbe);
+        SurfacePoint qBehind, qAhead, qFore, qAft;
+        if (!probe(Vec(-dir), false, qBehind) || !probe(dir, true, qAhead)) return false;
+        // the coarse level leads beyond the well (it has merged it with another): where it does
+        // not, the two agree and the coarse level is not misleading (a loop lying along an
+        // octahedron's diagonal crease, sliding down it onto the equator)
+        if (!(surf->EnergyAt(level, qAhead) < surf->EnergyAt(level, pNew))) return false;
+        const double rim = std::min(surf->EnergyAt(0, qBehind), surf->EnergyAt(0, qAhead));
+        if (!(rim > eMin + kWellDepth)) return false;
+        // the well runs along the curve: along it, from where the sample lands, the energy
+        // stays below the rims across it (a feature crossing the curve rises there)
+        const Vec along = tan * kWellProbe;
+        if (!probe(along, true, qFore) || !probe(Vec(-along), true, qAft)) return false;
+        const double fore = surf->EnergyAt(0, qFore), aft = surf->EnergyAt(0, qAft);
+        return std::max(fore, aft) < rim;
+    }
+
 private:
     /// Half the span, in triangle widths, over which level 0's slope across the curve is
     /// averaged (acrossSlope). On the chamfer test (level 0 alone) 0.5 left turns of 10.5
     /// degrees with the projection method; 0.75 gives 6-8 degrees; 1.0 5-9 degrees, with the
     /// samples farther from the crease (the wider the span, the flatter the well's bottom).
     static constexpr double kAcrossReach = 0.75;
+    /// HoldAtWell: a feature-like level-0 well (its energy below this), probed this many length
+    /// units across the curve beyond either end of the move, where it must be this much higher.
+    static constexpr double kWellEnergy = 0.5, kWellProbe = 1.0, kWellDepth = 0.1;
 
     /// Level-0 energy at p -/+ r nrm (in space, projected onto the surface).
     bool acrossEnergies(const SurfacePoint &p, const Eigen::Vector3d &nrm, double r, double &lo, double &hi) const
@@ -364,6 +456,20 @@ private:
         return true;
     }
 
+    /// On a coarse level an open end moves along the feature force only, not across its
+    /// tangent: by symmetry the smoothed energy's gradient is across the feature, while the
+    /// tangent, on a seed path that is a staircase of mesh edges, is up to 28 degrees off it
+    /// until the curve straightens, and a move of 3 cells across it slid the end 2 cells along
+    /// the feature (the chamfer seeded 3 cells off: 0.943 of the span covered). Only on the
+    /// smoothed vertex energy (FaceLinear fields): the CAD crease distance's gradient points at
+    /// the nearest crease point, which near a rim's end lies along the rim (an open snake on a
+    /// pocket rim then covered 85.8 % of its span instead of 96.8 %).
+    template <class Vec>
+    static Vec alongPull(const Vec &d, const Vec &g)
+    {
+        const Vec a = g.normalized();
+        return d.dot(a) * a;
+    }
     /// The end condition of an open snake: its end samples move only across the curve, so the
     /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
     /// "Across" is measured against the direction over several samples (endTangent), not the
@@ -589,6 +695,16 @@ private:
         slope = (hi - lo) / (2 * r);
         return true;
     }
+    /// The surface point at x + v (plane), walking from local face t; false when it leaves the region.
+    bool planeProbe(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &v, SurfacePoint &q)
+    {
+        RegionWalk::Result &w = work.probe;
+        RegionWalk::Walk(E.emb.uv, E.region.tri, E.region.adj, t, x, x + v, false, w);
+        if (w.exited) return false;
+        q = SurfacePoint(E.region.faces[w.face], toPoint(w.bary));
+        return true;
+    }
+
     /// Level-0 energy at x -/+ r nrm (plane), walking from local face t.
     bool acrossEnergies(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &nrm, double r, double &lo,
                         double &hi)
@@ -653,6 +769,7 @@ private:
         std::vector<int> core, lf;
         Eigen::MatrixXd X, B, F, Xn;
         RegionWalk::Result walk, probe;
+        std::vector<Eigen::Vector2d> across, pull; // the curve's normal, the coarse gradient (plane)
     } work;
 
     static double msSince(clock::time_point t0)
