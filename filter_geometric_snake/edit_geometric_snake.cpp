@@ -281,7 +281,7 @@ void EditGeometricSnakePlugin::hideDockLater()
 std::vector<vcg::tri::ProtectedFile> EditGeometricSnakePlugin::protectedFiles() const
 {
     if (!modelAlive() || model->fullName().isEmpty()) return {};
-    return Controller::ProtectedFilesOf(QFileInfo(model->fullName()).absoluteFilePath().toStdString(),
+    return tri::SnakeSidecar::ProtectedFiles(QFileInfo(model->fullName()).absoluteFilePath().toStdString(),
                                         model->label().toStdString());
 }
 

@@ -91,7 +91,7 @@ std::vector<tri::ProtectedFile> protectedFiles(MeshDocument &md)
 	for (MeshModel *mm : gs::host::Meshes(md)) {
 		if (mm == nullptr || mm->fullName().isEmpty()) continue;
 		const std::string path = QFileInfo(mm->fullName()).absoluteFilePath().toStdString();
-		for (auto &k : tri::SnakeController<CMeshO>::ProtectedFilesOf(path, mm->label().toStdString())) keep.push_back(k);
+		for (auto &k : tri::SnakeSidecar::ProtectedFiles(path, mm->label().toStdString())) keep.push_back(k);
 	}
 	return keep;
 }
@@ -595,7 +595,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	if (!stored.empty()) {
 		try {
 			nlohmann::json old = nlohmann::json::parse(stored);
-			if (old.value("format", std::string()) == Controller::FormatName() && old.contains("snakes") &&
+			if (old.value("format", std::string()) == Controller::SessionFile::FormatName() && old.contains("snakes") &&
 			    old["mesh"] == session["mesh"]) {
 				for (const auto &sn : session["snakes"]) old["snakes"].push_back(sn);
 				old["selected"] = int(old["snakes"].size()) - 1;
@@ -645,7 +645,7 @@ bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParamet
 		}
 	} else if (!m.fullName().isEmpty()) {
 		const std::string side =
-		    tri::SnakeController<CMeshO>::SidecarPath(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
+		    tri::SnakeSidecar::Path(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
 		if (QFileInfo::exists(QString::fromStdString(side))) {
 			j = tri::SnakeIO<CMeshO>::ParseFileLean(side); // only what a restore reads: memory ~ file size
 			source = QString::fromStdString(side);

@@ -1,5 +1,5 @@
 // Never lose the user's data (issue 8): safe writes (SafeFileWrite, SnakeIO::WriteCurves),
-// sidecars that survive (SnakeController::OpenSidecar), lean loading of large sidecars, and
+// sidecars that survive (SnakeController::OpenSidecar, SnakeSidecar), lean loading of large sidecars, and
 // readable messages for broken snake files.
 #include <gtest/gtest.h>
 
@@ -139,12 +139,12 @@ TEST(SnakeIO, WriteCurvesChecksFormatAndTargetBeforeTouchingAnything)
     for (const std::string name : {"mesh.ply", "mesh.obj", "mesh.json"}) {
         const std::string p = t / name;
         WriteAll(p, "the user's mesh");
-        EXPECT_FALSE(ErrorOf([&] { IO::WriteCurves(p, list, Controller::ProtectedFilesOf(p)); }).empty());
+        EXPECT_FALSE(ErrorOf([&] { IO::WriteCurves(p, list, SnakeSidecar::ProtectedFiles(p)); }).empty());
         EXPECT_EQ(ReadAll(p), "the user's mesh");
         // and its sidecar
-        const std::string side = Controller::SidecarPath(p);
+        const std::string side = SnakeSidecar::Path(p);
         WriteAll(side, "{}");
-        EXPECT_NE(ErrorOf([&] { IO::WriteCurves(side, list, Controller::ProtectedFilesOf(p)); }).find("sidecar"),
+        EXPECT_NE(ErrorOf([&] { IO::WriteCurves(side, list, SnakeSidecar::ProtectedFiles(p)); }).find("sidecar"),
                   std::string::npos);
         EXPECT_EQ(ReadAll(side), "{}");
     }
@@ -184,7 +184,7 @@ TEST(SnakeIO, BrokenSnakeFilesGiveReadableMessages)
     }
     // a session file: the same
     Controller c(m);
-    const std::string fmt = std::string("{\"format\":\"") + Controller::FormatName();
+    const std::string fmt = std::string("{\"format\":\"") + Controller::SessionFile::FormatName();
     for (const std::string bad : std::vector<std::string>{fmt + "\",\"mesh\":{\"vertices\":1e20}}",
                                   fmt + "\",\"mesh\":5}", fmt + "\",\"version\":\"new\"}"}) {
         e = ErrorOf([&] { c.FromJson(nlohmann::json::parse(bad)); });
@@ -234,7 +234,7 @@ TEST(Sidecar, UnreadableSidecarIsKeptAndTheSessionGoesToARecoveryFile)
     PrepareGrid(m, 20);
     const std::string mesh = t / "part.ply";
     WriteAll(mesh, "mesh");
-    const std::string side = Controller::SidecarPath(mesh);
+    const std::string side = SnakeSidecar::Path(mesh);
     const std::string good = SessionText(m, 40);
     const std::string cut = good.substr(0, good.size() / 2); // a truncated sidecar
     WriteAll(side, cut);
@@ -244,7 +244,7 @@ TEST(Sidecar, UnreadableSidecarIsKeptAndTheSessionGoesToARecoveryFile)
     Controller::SidecarStatus st = c.OpenSidecar(mesh, true, when);
     EXPECT_TRUE(st.unreadable);
     EXPECT_FALSE(st.restored);
-    const std::string rec = Controller::RecoveryPath(mesh, when);
+    const std::string rec = SnakeSidecar::RecoveryPath(mesh, when);
     EXPECT_NE(rec.find("part.ply.snakes.recovered-"), std::string::npos);
     EXPECT_NE(st.message.find(rec), std::string::npos) << st.message;
     EXPECT_NE(st.message.find("kept unchanged"), std::string::npos) << st.message;
@@ -354,7 +354,7 @@ TEST(Sidecar, LargeSidecarsLoadInBoundedTimeAndMemoryOrAreRefused)
     const std::string p1m = t / "m1m.ply.snakes.json";
     {
         std::ofstream out(p1m);
-        out << "{\"format\":\"" << Controller::FormatName() << "\",\"version\":" << Controller::FormatVersion()
+        out << "{\"format\":\"" << Controller::SessionFile::FormatName() << "\",\"version\":" << Controller::SessionFile::FormatVersion()
             << ",\"mesh\":{\"vertices\":" << m.vert.size() << ",\"faces\":" << m.face.size()
             << "},\"snakes\":[{\"closed\":false,\"samples\":[";
         for (int i = 0; i < 1000000; ++i)

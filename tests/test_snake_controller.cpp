@@ -367,7 +367,7 @@ TEST(SnakeController, SaveLoadRoundTripKeepsSnakesPinsAndParams)
     c.Select(0);
     c.AddSeedVertex(3); // seeds in progress are kept too
 
-    std::string path = Controller::SidecarPath(TempPath("cube.ply"));
+    std::string path = SnakeSidecar::Path(TempPath("cube.ply"));
     EXPECT_EQ(path, TempPath("cube.ply") + ".snakes.json");
     c.Save(path);
     EXPECT_FALSE(c.Dirty());

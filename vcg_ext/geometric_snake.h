@@ -64,70 +64,34 @@ public:
         InitFromPath(path.vertices, closed, lengthScale);
         seedVertices = seeds;
         seedPoints.clear();
-        for (int v : seeds) seedPoints.push_back(vertexPoint(v));
+        for (int v : seeds) seedPoints.push_back(surf->VertexPoint(v));
     }
 
     /// Samples along a vertex path (consecutive vertices share an edge). Closed paths do not
     /// repeat the first vertex.
     void InitFromPath(const std::vector<int> &pathVerts, bool closed, double lengthScale = 0)
     {
-        MeshType &m = surf->Mesh();
+        const MeshType &m = surf->Mesh();
         std::vector<int> pv = pathVerts;
-        if (closed) pv.push_back(pv.front());
+        if (closed && !pv.empty()) pv.push_back(pv.front());
         if (pv.size() < 2) throw SnakeError("Geometric snake: the seed path is too short.");
         for (int v : pv)
             if (v < 0 || v >= int(m.vert.size()) || m.vert[v].IsD())
                 throw SnakeError("Geometric snake: the seed path has an invalid vertex.");
-        std::vector<double> cum(pv.size(), 0.0);
-        for (size_t i = 1; i < pv.size(); ++i) cum[i] = cum[i - 1] + dist(pv[i - 1], pv[i]);
-        double L = cum.back();
+        PathOnSurface path;
+        std::vector<double> pathEdges;
+        for (size_t i = 0; i < pv.size(); ++i) {
+            path.points.push_back(surf->VertexPoint(pv[i]));
+            path.cum.push_back(i == 0 ? 0.0 : path.cum.back() + dist(pv[i - 1], pv[i]));
+            if (i == 0) continue;
+            pathEdges.push_back(path.cum[i] - path.cum[i - 1]);
+            const SurfacePoint e0 = surf->PointOnEdge(pv[i - 1], pv[i], 0.0);
+            if (e0.face < 0) throw SnakeError("Geometric snake: the seed path uses a missing edge.");
+            path.pieces.push_back({e0, surf->PointOnEdge(pv[i - 1], pv[i], 1.0), surf->EdgeFaces(pv[i - 1], pv[i])});
+        }
         // The snake's length unit: the median edge length along its seed path, so that one
         // set of parameters fits meshes whose edge lengths vary by 10-100x.
-        std::vector<double> pathEdges;
-        for (size_t i = 1; i < pv.size(); ++i) pathEdges.push_back(cum[i] - cum[i - 1]);
-        const double unit = (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(pathEdges);
-        double d = st.params.spacing * unit;
-        if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
-        long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
-        n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError(tooManySamples(n, L, unit, pv.size() - (closed ? 1 : 0)));
-        double step = closed ? L / double(n) : L / double(n - 1);
-
-        pushUndo();
-        st.samples.clear();
-        st.gaps.clear();
-        st.closed = closed;
-        st.unit = unit;
-        std::vector<double> sampleArc;
-        size_t e = 0;
-        for (long k = 0; k < n; ++k) {
-            double s = std::min(L, k * step);
-            while (e + 2 < pv.size() && cum[e + 1] < s) ++e;
-            double len = cum[e + 1] - cum[e];
-            double t = len > 0 ? (s - cum[e]) / len : 0.0;
-            t = std::min(1.0, std::max(0.0, t));
-            SnakeSample smp;
-            smp.p = pointOnEdge(pv[e], pv[e + 1], t);
-            st.samples.push_back(smp);
-            sampleArc.push_back(s);
-        }
-        // Gaps: the path edges and vertices between consecutive samples (the initial curve).
-        int gapsN = numGaps();
-        st.gaps.assign(gapsN, Gap());
-        for (int g = 0; g < gapsN; ++g) {
-            double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
-            Gap &gap = st.gaps[g];
-            const double eps = 1e-12 * L; // relative: any scale
-            for (size_t i = 0; i + 1 < pv.size(); ++i) {
-                if (cum[i + 1] < s0 - eps || cum[i] > s1 + eps) continue;
-                for (int f : edgeFaces(pv[i], pv[i + 1])) gap.faces.push_back(f);
-                if (cum[i] > s0 + eps && cum[i] < s1 - eps) gap.crossings.push_back(vertexPoint(pv[i]));
-            }
-            gap.traced = true;
-        }
-        initialSamples = st.samples;
-        initialPolyline = Polyline();
-        resetRun();
+        sampleAlong(path, closed, (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(pathEdges));
     }
 
     /// Seeds given as surface points (face + barycentric, e.g. snapped from coordinates or a
@@ -149,71 +113,33 @@ public:
     void InitFromSurfacePath(const std::vector<SurfacePoint> &pathPts, bool closed, double lengthScale = 0)
     {
         const MeshType &m = surf->Mesh();
-        std::vector<SurfacePoint> pv;
+        PathOnSurface path;
+        std::vector<SurfacePoint> &pv = path.points;
         for (const auto &p : pathPts) {
             checkPoint(p);
             if (pv.empty() || p.Pd(m) != pv.back().Pd(m)) pv.push_back(p);
         }
         if (closed && pv.size() > 1 && pv.front().Pd(m) == pv.back().Pd(m)) pv.pop_back();
-        if (closed) pv.push_back(pv.front());
+        if (closed && !pv.empty()) pv.push_back(pv.front());
         if (pv.size() < 2) throw SnakeError("Geometric snake: the seed path is too short.");
         // The face each piece lies in, and both ends expressed in it.
-        const size_t np = pv.size() - 1;
-        std::vector<int> pieceFace(np);
-        std::vector<std::pair<SurfacePoint, SurfacePoint>> ends(np);
-        for (size_t i = 0; i < np; ++i) {
-            pieceFace[i] = commonFace(pv[i], pv[i + 1]);
-            if (pieceFace[i] < 0) throw SnakeError("Geometric snake: consecutive seed path points share no face.");
-            pv[i].InFace(m, pieceFace[i], ends[i].first);
-            pv[i + 1].InFace(m, pieceFace[i], ends[i].second);
+        std::vector<int> pieceFaces;
+        path.cum.assign(1, 0.0);
+        for (size_t i = 0; i + 1 < pv.size(); ++i) {
+            PathPiece piece;
+            const int f = surf->CommonFace(pv[i], pv[i + 1]);
+            if (f < 0) throw SnakeError("Geometric snake: consecutive seed path points share no face.");
+            pv[i].InFace(m, f, piece.from);
+            pv[i + 1].InFace(m, f, piece.to);
+            piece.faces = {f};
+            path.pieces.push_back(piece);
+            pieceFaces.push_back(f);
+            path.cum.push_back(path.cum.back() + (pv[i + 1].Pd(m) - pv[i].Pd(m)).Norm());
         }
-        std::vector<double> cum(pv.size(), 0.0);
-        for (size_t i = 1; i < pv.size(); ++i) cum[i] = cum[i - 1] + (pv[i].Pd(m) - pv[i - 1].Pd(m)).Norm();
-        const double L = cum.back();
         // The length unit: the median edge of the faces the path crosses (the pieces
         // themselves can be far longer than any edge on a CAD face).
-        const double unit = (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(faceEdges(pieceFace));
-        const double d = st.params.spacing * unit;
-        if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
-        long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
-        n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError(tooManySamples(n, L, unit, pv.size() - (closed ? 1 : 0)));
-        const double step = closed ? L / double(n) : L / double(n - 1);
-
-        pushUndo();
-        st.samples.clear();
-        st.gaps.clear();
-        st.closed = closed;
-        st.unit = unit;
-        std::vector<double> sampleArc;
-        size_t e = 0;
-        for (long k = 0; k < n; ++k) {
-            const double s = (!closed && k == n - 1) ? L : std::min(L, k * step);
-            while (e + 2 < pv.size() && cum[e + 1] < s) ++e;
-            const double len = cum[e + 1] - cum[e];
-            const double t = std::min(1.0, std::max(0.0, len > 0 ? (s - cum[e]) / len : 0.0));
-            SnakeSample smp;
-            smp.p = SurfacePoint(pieceFace[e], ends[e].first.bary * (1 - t) + ends[e].second.bary * t);
-            smp.p.Normalize();
-            st.samples.push_back(smp);
-            sampleArc.push_back(s);
-        }
-        const int gapsN = numGaps();
-        st.gaps.assign(gapsN, Gap());
-        const double eps = 1e-12 * L; // relative: any scale
-        for (int g = 0; g < gapsN; ++g) {
-            const double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
-            Gap &gap = st.gaps[g];
-            for (size_t i = 0; i < np; ++i) {
-                if (cum[i + 1] < s0 - eps || cum[i] > s1 + eps) continue;
-                gap.faces.push_back(pieceFace[i]);
-                if (cum[i] > s0 + eps && cum[i] < s1 - eps) gap.crossings.push_back(pv[i]);
-            }
-            gap.traced = true;
-        }
-        initialSamples = st.samples;
-        initialPolyline = Polyline();
-        resetRun();
+        sampleAlong(path, closed,
+                    (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(faceEdges(pieceFaces)));
     }
 
     /// Restores samples (e.g. from JSON). Gaps are re-projected on the next operation.
@@ -483,6 +409,20 @@ public:
         std::vector<SnakeSample> initialSamples;
         std::vector<SurfacePoint> initialPolyline;
         double runLength = -1, lastLength = -1;
+
+        /// The memory it holds (the undo history is bounded by memory).
+        size_t Bytes() const
+        {
+            size_t b = sizeof(*this) + curve.samples.capacity() * sizeof(SnakeSample) +
+                       initialSamples.capacity() * sizeof(SnakeSample) +
+                       (initialPolyline.capacity() + seedPoints.capacity()) * sizeof(SurfacePoint) +
+                       seeds.capacity() * sizeof(int) + (moves.size() + travels.size()) * sizeof(double);
+            for (const auto &g : curve.gaps)
+                b += sizeof(g) + g.faces.capacity() * sizeof(int) + g.crossings.capacity() * sizeof(SurfacePoint);
+            b += (stats.msEmbedding.capacity() + stats.msUpdate.capacity() + stats.msOperation.capacity()) * sizeof(double);
+            for (const auto &q : positions) b += q.capacity() * sizeof(vcg::Point3d);
+            return b;
+        }
     };
     Memento Save() const
     {
@@ -512,6 +452,72 @@ private:
     {
         return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
     }
+    /// A path on the surface to take samples along: its points (closed: the first repeated at
+    /// the end), their arc lengths, and per piece between two points its ends expressed in
+    /// one face and the faces a gap over it holds.
+    struct PathPiece
+    {
+        SurfacePoint from, to; // in the same face
+        std::vector<int> faces;
+    };
+    struct PathOnSurface
+    {
+        std::vector<SurfacePoint> points;
+        std::vector<double> cum;
+        std::vector<PathPiece> pieces;
+    };
+
+    /// Sec. 7: samples at uniform spacing (`spacing` length units) along the path, the ends of
+    /// an open one exactly at its ends; the gaps between them are the path's pieces they span
+    /// (their faces) with the path points strictly inside as crossings: the initial curve.
+    void sampleAlong(const PathOnSurface &path, bool closed, double unit)
+    {
+        const std::vector<double> &cum = path.cum;
+        const double L = cum.back();
+        const double d = st.params.spacing * unit;
+        if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
+        long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
+        n = std::max<long>(n, closed ? 3 : 2);
+        if (n > 200000) throw SnakeError(tooManySamples(n, L, unit, path.points.size() - (closed ? 1 : 0)));
+        const double step = closed ? L / double(n) : L / double(n - 1);
+
+        pushUndo();
+        st.samples.clear();
+        st.gaps.clear();
+        st.closed = closed;
+        st.unit = unit;
+        std::vector<double> sampleArc;
+        size_t e = 0;
+        for (long k = 0; k < n; ++k) {
+            const double s = (!closed && k == n - 1) ? L : std::min(L, k * step);
+            while (e + 2 < path.points.size() && cum[e + 1] < s) ++e;
+            const double len = cum[e + 1] - cum[e];
+            const double t = std::min(1.0, std::max(0.0, len > 0 ? (s - cum[e]) / len : 0.0));
+            const PathPiece &piece = path.pieces[e];
+            SnakeSample smp;
+            smp.p = SurfacePoint(piece.from.face, piece.from.bary * (1 - t) + piece.to.bary * t);
+            smp.p.Normalize();
+            st.samples.push_back(smp);
+            sampleArc.push_back(s);
+        }
+        const int gapsN = numGaps();
+        st.gaps.assign(gapsN, Gap());
+        const double eps = 1e-12 * L; // relative: any scale
+        for (int g = 0; g < gapsN; ++g) {
+            const double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
+            Gap &gap = st.gaps[g];
+            for (size_t i = 0; i < path.pieces.size(); ++i) {
+                if (cum[i + 1] < s0 - eps || cum[i] > s1 + eps) continue;
+                gap.faces.insert(gap.faces.end(), path.pieces[i].faces.begin(), path.pieces[i].faces.end());
+                if (cum[i] > s0 + eps && cum[i] < s1 - eps) gap.crossings.push_back(path.points[i]);
+            }
+            gap.traced = true;
+        }
+        initialSamples = st.samples;
+        initialPolyline = Polyline();
+        resetRun();
+    }
+
     /// The "too many samples" message, blaming the spacing or the length of the path.
     std::string tooManySamples(long n, double L, double unit, size_t pathPoints) const
     {
@@ -751,53 +757,6 @@ private:
         }
     }
 
-    // ----- points on mesh edges and vertices
-    SurfacePoint vertexPoint(int v) const
-    {
-        const MeshType &m = surf->Mesh();
-        vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&m.vert[v]));
-        return SurfacePoint::AtCorner(surf->Idx(vfi.F()), vfi.I());
-    }
-    std::vector<int> edgeFaces(int a, int b) const
-    {
-        const MeshType &m = surf->Mesh();
-        std::vector<int> out;
-        for (vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&m.vert[a])); !vfi.End(); ++vfi)
-            for (int k = 0; k < 3; ++k)
-                if (vfi.F()->V(k) == &m.vert[b]) out.push_back(surf->Idx(vfi.F()));
-        return out;
-    }
-    /// A face holding both surface points (each may lie on an edge or at a vertex), or -1.
-    int commonFace(const SurfacePoint &a, const SurfacePoint &b) const
-    {
-        const MeshType &m = surf->Mesh();
-        SurfacePoint tmp;
-        for (int f : {a.face, b.face})
-            if (a.InFace(m, f, tmp) && b.InFace(m, f, tmp)) return f;
-        for (int k = 0; k < 3; ++k) {
-            if (!(a.bary[k] > 1e-12)) continue;
-            for (vcg::face::VFIterator<FaceType> vfi(const_cast<FaceType *>(&m.face[a.face])->V(k)); !vfi.End(); ++vfi) {
-                const int f = surf->Idx(vfi.F());
-                if (!vfi.F()->IsD() && a.InFace(m, f, tmp) && b.InFace(m, f, tmp)) return f;
-            }
-        }
-        return -1;
-    }
-
-    /// The point (1-t) a + t b on mesh edge ab, expressed in a face containing that edge.
-    SurfacePoint pointOnEdge(int a, int b, double t) const
-    {
-        const MeshType &m = surf->Mesh();
-        for (vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&m.vert[a])); !vfi.End(); ++vfi)
-            for (int k = 0; k < 3; ++k)
-                if (vfi.F()->V(k) == &m.vert[b]) {
-                    vcg::Point3d bary(0, 0, 0);
-                    bary[vfi.I()] = 1 - t;
-                    bary[k] = t;
-                    return SurfacePoint(surf->Idx(vfi.F()), bary);
-                }
-        throw SnakeError("Geometric snake: the seed path uses a missing edge.");
-    }
     /// Point between two surface points that share a face (consecutive polyline points).
     SurfacePoint interpolate(const SurfacePoint &a, const SurfacePoint &b, double t) const
     {

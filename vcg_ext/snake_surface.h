@@ -171,6 +171,52 @@ public:
     int Idx(const FaceType *f) const { return int(f - &mesh.face[0]); }
     bool FaceUsable(int f) const { return f >= 0 && f < int(mesh.face.size()) && !mesh.face[f].IsD(); }
 
+    // ----- points at mesh vertices and on mesh edges (VF adjacency)
+    /// Vertex v as a surface point: a corner of one of its faces.
+    SurfacePoint VertexPoint(int v) const
+    {
+        vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&mesh.vert[v]));
+        return SurfacePoint::AtCorner(Idx(vfi.F()), vfi.I());
+    }
+    /// The faces holding mesh edge ab (two inside, one on a border).
+    std::vector<int> EdgeFaces(int a, int b) const
+    {
+        std::vector<int> out;
+        for (vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&mesh.vert[a])); !vfi.End(); ++vfi)
+            for (int k = 0; k < 3; ++k)
+                if (vfi.F()->V(k) == &mesh.vert[b]) out.push_back(Idx(vfi.F()));
+        return out;
+    }
+    /// The point (1-t) a + t b on mesh edge ab, in the first face holding that edge; face -1
+    /// if there is no such edge.
+    SurfacePoint PointOnEdge(int a, int b, double t) const
+    {
+        for (vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&mesh.vert[a])); !vfi.End(); ++vfi)
+            for (int k = 0; k < 3; ++k)
+                if (vfi.F()->V(k) == &mesh.vert[b]) {
+                    vcg::Point3d bary(0, 0, 0);
+                    bary[vfi.I()] = 1 - t;
+                    bary[k] = t;
+                    return SurfacePoint(Idx(vfi.F()), bary);
+                }
+        return SurfacePoint();
+    }
+    /// A face holding both surface points (each may lie on an edge or at a vertex), or -1.
+    int CommonFace(const SurfacePoint &a, const SurfacePoint &b) const
+    {
+        SurfacePoint tmp;
+        for (int f : {a.face, b.face})
+            if (a.InFace(mesh, f, tmp) && b.InFace(mesh, f, tmp)) return f;
+        for (int k = 0; k < 3; ++k) {
+            if (!(a.bary[k] > 1e-12)) continue;
+            for (vcg::face::VFIterator<FaceType> vfi(const_cast<FaceType *>(&mesh.face[a.face])->V(k)); !vfi.End(); ++vfi) {
+                const int f = Idx(vfi.F());
+                if (!vfi.F()->IsD() && a.InFace(mesh, f, tmp) && b.InFace(mesh, f, tmp)) return f;
+            }
+        }
+        return -1;
+    }
+
     /// Scratch marks (one generation counter, so clearing is O(1)): used by local region
     /// building so that the cost of an operation never grows with the mesh.
     int NewGeneration()

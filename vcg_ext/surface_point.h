@@ -24,6 +24,17 @@ struct SurfacePoint
         return face >= 0 && std::isfinite(bary[0]) && std::isfinite(bary[1]) && std::isfinite(bary[2]);
     }
 
+    /// A valid point of a live face of m, its coordinates in the triangle up to round-off
+    /// (user input: clicks, files, other tools).
+    template <class MeshType>
+    bool OnMesh(const MeshType &m) const
+    {
+        if (!IsValid() || face >= int(m.face.size()) || m.face[face].IsD()) return false;
+        for (int k = 0; k < 3; ++k)
+            if (bary[k] < -0.01 || bary[k] > 1.01) return false;
+        return true;
+    }
+
     /// The point at a mesh vertex: the corner `corner` (0..2) of face `f`.
     static SurfacePoint AtCorner(int f, int corner)
     {
