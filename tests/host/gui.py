@@ -385,6 +385,26 @@ def changed(path, before, timeout=5):
     return wait_for(lambda: (lambda j: j if j and j != before else None)(snakes_of(path)), timeout)
 
 
+def build_from_clicks(auto, left, right, y, min_samples=1, timeout=20):
+    """Clicks four seeds along row y across the face [left, right] and presses Enter: the built
+    snake's JSON (auto-exported to `auto`) once it has `min_samples` samples, else None."""
+    for f in (0.2, 0.4, 0.6, 0.8):
+        xdo("mousemove", int(left + f * (right - left)), int(y), "click", 1)
+        time.sleep(0.4)
+    xdo("key", "Return")
+    return wait_for(lambda: (lambda j: j if j and samples(j) and len(samples(j)[0]["samples"]) >= min_samples else None)(
+        snakes_of(auto)), timeout)
+
+
+def start_on_front_face(ml, shot):
+    """Starts the tool and finds the cube's front face on screenshot `shot`: (left, right, top,
+    bottom) in pixels, or None if the tool did not start."""
+    if not check(ml.start_tool(), "the tool starts from the Edit menu"):
+        return None
+    time.sleep(1.0)
+    return front_face_extent(Image(screenshot(shot)))
+
+
 def curve_state(j):
     """What the user sees of the snakes: samples (positions, pins), the curves, the counters."""
     return [(x["closed"], x["samples"], x["polyline"], x["stats"]["operations"], x["stats"]["converged"])

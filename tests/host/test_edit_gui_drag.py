@@ -65,18 +65,13 @@ def main():
 
     ml = g.MeshLab(mesh, "run")
     try:
-        if not check(ml.start_tool(), "the tool starts from the Edit menu"):
+        face = g.start_on_front_face(ml, "01_started.png")
+        if not face:
             return 1
-        time.sleep(1.0)
-        img = g.Image(g.screenshot("01_started.png"))
-        left, right, top, bottom = g.front_face_extent(img)
+        left, right, top, bottom = face
         hpx = (right - left) / 2.0 * h
         xm = (left + right) // 2
-        for f in (0.2, 0.4, 0.6, 0.8):
-            xdo("mousemove", int(left + f * (right - left)), int(top + 2.2 * hpx), "click", 1)
-            time.sleep(0.4)
-        xdo("key", "Return")
-        if not check(bool(wait_for(lambda: snakes_of(auto), 20)), "Enter builds the snake"):
+        if not check(bool(g.build_from_clicks(auto, left, right, top + 2.2 * hpx)), "Enter builds the snake"):
             return 1
         xdo("key", "r")
         conv = wait_for(lambda: (lambda j: j if j and samples(j)[0]["stats"]["converged"] else None)(snakes_of(auto)), 60)

@@ -67,18 +67,13 @@ def main():
 
     ml = g.MeshLab(mesh, "run")
     try:
-        if not check(ml.start_tool(), "the tool starts from the Edit menu"):
+        face = g.start_on_front_face(ml, "20_panel.png")
+        if not face:
             return 1
-        time.sleep(1.0)
-        img = g.Image(g.screenshot("20_panel.png"))
-        left, right, top, bottom = g.front_face_extent(img)
+        left, right, top, bottom = face
         hpx = (right - left) / 2.0 * h
         xm = (left + right) // 2
-        for f in (0.2, 0.4, 0.6, 0.8):
-            xdo("mousemove", int(left + f * (right - left)), int(top + 2.2 * hpx), "click", 1)
-            time.sleep(0.4)
-        xdo("key", "Return")
-        s0 = wait_for(lambda: (lambda j: j if j and len(samples(j)[0]["samples"]) >= 5 else None)(snakes_of(auto)), 20)
+        s0 = g.build_from_clicks(auto, left, right, top + 2.2 * hpx, min_samples=5)
         if not check(bool(s0), "Enter builds the snake"):
             return 1
         n0 = len(samples(s0)[0]["samples"])

@@ -71,11 +71,7 @@ def main():
             right - left, bottom - top))
         hpx = (right - left) / 2.0 * h
         ys = int(top + 2.2 * hpx)
-        for f in (0.2, 0.4, 0.6, 0.8):
-            xdo("mousemove", int(left + f * (right - left)), ys, "click", 1)
-            time.sleep(0.4)
-        xdo("key", "Return")
-        s = wait_for(lambda: (lambda j: j if j and len(samples(j)[0]["samples"]) >= 5 else None)(snakes_of(auto)), 20)
+        s = g.build_from_clicks(auto, left, right, ys, min_samples=5)
         check(bool(s), "Enter builds the snake")
         if not s:
             return 1
