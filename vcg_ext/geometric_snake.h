@@ -23,6 +23,7 @@
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_history.h>
 #include <vcg_ext/snake_partition.h>
+#include <vcg_ext/snake_run_control.h>
 #include <vcg_ext/snake_segment_motion.h>
 #include <vcg_ext/snake_surface.h>
 #include <vcg_ext/surface_point.h>
@@ -46,7 +47,7 @@ public:
     typedef SnakeGap Gap;
 
     GeometricSnake(std::shared_ptr<Surface> surface, const SnakeParams &params = SnakeParams())
-        : surf(std::move(surface)), motion(surf)
+        : surf(std::move(surface)), motion(surf), run(surf.get())
     {
         if (!surf) throw SnakeError("Geometric snake: no surface.");
         params.Validate();
@@ -180,16 +181,14 @@ public:
         pushUndo();
         auto t0 = clock::now();
         std::vector<vcg::Point3d> before = positions();
-        if (runLength < 0 && st.closed) runLength = lastLength = loopLength(before, true);
-        if (stage < 0) stage = startLevel();
+        run.Begin(st, before);
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
         else motion.StepProjection(st, stats, frame());
         std::vector<vcg::Point3d> after = positions();
-        double maxMove = curveMove(before, after) / st.unit;
+        const double maxMove = RunControl::CurveMove(before, after, st.closed) / st.unit;
         stats.lastMaxMove = maxMove;
         stats.operations++;
-        updateConvergence(maxMove, after);
-        checkCollapse(after);
+        run.End(st, stats, maxMove, after);
         // the operation's time includes the convergence and well tests (issue 12: they are
         // part of what one operation costs)
         double ms = msSince(t0);
@@ -329,7 +328,7 @@ public:
     bool Converged() const { return stats.converged; }
     /// The level of the energy pyramid the snake slithers on: the coarsest while capturing,
     /// one finer each time its samples sit in wells of the current one, 0 (precise) to settle.
-    int EnergyStage() const { return energyLevel(); }
+    int EnergyStage() const { return run.Level(); }
     Surface &GetSurface() { return *surf; }
     std::shared_ptr<Surface> SurfacePtr() const { return surf; }
     const std::vector<int> &SeedVertices() const { return seedVertices; }
@@ -378,6 +377,7 @@ public:
 private:
     typedef std::chrono::steady_clock clock;
     typedef SnakeSegment Segment;
+    typedef SnakeRunControl<MeshType> RunControl;
 
     std::shared_ptr<Surface> surf;
     SnakeSegmentMotion<MeshType> motion;
@@ -388,11 +388,7 @@ private:
     std::vector<SurfacePoint> seedPoints;
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
-    int stage = -1; // energy level (-1: chosen by startLevel() at the next operation)
-    bool settledOutside = false; // settled on a coarse level outside its wells once already
-    double runLength = -1, lastLength = -1; // closed snakes: length at the start of the run, after the last operation
-    std::deque<double> moveHistory, travelHistory;
-    std::deque<std::vector<vcg::Point3d>> posHistory;
+    RunControl run;
 
 public:
     /// Everything a user sees of the snake (curve, pins, parameters, counters, convergence),
@@ -401,14 +397,11 @@ public:
     {
         decltype(st) curve;
         SnakeStats stats;
-        int stage = -1;
-        decltype(moveHistory) moves, travels;
-        decltype(posHistory) positions;
+        typename RunControl::State run;
         std::vector<int> seeds;
         std::vector<SurfacePoint> seedPoints;
         std::vector<SnakeSample> initialSamples;
         std::vector<SurfacePoint> initialPolyline;
-        double runLength = -1, lastLength = -1;
 
         /// The memory it holds (the undo history is bounded by memory).
         size_t Bytes() const
@@ -416,33 +409,26 @@ public:
             size_t b = sizeof(*this) + curve.samples.capacity() * sizeof(SnakeSample) +
                        initialSamples.capacity() * sizeof(SnakeSample) +
                        (initialPolyline.capacity() + seedPoints.capacity()) * sizeof(SurfacePoint) +
-                       seeds.capacity() * sizeof(int) + (moves.size() + travels.size()) * sizeof(double);
+                       seeds.capacity() * sizeof(int) + run.Bytes();
             for (const auto &g : curve.gaps)
                 b += sizeof(g) + g.faces.capacity() * sizeof(int) + g.crossings.capacity() * sizeof(SurfacePoint);
             b += (stats.msEmbedding.capacity() + stats.msUpdate.capacity() + stats.msOperation.capacity()) * sizeof(double);
-            for (const auto &q : positions) b += q.capacity() * sizeof(vcg::Point3d);
             return b;
         }
     };
     Memento Save() const
     {
-        return Memento{st, stats, stage, moveHistory, travelHistory, posHistory, seedVertices, seedPoints,
-                       initialSamples, initialPolyline, runLength, lastLength};
+        return Memento{st, stats, run.Get(), seedVertices, seedPoints, initialSamples, initialPolyline};
     }
     void Restore(const Memento &m)
     {
         st = m.curve;
         stats = m.stats;
-        stage = m.stage;
-        moveHistory = m.moves;
-        travelHistory = m.travels;
-        posHistory = m.positions;
+        run.Set(m.run);
         seedVertices = m.seeds;
         seedPoints = m.seedPoints;
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
-        runLength = m.runLength;
-        lastLength = m.lastLength;
         motion.ClearCache();
     }
 
@@ -574,7 +560,7 @@ private:
     SnakeMotionFrame frame() const
     {
         SnakeMotionFrame f;
-        f.level = energyLevel();
+        f.level = run.Level();
         f.unit = st.unit;
         // a coarse level's slopes are gentler by its reach: scale its force back up
         const double reach = surf->EnergyField().Reach(f.level);
@@ -596,139 +582,6 @@ private:
         return area * normal >= 0 ? 1.0 : -1.0;
     }
 
-    /// Length of the sample polygon.
-    static double loopLength(const std::vector<vcg::Point3d> &p, bool closed)
-    {
-        double L = 0;
-        for (size_t i = 0; i + (closed ? 0 : 1) < p.size(); ++i) L += (p[(i + 1) % p.size()] - p[i]).Norm();
-        return L;
-    }
-
-    /// A closed snake that shrinks where no feature holds it would end as a point and report
-    /// convergence: stop it instead and say so. Collapsing: still shrinking (or settled) after
-    /// losing three quarters of its length since the run started, or less than 2 length units
-    /// long. Its samples then sit on top of each other, whatever the energy there.
-    void checkCollapse(const std::vector<vcg::Point3d> &pos)
-    {
-        if (!st.closed || pos.size() < 3) return;
-        double L = loopLength(pos, true);
-        if (runLength < 0) runLength = std::max(L, lastLength);
-        bool shrinking = lastLength > 0 && L < lastLength - 1e-6 * st.unit;
-        lastLength = L;
-        double e = 0;
-        for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
-        e /= double(st.samples.size());
-        bool tiny = L < 2 * st.unit;
-        if (!(tiny || ((shrinking || stats.converged) && L < 0.25 * runLength))) return;
-        stats.stopped = true;
-        stats.converged = false;
-        char msg[300];
-        std::snprintf(msg, sizeof msg,
-                      "the closed snake is collapsing where no feature holds it (length %.3g, %.0f %% of its length "
-                      "at the start, mean energy %.2f): stopped. Seed it closer to the feature, or inflate it with "
-                      "a positive Balloon.", L, 100.0 * L / std::max(runLength, 1e-300), e);
-        if (stats.warnings.size() < 20) stats.warnings.push_back(msg);
-    }
-
-    int energyLevel() const
-    {
-        const int top = surf->Levels() - 1;
-        return stage < 0 ? top : std::min(stage, top);
-    }
-
-    /// Where a run starts: the finest level whose wells the samples already sit in (on level 0
-    /// also with a mean energy below 0.7: feature-like, not a noise dip), else the coarsest. A
-    /// snake seeded on a feature is not dragged off it by a coarse level, which merges it with
-    /// a parallel feature a few edges away into one well between them.
-    int startLevel() const
-    {
-        const int top = surf->Levels() - 1;
-        for (int l = 0; l < top; ++l) {
-            if (l == 0) {
-                double e = 0;
-                for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
-                if (e >= 0.7 * double(st.samples.size())) continue;
-            }
-            if (inWells(l)) return l;
-        }
-        return top;
-    }
-
-    /// The samples sit in wells of `level`: across the curve, the energy rises on both sides
-    /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
-    /// The probes stop as soon as the answer is known (it runs after most operations on a
-    /// coarse level: two projections per sample cost more than the operation itself).
-    /// On a coarse level, samples held at level-0 wells (SnakeSample::heldFine) count as in.
-    bool inWells(int level) const
-    {
-        const std::vector<vcg::Point3d> p = positions();
-        const int n = int(p.size());
-        std::vector<std::pair<int, vcg::Point3d>> probes; // free samples with a direction across the curve
-        probes.reserve(n);
-        int held = 0;
-        for (int i = 0; i < n; ++i) {
-            const SnakeSample &s = st.samples[i];
-            if (s.fixed) continue;
-            if (level > 0 && s.heldFine) {
-                ++held;
-                continue;
-            }
-            const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
-            const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
-            vcg::Point3d across = surf->FaceNormal(s.p.face) ^ (p[b] - p[a]);
-            if (!(across.Norm() > 0)) continue;
-            probes.emplace_back(i, across.Normalize());
-        }
-        const int count = int(probes.size());
-        const double need = 0.9 * (count + held);
-        int in = held;
-        for (int k = 0; k < count; ++k) {
-            if (in >= need) return true;
-            if (in + (count - k) < need) return false;
-            const int i = probes[k].first;
-            const vcg::Point3d &across = probes[k].second;
-            const SnakeSample &s = st.samples[i];
-            const double e = surf->EnergyAt(level, s.p), d = st.unit;
-            const SurfacePoint q1 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * d, 3 * d);
-            if (!(e <= surf->EnergyAt(level, q1) + 1e-6)) continue;
-            const SurfacePoint q2 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] - across * d, 3 * d);
-            in += e <= surf->EnergyAt(level, q2) + 1e-6;
-        }
-        return count == 0 || in >= need;
-    }
-
-    /// The share of the free samples held on level 0 (SnakeSample::heldFine).
-    double heldShare() const
-    {
-        int free = 0, held = 0;
-        for (const auto &s : st.samples)
-            if (!s.fixed) ++free, held += s.heldFine;
-        return free ? double(held) / free : 0.0;
-    }
-
-    /// How far the curve moved: each new sample's distance to the old curve near it. Sliding
-    /// along the curve does not change the curve, so it does not count.
-    double curveMove(const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b) const
-    {
-        const int n = int(a.size());
-        if (int(b.size()) != n) return 1e9;
-        double worst = 0;
-        for (int i = 0; i < n; ++i) {
-            double best = (b[i] - a[i]).Norm();
-            for (int j = i - 2; j <= i + 1; ++j) {
-                int j0 = j, j1 = j + 1;
-                if (st.closed) { j0 = (j0 + n) % n; j1 = (j1 + n) % n; }
-                else if (j0 < 0 || j1 >= n) continue;
-                vcg::Point3d d = a[j1] - a[j0];
-                double L2 = d.SquaredNorm();
-                double t = L2 > 0 ? std::max(0.0, std::min(1.0, ((b[i] - a[j0]) * d) / L2)) : 0.0;
-                best = std::min(best, (b[i] - (a[j0] + d * t)).Norm());
-            }
-            worst = std::max(worst, best);
-        }
-        return worst;
-    }
-
     void resetRun()
     {
         motion.ForgetEmbeddings(); // samples were placed anew: regions are built around them
@@ -736,14 +589,9 @@ private:
             smp.trust = 1.0;
             smp.heldFine = false;
         }
-        stage = -1;
-        settledOutside = false;
+        run.Reset();
         stats.converged = false;
         stats.stopped = false;
-        runLength = -1;
-        moveHistory.clear();
-        travelHistory.clear();
-        posHistory.clear();
     }
     void invalidateAround(int i)
     {
@@ -836,63 +684,6 @@ private:
         std::vector<Segment> segs = partition(overlaps);
         for (auto &s : segs) motion.Move(st, stats, s, 0, frame());
         for (auto &s : overlaps) motion.Move(st, stats, s, 0, frame());
-    }
-
-    // ----- convergence: the largest move per operation stays below the tolerance for
-    // `window` operations, or -- robust to oscillation and jitter -- the curve as a whole
-    // has not moved farther than twice the tolerance over the last 2 * window operations.
-    void updateConvergence(double maxMove, const std::vector<vcg::Point3d> &pos)
-    {
-        const double tol = st.params.convergenceTol;
-        const int W = st.params.convergenceWindow;
-        moveHistory.push_back(maxMove);
-        while (int(moveHistory.size()) > W) moveHistory.pop_front();
-        travelHistory.push_back(maxMove);
-        while (int(travelHistory.size()) > 2 * W) travelHistory.pop_front();
-        bool still = int(moveHistory.size()) == W &&
-                     std::all_of(moveHistory.begin(), moveHistory.end(), [&](double v) { return v < tol; });
-        posHistory.push_back(pos);
-        while (int(posHistory.size()) > 2 * W + 1) posHistory.pop_front();
-        bool oscillating = false;
-        if (int(posHistory.size()) == 2 * W + 1) {
-            // net displacement of the curve over the window against the way travelled: a curve
-            // that only jitters in place (a sample bouncing at a corner) has gone nowhere
-            double net = curveMove(posHistory.front(), posHistory.back()) / st.unit;
-            double travelled = std::accumulate(travelHistory.begin(), travelHistory.end(), 0.0);
-            oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
-        }
-        stats.converged = still || oscillating;
-        const int level = energyLevel();
-        if (level > 0) {
-            // On a coarse level the snake only has to reach its wells: it steps down to the
-            // next finer level as soon as its samples sit in them and it moves by less than 0.3
-            // units per operation, settled or not (the cusp of a smoothed well keeps it bouncing
-            // by about that much). From level 1 to level 0 it settles first: level 0 is flat
-            // across the chamfer that triangles straddling a crease cut, so samples stay about
-            // where they land in it. Settling outside the wells is a stall: retry once with full
-            // steps, then step down anyway (a snake held by its own tension, or no well there).
-            // Samples held at level-0 wells (SnakeSegmentMotion::HoldAtWell) already move on level
-            // 0 and count as in the wells; once all are held, the whole snake goes there. Not
-            // sooner: stretches that lag behind (a loop seeded far up an octahedron's corners
-            // while its middle reached the equator) need the coarse levels' reach.
-            // Every switch resets the step control.
-            if (heldShare() >= 1.0) {
-                stage = 0;
-                settledOutside = false;
-            } else if (((level == 1 ? stats.converged : maxMove < 0.3) && inWells(level)) || (stats.converged && settledOutside)) {
-                stage = level - 1;
-                settledOutside = false;
-            } else if (stats.converged) {
-                settledOutside = true;
-            } else {
-                return;
-            }
-            for (auto &smp : st.samples) smp.trust = 1.0;
-            stats.converged = false;
-            moveHistory.clear();
-            travelHistory.clear();
-            posHistory.clear();
-        }
     }
 };
 

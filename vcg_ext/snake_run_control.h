@@ -1,0 +1,272 @@
+#ifndef VCG_EXT_SNAKE_RUN_CONTROL_H
+#define VCG_EXT_SNAKE_RUN_CONTROL_H
+
+// When a run of snake operations stops, and on which level of the energy pyramid it slithers
+// (beyond the paper: coarse-to-fine capture, issue 9): the convergence test, the level schedule
+// with its well test, and the watch that stops a closed snake collapsing where no feature holds
+// it. Its State is part of what undo restores (GeometricSnake::Memento).
+
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+#include <numeric>
+#include <vector>
+
+#include <vcg_ext/snake_curve.h>
+#include <vcg_ext/snake_surface.h>
+#include <vcg_ext/surface_projection.h>
+
+namespace vcg {
+namespace tri {
+
+template <class MeshType>
+class SnakeRunControl
+{
+public:
+    typedef SnakeSurface<MeshType> Surface;
+    typedef std::vector<vcg::Point3d> Positions;
+
+    struct State
+    {
+        int stage = -1;              ///< energy level (-1: chosen by startLevel() at the next operation)
+        bool settledOutside = false; ///< settled on a coarse level outside its wells once already
+        double runLength = -1, lastLength = -1; ///< closed snakes: length at the run's start, after the last operation
+        std::deque<double> moves, travels;
+        std::deque<Positions> positions;
+
+        size_t Bytes() const
+        {
+            size_t b = sizeof(*this) + (moves.size() + travels.size()) * sizeof(double);
+            for (const auto &q : positions) b += q.capacity() * sizeof(vcg::Point3d);
+            return b;
+        }
+    };
+
+    explicit SnakeRunControl(const Surface *s) : surf(s) {}
+
+    const State &Get() const { return state; }
+    void Set(const State &s) { state = s; }
+
+    /// A new run (samples placed anew, edited, new parameters): the level is chosen again at
+    /// the next operation. The last length stays: a collapse is measured against it.
+    void Reset()
+    {
+        const double last = state.lastLength;
+        state = State();
+        state.lastLength = last;
+    }
+
+    /// The level the snake slithers on: the coarsest while capturing, one finer each time its
+    /// samples sit in wells of the current one, 0 (precise) to settle.
+    int Level() const
+    {
+        const int top = surf->Levels() - 1;
+        return state.stage < 0 ? top : std::min(state.stage, top);
+    }
+
+    /// Before an operation, with the samples where they are.
+    void Begin(const SnakeCurve &st, const Positions &pos)
+    {
+        if (state.runLength < 0 && st.closed) state.runLength = state.lastLength = LoopLength(pos, true);
+        if (state.stage < 0) state.stage = startLevel(st, pos);
+    }
+
+    /// After an operation that moved the curve by `maxMove` length units: convergence, the
+    /// switch to a finer level (it resets the samples' step control), the collapse watch.
+    void End(SnakeCurve &st, SnakeStats &stats, double maxMove, const Positions &pos)
+    {
+        updateConvergence(st, stats, maxMove, pos);
+        checkCollapse(st, stats, pos);
+    }
+
+    /// How far the curve moved: each new sample's distance to the old curve near it. Sliding
+    /// along the curve does not change the curve, so it does not count.
+    static double CurveMove(const Positions &a, const Positions &b, bool closed)
+    {
+        const int n = int(a.size());
+        if (int(b.size()) != n) return 1e9;
+        double worst = 0;
+        for (int i = 0; i < n; ++i) {
+            double best = (b[i] - a[i]).Norm();
+            for (int j = i - 2; j <= i + 1; ++j) {
+                int j0 = j, j1 = j + 1;
+                if (closed) { j0 = (j0 + n) % n; j1 = (j1 + n) % n; }
+                else if (j0 < 0 || j1 >= n) continue;
+                const vcg::Point3d d = a[j1] - a[j0];
+                const double L2 = d.SquaredNorm();
+                const double t = L2 > 0 ? std::max(0.0, std::min(1.0, ((b[i] - a[j0]) * d) / L2)) : 0.0;
+                best = std::min(best, (b[i] - (a[j0] + d * t)).Norm());
+            }
+            worst = std::max(worst, best);
+        }
+        return worst;
+    }
+
+    /// Length of the sample polygon.
+    static double LoopLength(const Positions &p, bool closed)
+    {
+        double L = 0;
+        for (size_t i = 0; i + (closed ? 0 : 1) < p.size(); ++i) L += (p[(i + 1) % p.size()] - p[i]).Norm();
+        return L;
+    }
+
+private:
+    const Surface *surf;
+    State state;
+
+    /// Where a run starts: the finest level whose wells the samples already sit in (on level 0
+    /// also with a mean energy below 0.7: feature-like, not a noise dip), else the coarsest. A
+    /// snake seeded on a feature is not dragged off it by a coarse level, which merges it with
+    /// a parallel feature a few edges away into one well between them.
+    int startLevel(const SnakeCurve &st, const Positions &pos) const
+    {
+        const int top = surf->Levels() - 1;
+        for (int l = 0; l < top; ++l) {
+            if (l == 0) {
+                double e = 0;
+                for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
+                if (e >= 0.7 * double(st.samples.size())) continue;
+            }
+            if (inWells(st, pos, l)) return l;
+        }
+        return top;
+    }
+
+    /// The samples sit in wells of `level`: across the curve, the energy rises on both sides
+    /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
+    /// The probes stop as soon as the answer is known (it runs after most operations on a
+    /// coarse level: two projections per sample cost more than the operation itself).
+    /// On a coarse level, samples held at level-0 wells (SnakeSample::heldFine) count as in.
+    bool inWells(const SnakeCurve &st, const Positions &p, int level) const
+    {
+        const int n = int(p.size());
+        std::vector<std::pair<int, vcg::Point3d>> probes; // free samples with a direction across the curve
+        probes.reserve(n);
+        int held = 0;
+        for (int i = 0; i < n; ++i) {
+            const SnakeSample &s = st.samples[i];
+            if (s.fixed) continue;
+            if (level > 0 && s.heldFine) {
+                ++held;
+                continue;
+            }
+            const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
+            const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
+            vcg::Point3d across = surf->FaceNormal(s.p.face) ^ (p[b] - p[a]);
+            if (!(across.Norm() > 0)) continue;
+            probes.emplace_back(i, across.Normalize());
+        }
+        const int count = int(probes.size());
+        const double need = 0.9 * (count + held);
+        int in = held;
+        for (int k = 0; k < count; ++k) {
+            if (in >= need) return true;
+            if (in + (count - k) < need) return false;
+            const int i = probes[k].first;
+            const vcg::Point3d &across = probes[k].second;
+            const SnakeSample &s = st.samples[i];
+            const double e = surf->EnergyAt(level, s.p), d = st.unit;
+            const SurfacePoint q1 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * d, 3 * d);
+            if (!(e <= surf->EnergyAt(level, q1) + 1e-6)) continue;
+            const SurfacePoint q2 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] - across * d, 3 * d);
+            in += e <= surf->EnergyAt(level, q2) + 1e-6;
+        }
+        return count == 0 || in >= need;
+    }
+
+    /// The share of the free samples held on level 0 (SnakeSample::heldFine).
+    static double heldShare(const SnakeCurve &st)
+    {
+        int free = 0, held = 0;
+        for (const auto &s : st.samples)
+            if (!s.fixed) ++free, held += s.heldFine;
+        return free ? double(held) / free : 0.0;
+    }
+
+    // Convergence: the largest move per operation stays below the tolerance for `window`
+    // operations, or -- robust to oscillation and jitter -- the curve as a whole has not moved
+    // farther than twice the tolerance over the last 2 * window operations.
+    void updateConvergence(SnakeCurve &st, SnakeStats &stats, double maxMove, const Positions &pos)
+    {
+        const double tol = st.params.convergenceTol;
+        const int W = st.params.convergenceWindow;
+        state.moves.push_back(maxMove);
+        while (int(state.moves.size()) > W) state.moves.pop_front();
+        state.travels.push_back(maxMove);
+        while (int(state.travels.size()) > 2 * W) state.travels.pop_front();
+        const bool still = int(state.moves.size()) == W &&
+                           std::all_of(state.moves.begin(), state.moves.end(), [&](double v) { return v < tol; });
+        state.positions.push_back(pos);
+        while (int(state.positions.size()) > 2 * W + 1) state.positions.pop_front();
+        bool oscillating = false;
+        if (int(state.positions.size()) == 2 * W + 1) {
+            // net displacement of the curve over the window against the way travelled: a curve
+            // that only jitters in place (a sample bouncing at a corner) has gone nowhere
+            const double net = CurveMove(state.positions.front(), state.positions.back(), st.closed) / st.unit;
+            const double travelled = std::accumulate(state.travels.begin(), state.travels.end(), 0.0);
+            oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
+        }
+        stats.converged = still || oscillating;
+        const int level = Level();
+        if (level == 0) return;
+        // On a coarse level the snake only has to reach its wells: it steps down to the next
+        // finer level as soon as its samples sit in them and it moves by less than 0.3 units per
+        // operation, settled or not (the cusp of a smoothed well keeps it bouncing by about that
+        // much). From level 1 to level 0 it settles first: level 0 is flat across the chamfer
+        // that triangles straddling a crease cut, so samples stay about where they land in it.
+        // Settling outside the wells is a stall: retry once with full steps, then step down
+        // anyway (a snake held by its own tension, or no well there). Samples held at level-0
+        // wells (SnakeSegmentMotion::HoldAtWell) already move on level 0 and count as in the
+        // wells; once all are held, the whole snake goes there. Not sooner: stretches that lag
+        // behind (a loop seeded far up an octahedron's corners while its middle reached the
+        // equator) need the coarse levels' reach. Every switch resets the step control.
+        if (heldShare(st) >= 1.0) {
+            state.stage = 0;
+            state.settledOutside = false;
+        } else if (((level == 1 ? stats.converged : maxMove < 0.3) && inWells(st, pos, level)) ||
+                   (stats.converged && state.settledOutside)) {
+            state.stage = level - 1;
+            state.settledOutside = false;
+        } else if (stats.converged) {
+            state.settledOutside = true;
+        } else {
+            return;
+        }
+        for (auto &smp : st.samples) smp.trust = 1.0;
+        stats.converged = false;
+        state.moves.clear();
+        state.travels.clear();
+        state.positions.clear();
+    }
+
+    /// A closed snake that shrinks where no feature holds it would end as a point and report
+    /// convergence: stop it instead and say so. Collapsing: still shrinking (or settled) after
+    /// losing three quarters of its length since the run started, or less than 2 length units
+    /// long. Its samples then sit on top of each other, whatever the energy there.
+    void checkCollapse(const SnakeCurve &st, SnakeStats &stats, const Positions &pos)
+    {
+        if (!st.closed || pos.size() < 3) return;
+        const double L = LoopLength(pos, true);
+        if (state.runLength < 0) state.runLength = std::max(L, state.lastLength);
+        const bool shrinking = state.lastLength > 0 && L < state.lastLength - 1e-6 * st.unit;
+        state.lastLength = L;
+        double e = 0;
+        for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
+        e /= double(st.samples.size());
+        const bool tiny = L < 2 * st.unit;
+        if (!(tiny || ((shrinking || stats.converged) && L < 0.25 * state.runLength))) return;
+        stats.stopped = true;
+        stats.converged = false;
+        char msg[300];
+        std::snprintf(msg, sizeof msg,
+                      "the closed snake is collapsing where no feature holds it (length %.3g, %.0f %% of its length "
+                      "at the start, mean energy %.2f): stopped. Seed it closer to the feature, or inflate it with "
+                      "a positive Balloon.", L, 100.0 * L / std::max(state.runLength, 1e-300), e);
+        if (stats.warnings.size() < 20) stats.warnings.push_back(msg);
+    }
+};
+
+} // namespace tri
+} // namespace vcg
+
+#endif
