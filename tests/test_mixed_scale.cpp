@@ -68,6 +68,9 @@ class GradedCube : public ::testing::TestWithParam<ScaleCase> {};
 // A per-sample local scale (commit 31871dd, reverted: it broke the capture-range test) reached
 // 0.52 / 1.21 and 0.66 / 0.97; the coarse end's seed vertex lies 0.13 from the perpendicular cube
 // edge and 0.54 from the target, and the end is pulled round the corner (docs/evaluation.md).
+// Session 6: 0.50 / 1.05 (embedding), 0.58 / 0.76 (projection). The coarse end's seed vertex lies
+// in the perpendicular edge's level-0 well (0.38 / 0.77 local edges from it, energy 0.007 / 0.117),
+// and the end goes onto the face beyond that edge with either end rule (docs/evaluation.md).
 TEST_P(GradedCube, DISABLED_SnakeCapturesAnEdgeWhoseMeshGrades)
 {
     const ScaleCase c = GetParam();
