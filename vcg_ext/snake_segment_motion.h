@@ -151,7 +151,7 @@ public:
                     const double gain = lev == level ? fr.gain : 1.0;
                     const Eigen::Vector2d g = gradient(lev, lf[j], B.row(j));
                     slope[j] = g.norm();
-                    if (lev > 0 && faceLinear) pull[j] = g; // alongPull
+                    if (lev > 0 && faceLinear) pull[j] = g; // alongPullBlend
                     Eigen::Vector2d f = st.params.externalWeight * gain * g;
                     Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
                                          X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
@@ -274,7 +274,7 @@ public:
         Eigen::MatrixXd X(n, 3), F(n, 3);
         std::vector<double> slope(n, 0.0);
         std::vector<Eigen::Vector3d> across(n, Eigen::Vector3d::Zero()), tangent(n, Eigen::Vector3d::Zero()); // the curve's frame
-        std::vector<Eigen::Vector3d> pull(n, Eigen::Vector3d::Zero()); // the coarse gradient (alongPull)
+        std::vector<Eigen::Vector3d> pull(n, Eigen::Vector3d::Zero()); // the coarse gradient (alongPullBlend)
         for (int u = 0; u < st.params.updatesPerOperation; ++u) {
             auto tu = clock::now();
             for (int i = 0; i < n; ++i) {
@@ -283,7 +283,7 @@ public:
                 const int lev = SampleLevel(st.samples[i], level);
                 vcg::Point3d g = surf->EnergyGradient(lev, st.samples[i].p) * h; // per edge length
                 slope[i] = g.Norm();
-                if (lev > 0 && faceLinear) pull[i] = Eigen::Vector3d(g[0], g[1], g[2]); // alongPull
+                if (lev > 0 && faceLinear) pull[i] = Eigen::Vector3d(g[0], g[1], g[2]); // alongPullBlend
                 g *= st.params.externalWeight * (lev == level ? fr.gain : 1.0);
                 F.row(i) << g[0], g[1], g[2];
             }
@@ -316,14 +316,14 @@ public:
                 Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
                 if (!d.allFinite()) continue;
                 const bool pulled = st.IsOpenEnd(i) && pull[i].norm() > 0;
-                if (pulled) d = alongPull(d, pull[i]);
-                else if (st.IsOpenEnd(i)) {
+                if (st.IsOpenEnd(i)) {
                     // in space "across the end tangent" is a plane: keep only the direction across
                     // it in the sample's tangent plane (the rest slides the end along a crease)
                     const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
                     Eigen::Vector3d a = endTangent<Eigen::Vector3d>(X, i).cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
-                    if (a.norm() > 0) d = d.dot(a.normalized()) * a.normalized();
-                    else d = acrossEnd<Eigen::Vector3d>(X, i, d);
+                    const Eigen::Vector3d dAcross = a.norm() > 0 ? Eigen::Vector3d(d.dot(a.normalized()) * a.normalized())
+                                                                 : acrossEnd<Eigen::Vector3d>(X, i, d);
+                    d = pulled ? alongPullBlend(d, pull[i], dAcross) : dAcross;
                 }
                 double len = d.norm();
                 double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
@@ -332,10 +332,11 @@ public:
                 vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
                 SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
                                                                        d.norm() * h + 1.5 * h);
-                if (st.IsOpenEnd(i) && !pulled) { // the projection, too, can slide an end along a crease: undo that
+                if (st.IsOpenEnd(i)) { // the projection, too, can slide an end along a crease: undo that
+                    // (only its own slide: the blended move may go along the tangent, alongPullBlend)
                     Eigen::Vector3d t = endTangent<Eigen::Vector3d>(X, i);
                     const vcg::Point3d y = np.Pd(m) / h;
-                    const double along = t.norm() > 0 ? (Eigen::Vector3d(y[0], y[1], y[2]) - X.row(i).transpose()).dot(t.normalized()) : 0;
+                    const double along = t.norm() > 0 ? (Eigen::Vector3d(y[0], y[1], y[2]) - q).dot(t.normalized()) : 0;
                     if (along != 0) {
                         const Eigen::Vector3d q2 = q - along * t.normalized();
                         np = SurfaceProjection<MeshType>::Closest(*surf, np.face, vcg::Point3d(q2[0] * h, q2[1] * h, q2[2] * h),
@@ -465,11 +466,14 @@ private:
     /// smoothed vertex energy (FaceLinear fields): the CAD crease distance's gradient points at
     /// the nearest crease point, which near a rim's end lies along the rim (an open snake on a
     /// pocket rim then covered 85.8 % of its span instead of 96.8 %).
-    /// alongPull where the coarse gradient g is steep, the move across the end's tangent
+    /// Hence: along g where the coarse gradient g is steep, the move across the end's tangent
     /// (`across`) where it is flat, blended smoothly: g g^T / (|g|^2 + s^2) is smooth in g, the
     /// direction of g alone is not, and near a coarse well's bottom it turns with the rounding of
     /// the mesh (the open snake on icocube at 1e30 ended 2.05e-6 of the size from scale 1, limit
-    /// 1e-6; blended with s = kPullSlope, 7.7e-8). Embedding method; the plane is in length units.
+    /// 1e-6; blended with s = kPullSlope, 7.7e-8). Both methods: g is per length unit (the
+    /// embedding's plane is in length units; the projection method scales it by the unit). The
+    /// projection method moved along g alone until then: at 1e+-30 its open snake on icocube ended
+    /// 7.3e-3 / 5.5e-3 of the size from scale 1; blended, 9.5e-4 / 3.3e-4.
     template <class Vec>
     static Vec alongPullBlend(const Vec &d, const Vec &g, const Vec &across)
     {
@@ -479,12 +483,6 @@ private:
     /// alongPullBlend: the coarse slope (energy per length unit) at which the two directions weigh
     /// the same. 0.01 still flipped a decision at 1e30 (5.5e-3 of the size), 0.05 gave 1.8e-4.
     static constexpr double kPullSlope = 0.2;
-    template <class Vec>
-    static Vec alongPull(const Vec &d, const Vec &g)
-    {
-        const Vec a = g.normalized();
-        return d.dot(a) * a;
-    }
     /// The end condition of an open snake: its end samples move only across the curve, so the
     /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
     /// "Across" is measured against the direction over several samples (endTangent), not the
