@@ -113,6 +113,9 @@ public:
 private:
     const Surface *surf;
     State state;
+    // inWells' probe order, a cost heuristic and not the run's state: per sample, the side whose
+    // probe found no well last time (1: ahead across, 2: behind), 0 if none
+    mutable std::vector<unsigned char> wellMiss;
 
     /// Where a run starts: the finest level whose wells the samples already sit in (on level 0
     /// also with a mean energy below 0.7: feature-like, not a noise dip), else the coarsest. A
@@ -135,27 +138,32 @@ private:
     /// The samples sit in wells of `level`: across the curve, the energy rises on both sides
     /// (probes one length unit away, projected onto the surface) at >= 90 % of the free samples.
     /// The probes stop as soon as the answer is known (it runs after most operations on a
-    /// coarse level: two projections per sample cost more than the operation itself).
+    /// coarse level: two projections per sample cost more than the operation itself). The
+    /// answer is a count, so the order of the probes does not change it: the samples (and the
+    /// side) that were out of a well at the last call go first, and a snake still outside its
+    /// wells is told so after a few probes instead of most of them.
     /// On a coarse level, samples held at level-0 wells (SnakeSample::heldFine) count as in.
     bool inWells(const SnakeCurve &st, const Positions &p, int level) const
     {
         const int n = int(p.size());
+        if (int(wellMiss.size()) != n) wellMiss.assign(n, 0);
         std::vector<std::pair<int, vcg::Point3d>> probes; // free samples with a direction across the curve
         probes.reserve(n);
         int held = 0;
-        for (int i = 0; i < n; ++i) {
-            const SnakeSample &s = st.samples[i];
-            if (s.fixed) continue;
-            if (level > 0 && s.heldFine) {
-                ++held;
-                continue;
+        for (int pass = 0; pass < 2; ++pass) // last call's misses first
+            for (int i = 0; i < n; ++i) {
+                const SnakeSample &s = st.samples[i];
+                if (s.fixed || (wellMiss[i] != 0) != (pass == 0)) continue;
+                if (level > 0 && s.heldFine) {
+                    ++held;
+                    continue;
+                }
+                const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
+                const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
+                vcg::Point3d across = surf->FaceNormal(s.p.face) ^ (p[b] - p[a]);
+                if (!(across.Norm() > 0)) continue;
+                probes.emplace_back(i, across.Normalize());
             }
-            const int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0);
-            const int b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
-            vcg::Point3d across = surf->FaceNormal(s.p.face) ^ (p[b] - p[a]);
-            if (!(across.Norm() > 0)) continue;
-            probes.emplace_back(i, across.Normalize());
-        }
         const int count = int(probes.size());
         const double need = 0.9 * (count + held);
         int in = held;
@@ -166,10 +174,17 @@ private:
             const vcg::Point3d &across = probes[k].second;
             const SnakeSample &s = st.samples[i];
             const double e = surf->EnergyAt(level, s.p), d = st.unit;
-            const SurfacePoint q1 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * d, 3 * d);
-            if (!(e <= surf->EnergyAt(level, q1) + 1e-6)) continue;
-            const SurfacePoint q2 = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] - across * d, 3 * d);
-            in += e <= surf->EnergyAt(level, q2) + 1e-6;
+            bool rises = true;
+            for (const double side : {wellMiss[i] == 2 ? -1.0 : 1.0, wellMiss[i] == 2 ? 1.0 : -1.0}) {
+                const SurfacePoint q = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * (side * d), 3 * d);
+                if (!(e <= surf->EnergyAt(level, q) + 1e-6)) {
+                    rises = false;
+                    wellMiss[i] = side > 0 ? 1 : 2;
+                    break;
+                }
+            }
+            if (rises) wellMiss[i] = 0;
+            in += rises;
         }
         return count == 0 || in >= need;
     }

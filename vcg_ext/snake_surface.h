@@ -53,6 +53,7 @@ public:
         vertMark.assign(m.vert.size(), 0);
         vertDist.assign(m.vert.size(), 0.0);
         vertSrc.assign(m.vert.size(), 0);
+        floodStamp.assign(m.face.size(), 0);
         if (captureSmoothing < 0 || captureSmoothing > 10000)
             throw SnakeError("Geometric snake: capture smoothing must be in [0, 10000].");
         captureSteps = captureSmoothing;
@@ -235,12 +236,24 @@ public:
     std::vector<int> vertMark, vertSrc;
     std::vector<double> vertDist;
     std::vector<std::pair<double, int>> heapScratch;
+    /// Marks and queue of SurfaceProjection's flood, apart from the region's marks (a kept
+    /// region's LocalFace reads faceStamp while projections run). Scratch, hence mutable.
+    int NewFloodGeneration() const
+    {
+        if (++floodGeneration == 0x7fffffff) {
+            std::fill(floodStamp.begin(), floodStamp.end(), 0);
+            floodGeneration = 1;
+        }
+        return floodGeneration;
+    }
+    mutable std::vector<int> floodStamp, floodTodo;
 
 private:
     MeshType &mesh;
     double meanEdge = 1;
     int faceCount = 0, vertCount = 0;
     int generation = 0;
+    mutable int floodGeneration = 0;
     int captureSteps = 0;
     std::vector<float> energy;
     std::shared_ptr<const SnakeEnergyField<MeshType>> field;

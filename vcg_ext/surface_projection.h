@@ -2,9 +2,9 @@
 #define VCG_EXT_SURFACE_PROJECTION_H
 
 #include <algorithm>
-#include <vector>
+#include <cmath>
 #include <limits>
-#include <unordered_set>
+#include <vector>
 
 #include <vcg/space/distance3.h>
 #include <vcg/space/triangle3.h>
@@ -28,34 +28,62 @@ public:
                                 int *visitedOut = nullptr)
     {
         const MeshType &m = s.Mesh();
-        // a flood over a few dozen faces: a vector searched linearly is faster than a hash set
-        // (this runs twice per sample in GeometricSnake's well test and once per update of the
-        // naive method); a hash set takes over if the flood grows large
-        std::vector<int> todo(1, startFace);
-        std::unordered_set<int> seenLarge;
-        auto firstVisit = [&](int f) {
-            if (todo.size() < 64) return std::find(todo.begin(), todo.end(), f) == todo.end();
-            if (seenLarge.empty()) seenLarge.insert(todo.begin(), todo.end());
-            return seenLarge.insert(f).second;
-        };
+        // The flood visits every face reached through faces within `radius` of q (and the start
+        // face); the closest of them wins, the first one visited on a tie. Marks in the surface's
+        // flood stamps instead of a set; the queue is the surface's too (no allocation).
+        const int gen = s.NewFloodGeneration();
+        std::vector<int> &todo = s.floodTodo;
+        std::vector<int> &stamp = s.floodStamp;
+        todo.clear();
+        todo.push_back(startFace);
+        stamp[startFace] = gen;
+        // Most faces of the flood need no exact point-triangle distance: their bounding box
+        // is farther from q than the best face so far (no win), and their farthest corner is
+        // within `radius` (expand) or their box beyond it (stop). Those bounds decide only
+        // with a margin far above rounding (relative to the coordinates), so the faces won and
+        // expanded are the same as with the exact distance everywhere.
+        const double slack = 1e-9 * (std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) + radius);
+        const double rIn = std::max(0.0, radius - slack), rOut = radius + slack;
+        const double rIn2 = rIn * rIn, rOut2 = rOut * rOut;
         double bestD = std::numeric_limits<double>::max();
         int bestF = startFace;
         vcg::Point3d bestP = q;
         for (size_t next = 0; next < todo.size(); ++next) {
             const int f = todo[next];
             const FaceType &ff = m.face[f];
-            vcg::Triangle3<double> t(vcg::Point3d::Construct(ff.cV(0)->cP()), vcg::Point3d::Construct(ff.cV(1)->cP()),
-                                     vcg::Point3d::Construct(ff.cV(2)->cP()));
-            double d;
-            vcg::Point3d c;
-            vcg::TrianglePointDistance<double>(t, q, d, c);
-            if (d < bestD) { bestD = d; bestF = f; bestP = c; }
-            if (d > radius && f != startFace) continue;
+            const vcg::Point3d v0 = vcg::Point3d::Construct(ff.cV(0)->cP()), v1 = vcg::Point3d::Construct(ff.cV(1)->cP()),
+                               v2 = vcg::Point3d::Construct(ff.cV(2)->cP());
+            double box2 = 0; // squared distance from q to the face's bounding box: <= the distance to the face
+            for (int a = 0; a < 3; ++a) {
+                const double lo = std::min({v0[a], v1[a], v2[a]}), hi = std::max({v0[a], v1[a], v2[a]});
+                const double g = q[a] < lo ? lo - q[a] : (q[a] > hi ? q[a] - hi : 0.0);
+                box2 += g * g;
+            }
+            const double far2 = std::max({(v0 - q).SquaredNorm(), (v1 - q).SquaredNorm(), (v2 - q).SquaredNorm()});
+            const double bound = bestD + slack; // the start face sets bestD: nothing to beat before it
+            const bool mayWin = bestD > 0 && !(box2 > bound * bound);
+            bool expand = true, exact = mayWin;
+            if (f != startFace && !(far2 < rIn2)) {
+                if (box2 > rOut2) expand = false;
+                else exact = true; // near the radius: the exact distance decides
+            }
+            if (exact) {
+                vcg::Triangle3<double> t(v0, v1, v2);
+                double d;
+                vcg::Point3d c;
+                vcg::TrianglePointDistance<double>(t, q, d, c);
+                if (d < bestD) { bestD = d; bestF = f; bestP = c; }
+                if (f != startFace && !(far2 < rIn2) && !(box2 > rOut2)) expand = !(d > radius);
+            }
+            if (!expand) continue;
             for (int k = 0; k < 3; ++k) {
                 const FaceType *h = ff.cFFp(k);
                 if (h == nullptr || h == &ff || h->IsD()) continue;
                 const int hi = s.Idx(h);
-                if (firstVisit(hi)) todo.push_back(hi);
+                if (stamp[hi] != gen) {
+                    stamp[hi] = gen;
+                    todo.push_back(hi);
+                }
             }
         }
         if (visitedOut) *visitedOut = int(todo.size());
