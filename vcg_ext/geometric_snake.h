@@ -23,6 +23,7 @@
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_history.h>
 #include <vcg_ext/snake_partition.h>
+#include <vcg_ext/snake_projection_motion.h>
 #include <vcg_ext/snake_run_control.h>
 #include <vcg_ext/snake_segment_motion.h>
 #include <vcg_ext/snake_surface.h>
@@ -47,7 +48,7 @@ public:
     typedef SnakeGap Gap;
 
     GeometricSnake(std::shared_ptr<Surface> surface, const SnakeParams &params = SnakeParams())
-        : surf(std::move(surface)), motion(surf), run(surf.get())
+        : surf(std::move(surface)), motion(surf), projection(surf), run(surf.get())
     {
         if (!surf) throw SnakeError("Geometric snake: no surface.");
         params.Validate();
@@ -183,7 +184,7 @@ public:
         std::vector<vcg::Point3d> before = positions();
         run.Begin(st, before);
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
-        else motion.StepProjection(st, stats, frame());
+        else projection.Step(st, stats, frame());
         std::vector<vcg::Point3d> after = positions();
         const double maxMove = RunControl::CurveMove(before, after, st.closed) / st.unit;
         stats.lastMaxMove = maxMove;
@@ -292,6 +293,7 @@ public:
         pushUndo();
         st.params = p;
         motion.ClearCache();
+        projection.ClearCache();
         resetRun();
     }
 
@@ -305,6 +307,7 @@ public:
     {
         if (!history.Undo(st)) return false;
         motion.ClearCache();
+        projection.ClearCache();
         resetRun();
         return true;
     }
@@ -312,6 +315,7 @@ public:
     {
         if (!history.Redo(st)) return false;
         motion.ClearCache();
+        projection.ClearCache();
         resetRun();
         return true;
     }
@@ -381,6 +385,7 @@ private:
 
     std::shared_ptr<Surface> surf;
     SnakeSegmentMotion<MeshType> motion;
+    SnakeProjectionMotion<MeshType> projection;
     SnakeCurve st;
     SnakeHistory<SnakeCurve> history;
     SnakeStats stats;
@@ -430,6 +435,7 @@ public:
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
         motion.ClearCache();
+        projection.ClearCache();
     }
 
 private:

@@ -18,6 +18,7 @@
 #include <vcg_ext/local_region.h>
 #include <vcg_ext/region_walk.h>
 #include <vcg_ext/snake_curve.h>
+#include <vcg_ext/snake_motion_rules.h>
 #include <vcg_ext/snake_partition.h>
 #include <vcg_ext/snake_spline.h>
 #include <vcg_ext/snake_surface.h>
@@ -28,26 +29,28 @@
 namespace vcg {
 namespace tri {
 
-/// How a snake moves (Sec. 4 and 5): one segment at a time in the plane of a local
-/// embedding (the paper's method), or the whole curve in space followed by a projection
-/// (the naive method of Sec. 4.2). Owns the scratch state reused across operations: the
-/// local region and the factored spline systems. The session (creation, editing, undo,
-/// convergence) is GeometricSnake's business.
+/// How a snake moves by the paper's method (Sec. 5): one segment at a time in the plane of a
+/// local embedding. Owns the scratch state reused across operations: the kept embeddings, the
+/// factored spline systems and a workspace. The naive method of Sec. 4.2 is
+/// SnakeProjectionMotion; the rules both follow are SnakeMotionRules. The session (creation,
+/// editing, undo, convergence) is GeometricSnake's business.
 template <class MeshType>
-class SnakeSegmentMotion
+class SnakeSegmentMotion : public SnakeMotionRules<MeshType>
 {
+    typedef SnakeMotionRules<MeshType> Rules;
+
 public:
     typedef typename MeshType::FaceType FaceType;
     typedef SnakeSurface<MeshType> Surface;
 
-    explicit SnakeSegmentMotion(std::shared_ptr<Surface> s) : surf(std::move(s)) {}
+    explicit SnakeSegmentMotion(std::shared_ptr<Surface> s) : Rules(std::move(s)) {}
 
     int conformalFallbacks = 0; ///< embeddings that fell back to the virtual boundary
 
     /// Forget the factored spline systems (parameters or samples changed).
     void ClearCache()
     {
-        splines.clear();
+        splines.Clear();
         ForgetEmbeddings();
     }
     /// Forget the kept embeddings (samples were edited, inserted or deleted).
@@ -134,7 +137,7 @@ public:
             B.row(j) << b[0], b[1], b[2];
         }
         if (updates > 0) {
-            SnakeSpline &spline = splineFor(st.params, k, wholeClosed, fixed);
+            SnakeSpline &spline = splines.For(k, wholeClosed, st.params.alpha, st.params.beta, st.params.gamma, fixed);
             Eigen::MatrixXd &F = work.F;
             F.resize(k, 2);
             std::vector<double> slope(k, 0.0);
@@ -181,8 +184,8 @@ public:
                     Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
                     if (!d.allFinite()) continue;
                     if (st.IsOpenEnd(seg.idx[j]))
-                        d = pull[j].norm() > 0 ? alongPullBlend(d, pull[j], acrossEnd<Eigen::Vector2d>(X, j, d))
-                                               : acrossEnd<Eigen::Vector2d>(X, j, d);
+                        d = pull[j].norm() > 0 ? alongPullBlend(d, pull[j], Rules::template acrossEnd<Eigen::Vector2d>(X, j, d))
+                                               : Rules::template acrossEnd<Eigen::Vector2d>(X, j, d);
                     double len = d.norm();
                     double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(E, lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
@@ -259,271 +262,7 @@ public:
         }
     }
 
-    /// The naive method (Sec. 4.2): Eq. 4 in space, then projection onto the surface.
-    void StepProjection(SnakeCurve &st, SnakeStats &stats, const SnakeMotionFrame &fr)
-    {
-        const int level = fr.level;
-        const double unit = fr.unit;
-        const bool faceLinear = surf->EnergyField().FaceLinear();
-        const MeshType &m = surf->Mesh();
-        const int n = int(st.samples.size());
-        const double h = unit;
-        std::vector<bool> fixed(n);
-        for (int i = 0; i < n; ++i) fixed[i] = st.samples[i].fixed;
-        SnakeSpline &spline = splineFor(st.params, n, st.closed, fixed);
-        Eigen::MatrixXd X(n, 3), F(n, 3);
-        std::vector<double> slope(n, 0.0);
-        std::vector<Eigen::Vector3d> across(n, Eigen::Vector3d::Zero()), tangent(n, Eigen::Vector3d::Zero()); // the curve's frame
-        std::vector<Eigen::Vector3d> pull(n, Eigen::Vector3d::Zero()); // the coarse gradient (alongPullBlend)
-        for (int u = 0; u < st.params.updatesPerOperation; ++u) {
-            auto tu = clock::now();
-            for (int i = 0; i < n; ++i) {
-                vcg::Point3d p = st.samples[i].p.Pd(m) / h;
-                X.row(i) << p[0], p[1], p[2];
-                const int lev = SampleLevel(st.samples[i], level);
-                vcg::Point3d g = surf->EnergyGradient(lev, st.samples[i].p) * h; // per edge length
-                slope[i] = g.Norm();
-                if (lev > 0 && faceLinear) pull[i] = Eigen::Vector3d(g[0], g[1], g[2]); // alongPullBlend
-                g *= st.params.externalWeight * (lev == level ? fr.gain : 1.0);
-                F.row(i) << g[0], g[1], g[2];
-            }
-            for (int i = 0; i < n; ++i) { // the feature force across the curve only (see moveSegment)
-                int a = st.closed ? (i - 1 + n) % n : std::max(i - 1, 0), b = st.closed ? (i + 1) % n : std::min(i + 1, n - 1);
-                Eigen::Vector3d t = (X.row(b) - X.row(a)).transpose();
-                if (t.norm() > 0) {
-                    t.normalize();
-                    F.row(i) -= F.row(i).dot(t.transpose()) * t.transpose();
-                    const int lev = SampleLevel(st.samples[i], level);
-                    const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
-                    Eigen::Vector3d nrm = t.cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
-                    if (nrm.norm() > 0) across[i] = nrm.normalized(), tangent[i] = t;
-                    if (lev == 0 && faceLinear) { // the across slope, averaged (acrossSlope)
-                        double a;
-                        if (nrm.norm() > 0 && acrossSlope(st.samples[i].p, nrm.normalized(), h, a))
-                            F.row(i) = st.params.externalWeight * (lev == level ? fr.gain : 1.0) * a * h *
-                                       nrm.normalized().transpose();
-                    }
-                    if (fr.outside != 0) { // balloon: outward = tangent x face normal for a counter-clockwise curve
-                        const vcg::Point3d n = surf->FaceNormal(st.samples[i].p.face);
-                        Eigen::Vector3d o = t.cross(Eigen::Vector3d(n[0], n[1], n[2]));
-                        if (o.norm() > 0) F.row(i) -= balloonPressure(st.params, fr, st.samples[i].p) * o.normalized().transpose();
-                    }
-                }
-            }
-            Eigen::MatrixXd Xn = spline.Update(X, F);
-            for (int i = 0; i < n; ++i) {
-                if (fixed[i]) continue;
-                Eigen::Vector3d d = (Xn.row(i) - X.row(i)).transpose();
-                if (!d.allFinite()) continue;
-                const bool pulled = st.IsOpenEnd(i) && pull[i].norm() > 0;
-                if (st.IsOpenEnd(i)) {
-                    // in space "across the end tangent" is a plane: keep only the direction across
-                    // it in the sample's tangent plane (the rest slides the end along a crease)
-                    const vcg::Point3d fn = surf->FaceNormal(st.samples[i].p.face);
-                    Eigen::Vector3d a = endTangent<Eigen::Vector3d>(X, i).cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
-                    const Eigen::Vector3d dAcross = a.norm() > 0 ? Eigen::Vector3d(d.dot(a.normalized()) * a.normalized())
-                                                                 : acrossEnd<Eigen::Vector3d>(X, i, d);
-                    d = pulled ? alongPullBlend(d, pull[i], dAcross) : dAcross;
-                }
-                double len = d.norm();
-                double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
-                if (len > cap) d *= cap / len;
-                Eigen::Vector3d q = X.row(i).transpose() + d;
-                vcg::Point3d target(q[0] * h, q[1] * h, q[2] * h);
-                SurfacePoint np = SurfaceProjection<MeshType>::Closest(*surf, st.samples[i].p.face, target,
-                                                                       d.norm() * h + 1.5 * h);
-                if (st.IsOpenEnd(i)) { // the projection, too, can slide an end along a crease: undo that
-                    // (only its own slide: the blended move may go along the tangent, alongPullBlend)
-                    Eigen::Vector3d t = endTangent<Eigen::Vector3d>(X, i);
-                    const vcg::Point3d y = np.Pd(m) / h;
-                    const double along = t.norm() > 0 ? (Eigen::Vector3d(y[0], y[1], y[2]) - q).dot(t.normalized()) : 0;
-                    if (along != 0) {
-                        const Eigen::Vector3d q2 = q - along * t.normalized();
-                        np = SurfaceProjection<MeshType>::Closest(*surf, np.face, vcg::Point3d(q2[0] * h, q2[1] * h, q2[2] * h),
-                                                                  d.norm() * h + 1.5 * h + std::abs(along) * h);
-                    }
-                }
-                const int lev = SampleLevel(st.samples[i], level);
-                UpdateTrust(st.samples[i].trust, lev, surf->EnergyAt(lev, st.samples[i].p), surf->EnergyAt(lev, np),
-                            slope[i] * std::min(len, cap));
-                if (level > 0 && !st.closed) { // open snakes only (HoldAtWell)
-                    const SurfacePoint pOld = st.samples[i].p;
-                    st.samples[i].heldFine =
-                        HoldAtWell(st.samples[i].heldFine, pOld, np, d, across[i], tangent[i], level,
-                                   [&](const Eigen::Vector3d &v, bool ahead, SurfacePoint &q) {
-                            const SurfacePoint &base = ahead ? np : pOld;
-                            const vcg::Point3d x = base.Pd(m) + vcg::Point3d(v[0], v[1], v[2]) * h;
-                            q = SurfaceProjection<MeshType>::Closest(*surf, base.face, x, 2 * v.norm() * h);
-                            return true;
-                        });
-                }
-                st.samples[i].p = np;
-            }
-            stats.updates++;
-            stats.msUpdate.push_back(msSince(tu));
-        }
-        for (auto &g : st.gaps) g = SnakeGap(); // traced lazily by Polyline()
-    }
-
-    /// Step control (both methods). The energy is piecewise linear, so its force does not
-    /// vanish at the bottom of a well and a sample would bounce across it by |f|/gamma: a move
-    /// that raised the sample's energy by more than the noise halves its step cap, any other
-    /// move grows it back. On level 0 (piecewise linear) any rise is an overshoot. On a smooth
-    /// level the noise is a quarter of what the slope predicts for the step (`expected`, slope
-    /// times step length; at least 1e-3 of the energy range): smaller rises come from the
-    /// spline sliding the sample along the curve or from the curvature of the level, not from
-    /// overshooting, and halving on them collapsed the steps on the gentle slopes of the coarse
-    /// levels, so that the snake crawled and the coarse-to-fine switch fired far from the feature.
-    static void UpdateTrust(double &trust, int level, double eOld, double eNew, double expected)
-    {
-        const double noise = level == 0 ? 1e-9 : std::max(1e-3, 0.25 * expected);
-        trust = eNew > eOld + noise ? std::max(0.01, trust * 0.5) : std::min(1.0, trust * 1.1);
-    }
-
-    /// The level a sample moves on: 0 once held at a level-0 well (HoldAtWell), else the snake's.
-    static int SampleLevel(const SnakeSample &s, int level) { return s.heldFine ? 0 : level; }
-
-    /// Whether a sample of an open snake that moved from pOld to pNew on a coarse level (by d,
-    /// mostly across the curve: nrm is the curve's normal there, tan its tangent) is held on
-    /// level 0 from now on. A coarse level merges a feature with a parallel one a few edges away
-    /// into one well between them (the chamfer: two creases 3 edges apart); a snake pulled
-    /// across the first feature into that well rolls down either side of it at the switch to
-    /// level 0 (ends on the second feature, or zigzags between the two). A sample is held where
-    /// it crosses, or lands in, a well of level 0 that
-    ///  - is feature-like: level-0 energy below kWellEnergy at the lower end of the move;
-    ///  - is a well across the curve: kWellProbe length units behind and beyond the move the
-    ///    energy is at least kWellDepth higher on both sides;
-    ///  - runs along the curve: kWellProbe along the curve from where it lands, the energy stays
-    ///    below those rims (a feature crossing the curve rises there);
-    ///  - is one the coarse level leads past: its energy still falls beyond the move. Where the
-    ///    coarse well and the level-0 well coincide the coarse level does not mislead.
-    /// Closed snakes are not held (callers): a loop seeded over an octahedron's corners lies
-    /// along its diagonal creases and must slide down them onto the equator on the coarse
-    /// levels; holding it there broke capture (0.70-0.88 of the loop captured at offsets 2-6).
-    /// A held sample is released when dragged out of the well (level-0 energy above kWellEnergy).
-    /// `probe(v, ahead, q)`: the surface point at pNew + v (ahead) or pOld + v; false if unknown.
-    template <class Vec, class Probe>
-    bool HoldAtWell(bool held, const SurfacePoint &pOld, const SurfacePoint &pNew, const Vec &d, const Vec &nrm,
-                    const Vec &tan, int level, const Probe &probe) const
-    {
-        const double eNew = surf->EnergyAt(0, pNew);
-        if (held) return eNew < kWellEnergy;
-        const double len = d.norm(), dn = d.dot(nrm);
-        if (!(len > 0) || !(std::abs(dn) >= 0.5 * len)) return false;
-        const double eMin = std::min(surf->EnergyAt(0, pOld), eNew);
-        if (!(eMin < kWellEnergy)) return false;
-        const Vec dir = nrm * (dn > 0 ? kWellProbe : -kWellProbe);
-        SurfacePoint qBehind, qAhead, qFore, qAft;
-        if (!probe(Vec(-dir), false, qBehind) || !probe(dir, true, qAhead)) return false;
-        // the coarse level leads beyond the well (it has merged it with another): where it does
-        // not, the two agree and the coarse level is not misleading (a loop lying along an
-        // octahedron's diagonal crease, sliding down it onto the equator)
-        if (!(surf->EnergyAt(level, qAhead) < surf->EnergyAt(level, pNew))) return false;
-        const double rim = std::min(surf->EnergyAt(0, qBehind), surf->EnergyAt(0, qAhead));
-        if (!(rim > eMin + kWellDepth)) return false;
-        // the well runs along the curve: along it, from where the sample lands, the energy
-        // stays below the rims across it (a feature crossing the curve rises there)
-        const Vec along = tan * kWellProbe;
-        if (!probe(along, true, qFore) || !probe(Vec(-along), true, qAft)) return false;
-        const double fore = surf->EnergyAt(0, qFore), aft = surf->EnergyAt(0, qAft);
-        return std::max(fore, aft) < rim;
-    }
-
 private:
-    /// Half the span, in triangle widths, over which level 0's slope across the curve is
-    /// averaged (acrossSlope). On the chamfer test (level 0 alone) 0.5 left turns of 10.5
-    /// degrees with the projection method; 0.75 gives 6-8 degrees; 1.0 5-9 degrees, with the
-    /// samples farther from the crease (the wider the span, the flatter the well's bottom).
-    static constexpr double kAcrossReach = 0.75;
-    /// HoldAtWell: a feature-like level-0 well (its energy below this), probed this many length
-    /// units across the curve beyond either end of the move, where it must be this much higher.
-    static constexpr double kWellEnergy = 0.5, kWellProbe = 1.0, kWellDepth = 0.1;
-
-    /// Level-0 energy at p -/+ r nrm (in space, projected onto the surface).
-    bool acrossEnergies(const SurfacePoint &p, const Eigen::Vector3d &nrm, double r, double &lo, double &hi) const
-    {
-        if (!(r > 0)) return false;
-        const vcg::Point3d x = p.Pd(surf->Mesh()), n(nrm[0], nrm[1], nrm[2]);
-        lo = surf->EnergyAt(0, SurfaceProjection<MeshType>::Closest(*surf, p.face, x - n * r, 2 * r));
-        hi = surf->EnergyAt(0, SurfaceProjection<MeshType>::Closest(*surf, p.face, x + n * r, 2 * r));
-        return true;
-    }
-    /// acrossSlope for the projection method (`unit`: the snake's length unit).
-    bool acrossSlope(const SurfacePoint &p, const Eigen::Vector3d &nrm, double unit, double &slope) const
-    {
-        const double r = kAcrossReach * std::min(faceWidth(p.face, nrm), unit);
-        double lo, hi;
-        if (!acrossEnergies(p, nrm, r, lo, hi)) return false;
-        slope = (hi - lo) / (2 * r);
-        return true;
-    }
-
-    /// On a coarse level an open end moves along the feature force only, not across its
-    /// tangent: by symmetry the smoothed energy's gradient is across the feature, while the
-    /// tangent, on a seed path that is a staircase of mesh edges, is up to 28 degrees off it
-    /// until the curve straightens, and a move of 3 cells across it slid the end 2 cells along
-    /// the feature (the chamfer seeded 3 cells off: 0.943 of the span covered). Only on the
-    /// smoothed vertex energy (FaceLinear fields): the CAD crease distance's gradient points at
-    /// the nearest crease point, which near a rim's end lies along the rim (an open snake on a
-    /// pocket rim then covered 85.8 % of its span instead of 96.8 %).
-    /// Hence: along g where the coarse gradient g is steep, the move across the end's tangent
-    /// (`across`) where it is flat, blended smoothly: g g^T / (|g|^2 + s^2) is smooth in g, the
-    /// direction of g alone is not, and near a coarse well's bottom it turns with the rounding of
-    /// the mesh (the open snake on icocube at 1e30 ended 2.05e-6 of the size from scale 1, limit
-    /// 1e-6; blended with s = kPullSlope, 7.7e-8). Both methods: g is per length unit (the
-    /// embedding's plane is in length units; the projection method scales it by the unit). The
-    /// projection method moved along g alone until then: at 1e+-30 its open snake on icocube ended
-    /// 7.3e-3 / 5.5e-3 of the size from scale 1; blended, 9.5e-4 / 3.3e-4.
-    template <class Vec>
-    static Vec alongPullBlend(const Vec &d, const Vec &g, const Vec &across)
-    {
-        const double g2 = g.squaredNorm(), s2 = kPullSlope * kPullSlope;
-        return (g.dot(d) / (g2 + s2)) * g + (s2 / (g2 + s2)) * across;
-    }
-    /// alongPullBlend: the coarse slope (energy per length unit) at which the two directions weigh
-    /// the same. 0.01 still flipped a decision at 1e30 (5.5e-3 of the size), 0.05 gave 1.8e-4.
-    static constexpr double kPullSlope = 0.2;
-    /// The end condition of an open snake: its end samples move only across the curve, so the
-    /// span the user seeded stays covered (under tension an end free to slide creeps inwards).
-    /// "Across" is measured against the direction over several samples (endTangent), not the
-    /// chord to the next one: while the snake still follows its seed path, a staircase of mesh
-    /// edges, the first chord can be 45 degrees off the feature, and moving across it slides the
-    /// end along the feature.
-    template <class Vec>
-    static Vec acrossEnd(const Eigen::MatrixXd &X, int j, Vec d)
-    {
-        Vec t = endTangent<Vec>(X, j);
-        if (t.norm() > 0) {
-            t.normalize();
-            d -= d.dot(t) * t;
-        }
-        return d;
-    }
-    /// The curve's direction at end sample j: the one-sided second-order difference over the
-    /// samples q and 2q in (q = 2), exact on a circle's arc. A chord alone is a secant: on a
-    /// curved feature "across" it has a part along the feature, and an end that bounces across
-    /// the feature while the samples settle walks along it (the arc shortens or grows).
-    template <class Vec>
-    static Vec endTangent(const Eigen::MatrixXd &X, int j)
-    {
-        const int k = int(X.rows());
-        if (k < 2) return Vec::Zero();
-        const int s = j == 0 ? 1 : -1;
-        if (k < 5) return (X.row(j + s) - X.row(j)).transpose(); // too short for more: the neighbour
-        const Vec c2 = (X.row(j + 2 * s) - X.row(j)).transpose(), c4 = (X.row(j + 4 * s) - X.row(j)).transpose();
-        return 4 * c2 - c4;
-    }
-
-    /// The balloon's pressure at p (signed: > 0 outwards), weighted by the precise (level 0)
-    /// energy there, as the edge-stopping term of geodesic active contours: full on flat ground
-    /// (energy 1), none on a feature (energy 0), so a rim holds a gently inflated snake (a
-    /// constant pressure of 0.4 pushed it past the rim). Level 0, not the coarse level the snake
-    /// may be on: a coarse level is low over a wide band and the pressure would fade early.
-    double balloonPressure(const SnakeParams &params, const SnakeMotionFrame &fr, const SurfacePoint &p) const
-    {
-        return params.balloon * fr.outside * surf->EnergyAt(0, p);
-    }
-
     template <class V>
     static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
 
@@ -702,7 +441,7 @@ private:
     /// out it is the slope itself. False when a probe leaves the region.
     bool acrossSlope(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &nrm, double &slope)
     {
-        const double r = kAcrossReach * std::min(widthAlong(E, t, nrm), 1.0); // plane units: 1 = the length unit
+        const double r = Rules::kAcrossReach * std::min(widthAlong(E, t, nrm), 1.0); // plane units: 1 = the length unit
         double lo, hi;
         if (!acrossEnergies(E, t, x, nrm, r, lo, hi)) return false;
         slope = (hi - lo) / (2 * r);
@@ -750,33 +489,20 @@ private:
         return VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, unit, params.virtualLayers, emb);
     }
 
-    SnakeSpline &splineFor(const SnakeParams &params, int k, bool closed, const std::vector<bool> &fixed)
-    {
-        auto key = std::make_tuple(k, closed, fixed);
-        if (splines.size() > 64) splines.clear();
-        SnakeSpline &s = splines[key];
-        s.Setup(k, closed, params.alpha, params.beta, params.gamma, fixed);
-        return s;
-    }
-
-    /// Width of mesh face f in direction d (unit vector, in space): the step cap's size.
-    double faceWidth(int f, const Eigen::Vector3d &d) const
-    {
-        const FaceType &ff = surf->Mesh().face[f];
-        double a[3];
-        for (int k = 0; k < 3; ++k) a[k] = d[0] * ff.cP(k)[0] + d[1] * ff.cP(k)[1] + d[2] * ff.cP(k)[2];
-        return std::max({a[0], a[1], a[2]}) - std::min({a[0], a[1], a[2]});
-    }
-
     typedef std::chrono::steady_clock clock;
     /// Distortion (angle times scale, Embedding::Distortion) of a sample's face above which a
     /// region grows: on a curved strip the conformal map alone reaches 2, and growing cannot
     /// undo curvature, so only embeddings spoiled by their border (the virtual one) grow.
     static constexpr double kMaxDistortion = 3.0;
-    std::shared_ptr<Surface> surf;
+    using Rules::surf;
+    using Rules::UpdateTrust;
+    using Rules::SampleLevel;
+    using Rules::HoldAtWell;
+    using Rules::alongPullBlend;
+    using Rules::balloonPressure;
     std::map<std::pair<int, int>, Embedding> embeddings; // by segment (first sample, samples)
     ConformalParam::Workspace conformal;
-    std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
+    SnakeSplineCache splines;
     struct Workspace // reused by every segment move: no allocation in the steady state
     {
         std::vector<int> core, lf;

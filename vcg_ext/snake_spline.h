@@ -1,7 +1,9 @@
 #ifndef VCG_EXT_SNAKE_SPLINE_H
 #define VCG_EXT_SNAKE_SPLINE_H
 
+#include <map>
 #include <memory>
+#include <tuple>
 #include <vector>
 
 #include <Eigen/Sparse>
@@ -129,6 +131,25 @@ private:
     SpMat Mff, Mfc;
     mutable Eigen::MatrixXd rhs_, sol_; // Update's scratch
     std::unique_ptr<Eigen::SimplicialLDLT<SpMat>> factor;
+};
+
+/// The factored spline systems of a snake, by size, closure and pins (the matrix of Eq. 4
+/// depends on nothing else): reused across updates and operations.
+class SnakeSplineCache
+{
+public:
+    SnakeSpline &For(int k, bool closed, double alpha, double beta, double gamma, const std::vector<bool> &fixed)
+    {
+        auto key = std::make_tuple(k, closed, fixed);
+        if (splines.size() > 64) splines.clear();
+        SnakeSpline &s = splines[key];
+        s.Setup(k, closed, alpha, beta, gamma, fixed);
+        return s;
+    }
+    void Clear() { splines.clear(); }
+
+private:
+    std::map<std::tuple<int, bool, std::vector<bool>>, SnakeSpline> splines;
 };
 
 } // namespace tri
