@@ -138,7 +138,7 @@ TEST(AnyScale, ProjectionMethodIsExactAtPowerOfTwoScales)
 // on the coarse levels it moved along the direction of the coarse gradient alone, which turns
 // with the rounding near a well's bottom, and a yes/no decision (the step control's halving)
 // flipped at operation 1. Now it blends that move with the move across the end's tangent, as the
-// embedding method's end does (SnakeSegmentMotion::alongPullBlend): 9.5e-4 / 3.3e-4. The
+// embedding method's end does (SnakeMotionRules::alongPullBlend): 9.5e-4 / 3.3e-4. The
 // projection still picks the closest face (a yes/no decision): `sampleTol` is the measured limit
 // before the end moves, 1e-3 at 1e-30 (docs/evaluation.md, "Any scale").
 TEST(AnyScale, ProjectionMethodIsTheSame)

@@ -171,10 +171,10 @@ EndReport RunOnChamfer(const EndCase &c, bool fineOnly = false)
 // between them, and the snake, pulled across the first crease into that well, rolled down
 // either side at the switch to level 0. Now a sample of an open snake that crosses a
 // feature-like level-0 well running along the curve, which the coarse level leads past, is held
-// on level 0 (SnakeSegmentMotion::HoldAtWell). Seeded 3 cells off, the ends then still slid 2
+// on level 0 (SnakeMotionRules::HoldAtWell). Seeded 3 cells off, the ends then still slid 2
 // cells along the crease in the first coarse operations (coverage 0.943): they moved across
 // their tangent, up to 28 degrees off the crease on the seed path's staircase; on coarse levels
-// an end now moves along the coarse gradient (SnakeSegmentMotion::alongPull).
+// an end now moves along the coarse gradient (SnakeMotionRules::alongPullBlend).
 TEST_P(StraightCreaseEnds, EndsHoldSpanStaysNoHook)
 {
     const EndCase c = GetParam();

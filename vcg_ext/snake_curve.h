@@ -68,7 +68,7 @@ struct SnakeSample
     /// samples settle in wells; reset to 1 whenever the energy level changes.
     double trust = 1.0;
     /// Held on level 0 while the snake is still on a coarse level (not saved): the sample
-    /// crossed a feature-like well of level 0 across the curve (SnakeSegmentMotion::HoldAtWell).
+    /// crossed a feature-like well of level 0 across the curve (SnakeMotionRules::HoldAtWell).
     bool heldFine = false;
 };
 

@@ -231,7 +231,7 @@ private:
         // that triangles straddling a crease cut, so samples stay about where they land in it.
         // Settling outside the wells is a stall: retry once with full steps, then step down
         // anyway (a snake held by its own tension, or no well there). Samples held at level-0
-        // wells (SnakeSegmentMotion::HoldAtWell) already move on level 0 and count as in the
+        // wells (SnakeMotionRules::HoldAtWell) already move on level 0 and count as in the
         // wells; once all are held, the whole snake goes there. Not sooner: stretches that lag
         // behind (a loop seeded far up an octahedron's corners while its middle reached the
         // equator) need the coarse levels' reach. Every switch resets the step control.
