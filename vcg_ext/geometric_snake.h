@@ -180,7 +180,7 @@ public:
         if (st.samples.empty()) throw SnakeError("Geometric snake: the snake has no samples.");
         if (!surf->MatchesMesh()) throw SnakeError("Geometric snake: the mesh changed since the snake was created.");
         pushUndo();
-        auto t0 = clock::now();
+        auto t0 = SnakeClock::Now();
         std::vector<vcg::Point3d> before = positions();
         run.Begin(st, before);
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
@@ -192,7 +192,7 @@ public:
         run.End(st, stats, maxMove, after);
         // the operation's time includes the convergence and well tests (issue 12: they are
         // part of what one operation costs)
-        double ms = msSince(t0);
+        double ms = SnakeClock::MsSince(t0);
         stats.msOperation.push_back(ms);
         stats.secondsTotal += ms / 1000.0;
         return maxMove;
@@ -292,8 +292,7 @@ public:
         p.Validate();
         pushUndo();
         st.params = p;
-        motion.ClearCache();
-        projection.ClearCache();
+        clearCaches();
         resetRun();
     }
 
@@ -306,16 +305,14 @@ public:
     bool Undo()
     {
         if (!history.Undo(st)) return false;
-        motion.ClearCache();
-        projection.ClearCache();
+        clearCaches();
         resetRun();
         return true;
     }
     bool Redo()
     {
         if (!history.Redo(st)) return false;
-        motion.ClearCache();
-        projection.ClearCache();
+        clearCaches();
         resetRun();
         return true;
     }
@@ -379,7 +376,12 @@ public:
     }
 
 private:
-    typedef std::chrono::steady_clock clock;
+    // the motions' caches (embeddings, spline systems) are of the snake before a change
+    void clearCaches()
+    {
+        motion.ClearCache();
+        projection.ClearCache();
+    }
     typedef SnakeSegment Segment;
     typedef SnakeRunControl<MeshType> RunControl;
 
@@ -434,16 +436,11 @@ public:
         seedPoints = m.seedPoints;
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
-        motion.ClearCache();
-        projection.ClearCache();
+        clearCaches();
     }
 
 private:
 
-    static double msSince(clock::time_point t0)
-    {
-        return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-    }
     /// A path on the surface to take samples along: its points (closed: the first repeated at
     /// the end), their arc lengths, and per piece between two points its ends expressed in
     /// one face and the faces a gap over it holds.

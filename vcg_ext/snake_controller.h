@@ -43,10 +43,10 @@
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_seed_list.h>
+#include <vcg_ext/snake_session_history.h>
 #include <vcg_ext/snake_session_file.h>
 #include <vcg_ext/snake_sidecar.h>
 #include <vcg_ext/snake_surface.h>
-#include <vcg_ext/snake_undo.h>
 #include <vcg_ext/surface_point.h>
 
 namespace vcg {
@@ -67,6 +67,9 @@ public:
     static int MaxSelectedSeeds() { return 5000; }
 
     explicit SnakeController(MeshType &m) : mesh(m) {}
+    // the undo history refers to the members
+    SnakeController(const SnakeController &) = delete;
+    SnakeController &operator=(const SnakeController &) = delete;
 
     MeshType &Mesh() { return mesh; }
 
@@ -194,13 +197,8 @@ public:
         if (seedList.AtVertices())
             sn->InitFromSeeds(seedList.Vertices(), closed, seedCost, LengthScale());
         else
-            sn->InitFromSeedPoints(seedList.Points(), closed, seedCost, LengthScale());
-        record("build");
-        snakes.push_back(std::move(sn));
-        saved.push_back(nullptr);
-        selected = int(snakes.size()) - 1;
-        seedList.Clear();
-        touch("create snake");
+            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale());
+        addSnake(std::move(sn), true);
         return selected;
     }
 
@@ -212,11 +210,7 @@ public:
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
         sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale());
-        record("build");
-        snakes.push_back(std::move(sn));
-        saved.push_back(nullptr);
-        selected = int(snakes.size()) - 1;
-        touch("create snake");
+        addSnake(std::move(sn), false);
         return selected;
     }
 
@@ -240,7 +234,7 @@ public:
         checkSnake(i);
         record("delete snake");
         snakes.erase(snakes.begin() + i);
-        saved.erase(saved.begin() + i);
+        history.SnakeRemoved(i);
         if (selected >= int(snakes.size())) selected = int(snakes.size()) - 1;
         touch("delete snake");
     }
@@ -249,7 +243,7 @@ public:
         if (snakes.empty()) return;
         record("delete all snakes");
         snakes.clear();
-        saved.clear();
+        history.AllChanged();
         selected = -1;
         touch("delete all snakes");
     }
@@ -260,7 +254,7 @@ public:
         Snake &s = sel();
         checkMesh();
         const bool pushed = record("step");
-        auto t0 = std::chrono::steady_clock::now();
+        const auto t0 = SnakeClock::Now();
         double mv;
         try {
             mv = s.Step();
@@ -268,7 +262,7 @@ public:
             if (pushed) history.DropLast();
             throw;
         }
-        lastOpMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        lastOpMs = SnakeClock::MsSince(t0);
         computeMs += lastOpMs;
         for (const auto &x : s.Samples()) {
             vcg::Point3d p = x.p.Pd(mesh);
@@ -362,21 +356,12 @@ public:
         touch("delete sample");
     }
 
-    // --- undo / redo of whole user actions
+    // --- undo / redo of whole user actions (SnakeSessionHistory)
     /// Groups every change until the matching EndAction into one undo step (a Run, a drag);
     /// groups nest. An action that changes nothing leaves no step.
-    void BeginAction(const std::string &label)
-    {
-        if (actionDepth++ == 0) {
-            actionLabel = label;
-            actionRecorded = false;
-        }
-    }
-    void EndAction()
-    {
-        if (actionDepth > 0) --actionDepth;
-    }
-    bool InAction() const { return actionDepth > 0; }
+    void BeginAction(const std::string &label) { history.BeginAction(label); }
+    void EndAction() { history.EndAction(); }
+    bool InAction() const { return history.InAction(); }
     /// BeginAction / EndAction for a scope.
     struct Action
     {
@@ -393,26 +378,20 @@ public:
     /// Returns to the session as it was before the last action (all snakes, seeds, selection).
     bool Undo()
     {
-        Session cur = snapshot();
-        size_t b = sessionBytes(cur);
-        if (!history.Undo(cur, b)) return false;
-        restore(cur);
+        if (!history.Undo(makeSnake())) return false;
         touch("undo");
         return true;
     }
     bool Redo()
     {
-        Session cur = snapshot();
-        size_t b = sessionBytes(cur);
-        if (!history.Redo(cur, b)) return false;
-        restore(cur);
+        if (!history.Redo(makeSnake())) return false;
         touch("redo");
         return true;
     }
     /// Memory bound of the history (default 100 MB) and its current estimate.
     void SetUndoLimit(size_t bytes) { history.SetLimit(bytes); }
     size_t UndoBytes() const { return history.Bytes(); }
-    size_t UndoSteps() const { return history.UndoCount(); }
+    size_t UndoSteps() const { return history.Steps(); }
     /// Compute time of all operations so far (ms): a Run's wall time is compared to it.
     double ComputeMs() const { return computeMs; }
 
@@ -487,7 +466,6 @@ public:
             nsn.push_back(std::move(s));
         }
         snakes = std::move(nsn);
-        saved.assign(snakes.size(), nullptr);
         history.Clear();
         selected = f.selected;
         params = f.params;
@@ -600,82 +578,23 @@ private:
     std::chrono::steady_clock::time_point lastAutosave;
     double computeMs = 0;
 
-    // undo history: whole-session snapshots; a snake's memento is shared by all snapshots
-    // until the snake changes (saved[k] == nullptr: snake k changed since its last memento)
-    typedef std::shared_ptr<const typename Snake::Memento> MementoPtr;
-    struct Session
-    {
-        std::vector<MementoPtr> snakes;
-        int selected = -1;
-        SnakeSeedList<MeshType> seeds;
-        SnakeParams params;
-    };
-    SnakeUndo<Session> history;
-    std::vector<MementoPtr> saved, lastPushed;
-    int actionDepth = 0;
-    bool actionRecorded = false;
-    std::string actionLabel;
+    SnakeSessionHistory<Snake, SnakeSeedList<MeshType>> history{{snakes, selected, seedList, params}};
 
-    Session snapshot()
+    bool record(const char *label) { return history.Record(label); }
+    // builds the snakes an undo brings back
+    auto makeSnake()
     {
-        saved.resize(snakes.size());
-        Session s{{}, -1, seedList, params};
-        for (size_t k = 0; k < snakes.size(); ++k) {
-            if (!saved[k]) saved[k] = std::make_shared<const typename Snake::Memento>(snakes[k]->Save());
-            s.snakes.push_back(saved[k]);
-        }
-        s.selected = selected;
-        return s;
+        return [this](const SnakeParams &p) { return std::unique_ptr<Snake>(new Snake(energy.EnsureSurface(), p)); };
     }
-    /// Snakes are restored in place (references to them stay valid while they exist).
-    void restore(const Session &s)
+    // a new snake, built from the seeds (`fromSeeds`: they are used up) or points: selected
+    void addSnake(std::unique_ptr<Snake> sn, bool fromSeeds)
     {
-        if (!s.snakes.empty()) EnsureSurface();
-        snakes.resize(std::min(snakes.size(), s.snakes.size()));
-        saved.resize(snakes.size());
-        for (size_t k = 0; k < s.snakes.size(); ++k) {
-            if (k >= snakes.size()) {
-                snakes.emplace_back(new Snake(energy.SurfacePtr(), s.params));
-                saved.push_back(nullptr);
-            }
-            if (saved[k] != s.snakes[k]) snakes[k]->Restore(*s.snakes[k]);
-            saved[k] = s.snakes[k];
-        }
-        selected = s.selected;
-        seedList = s.seeds;
-        params = s.params;
-    }
-    /// The memory a snapshot adds: its snakes' mementos, except those it shares with
-    /// `previous` (the snakes the last action did not touch).
-    size_t sessionBytes(const Session &s, const std::vector<MementoPtr> *previous = nullptr) const
-    {
-        size_t b = sizeof(Session) + s.seeds.Bytes();
-        for (const auto &m : s.snakes)
-            if (!previous || std::find(previous->begin(), previous->end(), m) == previous->end()) b += m->Bytes();
-        return b;
-    }
-    /// Called before a change: the first change of an action records the session as it
-    /// was. Returns true if this call pushed an undo step.
-    bool record(const char *label)
-    {
-        if (actionDepth > 0) {
-            if (actionRecorded) {
-                markSelectedChanged();
-                return false;
-            }
-            actionRecorded = true;
-        }
-        Session s = snapshot();
-        history.Push(s, sessionBytes(s, &lastPushed), actionDepth > 0 ? actionLabel : std::string(label));
-        lastPushed = s.snakes;
-        markSelectedChanged();
-        return true;
-    }
-    /// Every change goes through the selected snake (or adds / removes snakes, which
-    /// resizes `saved`): its memento is outdated.
-    void markSelectedChanged()
-    {
-        if (selected >= 0 && selected < int(saved.size())) saved[selected] = nullptr;
+        record("build");
+        snakes.push_back(std::move(sn));
+        history.SnakeAdded();
+        selected = int(snakes.size()) - 1;
+        if (fromSeeds) seedList.Clear();
+        touch("create snake");
     }
 
     void touch(const char *op)
@@ -687,7 +606,7 @@ private:
     void energyChanged()
     {
         for (auto &s : snakes) s->EnergyChanged();
-        saved.assign(snakes.size(), nullptr);
+        history.AllChanged();
         touch("energy");
     }
     void checkSnake(int i) const

@@ -2,6 +2,7 @@
 #define VCG_EXT_SNAKE_CURVE_H
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -70,6 +71,15 @@ struct SnakeSample
     /// Held on level 0 while the snake is still on a coarse level (not saved): the sample
     /// crossed a feature-like well of level 0 across the curve (SnakeMotionRules::HoldAtWell).
     bool heldFine = false;
+};
+
+/// The clock of SnakeStats' timings.
+struct SnakeClock
+{
+    typedef std::chrono::steady_clock clock;
+    typedef clock::time_point time_point;
+    static time_point Now() { return clock::now(); }
+    static double MsSince(time_point t0) { return std::chrono::duration<double, std::milli>(clock::now() - t0).count(); }
 };
 
 /// Timings and counters, for the Log, the JSON output and the benchmarks.

@@ -52,7 +52,7 @@ public:
         std::vector<Eigen::Vector3d> across(n, Eigen::Vector3d::Zero()), tangent(n, Eigen::Vector3d::Zero()); // the curve's frame
         std::vector<Eigen::Vector3d> pull(n, Eigen::Vector3d::Zero()); // the coarse gradient (alongPullBlend)
         for (int u = 0; u < st.params.updatesPerOperation; ++u) {
-            auto tu = clock::now();
+            auto tu = SnakeClock::Now();
             for (int i = 0; i < n; ++i) {
                 vcg::Point3d p = st.samples[i].p.Pd(m) / h;
                 X.row(i) << p[0], p[1], p[2];
@@ -136,7 +136,7 @@ public:
                 st.samples[i].p = np;
             }
             stats.updates++;
-            stats.msUpdate.push_back(msSince(tu));
+            stats.msUpdate.push_back(SnakeClock::MsSince(tu));
         }
         for (auto &g : st.gaps) g = SnakeGap(); // traced lazily by Polyline()
     }
@@ -150,13 +150,8 @@ private:
     using Rules::acrossSlope;
     using Rules::faceWidth;
     using Rules::balloonPressure;
-    typedef std::chrono::steady_clock clock;
     SnakeSplineCache splines;
 
-    static double msSince(clock::time_point t0)
-    {
-        return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-    }
 };
 
 } // namespace tri

@@ -222,12 +222,14 @@ public:
             if (at[i].face >= 0 && at[i].Pd(*mesh) != P(verts[i])) return false;
         return true;
     }
-    /// The seeds as surface points (a vertex seed: the vertex, as a corner of one of its faces).
-    std::vector<SurfacePoint> Points() const
+    /// The seeds as surface points (a vertex seed: the vertex, as a corner of one of its faces
+    /// of `surf`, a SnakeSurface of the mesh).
+    template <class SurfaceType>
+    std::vector<SurfacePoint> Points(const SurfaceType &surf) const
     {
         std::vector<SurfacePoint> pts = at;
         for (int i = 0; i < size(); ++i)
-            if (pts[i].face < 0) pts[i] = vertexPoint(verts[i]);
+            if (pts[i].face < 0) pts[i] = surf.VertexPoint(verts[i]);
         return pts;
     }
     size_t Bytes() const { return sizeof(*this) + verts.capacity() * sizeof(int) + at.capacity() * sizeof(SurfacePoint); }
@@ -247,14 +249,6 @@ private:
     std::vector<SurfacePoint> at; // per seed: the clicked surface point, or face -1
 
     vcg::Point3d P(int v) const { return vcg::Point3d::Construct(mesh->vert[v].cP()); }
-    SurfacePoint vertexPoint(int v) const
-    {
-        for (size_t f = 0; f < mesh->face.size(); ++f)
-            if (!mesh->face[f].IsD())
-                for (int k = 0; k < 3; ++k)
-                    if (mesh->face[f].cV(k) == &mesh->vert[v]) return SurfacePoint::AtCorner(int(f), k);
-        throw SnakeError("Geometric snake: seed vertex " + std::to_string(v) + " belongs to no face.");
-    }
     void checkVertex(int v) const
     {
         if (v < 0 || v >= int(mesh->vert.size()) || mesh->vert[v].IsD())

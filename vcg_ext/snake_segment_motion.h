@@ -67,7 +67,7 @@ public:
         const bool faceLinear = surf->EnergyField().FaceLinear();
         const int k = int(seg.idx.size());
         if (k < 2) return;
-        auto t0 = clock::now();
+        auto t0 = SnakeClock::Now();
         bool wholeClosed = st.closed && k == int(st.samples.size()) && seg.idx.front() == 0 && !seg.fixFirst;
         int gapsInSeg = wholeClosed ? k : k - 1;
         // Sec. 4.2: one embedding serves several updates, here several operations: the
@@ -113,7 +113,7 @@ public:
                 return;
             }
             stats.embeddings++;
-            stats.msEmbedding.push_back(msSince(t0));
+            stats.msEmbedding.push_back(SnakeClock::MsSince(t0));
         }
         const LocalRegion<MeshType> &region = E.region;
         const VirtualBoundaryParam::Result &emb = E.emb;
@@ -145,7 +145,7 @@ public:
             across.assign(k, Eigen::Vector2d::Zero());
             pull.assign(k, Eigen::Vector2d::Zero());
             for (int u = 0; u < updates; ++u) {
-                auto tu = clock::now();
+                auto tu = SnakeClock::Now();
                 for (int j = 0; j < k; ++j) {
                     // Only the feature force across the curve: along a feature valley the
                     // energy still varies a little, and its tangential part would slide the
@@ -213,7 +213,7 @@ public:
                     left |= w.exited;
                 }
                 stats.updates++;
-                stats.msUpdate.push_back(msSince(tu));
+                stats.msUpdate.push_back(SnakeClock::MsSince(tu));
                 if (left) { // the curve reached the region border: re-embed (Sec. 5.4)
                     E.valid = false;
                     break;
@@ -489,7 +489,6 @@ private:
         return VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, unit, params.virtualLayers, emb);
     }
 
-    typedef std::chrono::steady_clock clock;
     /// Distortion (angle times scale, Embedding::Distortion) of a sample's face above which a
     /// region grows: on a curved strip the conformal map alone reaches 2, and growing cannot
     /// undo curvature, so only embeddings spoiled by their border (the virtual one) grow.
@@ -511,10 +510,6 @@ private:
         std::vector<Eigen::Vector2d> across, pull; // the curve's normal, the coarse gradient (plane)
     } work;
 
-    static double msSince(clock::time_point t0)
-    {
-        return std::chrono::duration<double, std::milli>(clock::now() - t0).count();
-    }
 };
 
 } // namespace tri

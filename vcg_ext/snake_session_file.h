@@ -111,7 +111,6 @@ struct SnakeSessionFile
                 if (!j["seeds"].is_array()) throw SnakeError("Geometric snake: \"seeds\" must be a list of vertex indices.");
                 for (const json &v : j["seeds"]) sv.push_back(IO::IndexFromJson(v, "seeds"));
             }
-            f.seeds.SetVertices(sv);
             // "seeds" is what counts: "seed_points" (where each was clicked) only when it lists one
             // point (or null) per seed, so a hand-edited seed list is not refused
             std::vector<SurfacePoint> at(sv.size());

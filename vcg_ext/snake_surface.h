@@ -177,6 +177,7 @@ public:
     SurfacePoint VertexPoint(int v) const
     {
         vcg::face::VFIterator<FaceType> vfi(const_cast<VertexType *>(&mesh.vert[v]));
+        if (vfi.End()) throw SnakeError("Geometric snake: seed vertex " + std::to_string(v) + " belongs to no face.");
         return SurfacePoint::AtCorner(Idx(vfi.F()), vfi.I());
     }
     /// The faces holding mesh edge ab (two inside, one on a border).
