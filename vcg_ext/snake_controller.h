@@ -19,7 +19,6 @@
 // for the user, and leaves the controller unchanged.
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -480,7 +479,7 @@ public:
     {
         if (path.empty()) throw SnakeError("Geometric snake: no file name to save the session to.");
         SafeFileWrite::Write(path, ToJson().dump(1) + "\n");
-        savedRevision = revision;
+        autosave.Saved(revision);
     }
 
     /// Loads a session file; false if there is none, throws if it is unusable. Only what the
@@ -490,71 +489,37 @@ public:
         std::error_code ec;
         if (!std::filesystem::exists(path, ec)) return false;
         FromJson(IO::ParseFileLean(path));
-        savedRevision = revision;
+        autosave.Saved(revision);
         return true;
     }
 
-    /// What OpenSidecar did, for the status line and the Log.
-    struct SidecarStatus
-    {
-        bool restored = false;  ///< the session was restored from the sidecar
-        bool unreadable = false;///< a sidecar exists but could not be used: it is kept untouched
-        std::string message;    ///< for the user ("" when there is nothing to say)
-    };
-
+    typedef SnakeAutosave::Status SidecarStatus;
     /// Starts the session of the mesh file `meshPath`: restores its sidecar (if `restore` and it
     /// exists) and autosaves to it from now on. A sidecar that cannot be read (broken, truncated,
     /// made on another mesh, too large) is never touched: the session autosaves to a new
-    /// SnakeSidecar::RecoveryPath() file instead, and the message says so.
+    /// SnakeSidecar::RecoveryPath() file instead, and the message says so (SnakeAutosave::Open).
     SidecarStatus OpenSidecar(const std::string &meshPath, bool restore, std::time_t now = std::time(nullptr))
     {
-        SidecarStatus st;
-        SetAutosave(std::string());
-        if (meshPath.empty()) return st;
-        const std::string side = SnakeSidecar::Path(meshPath);
-        std::error_code ec;
-        if (std::filesystem::exists(side, ec)) {
-            try {
-                if (restore) {
-                    Load(side);
-                    st.restored = true;
-                    st.message = "Restored " + side + ".";
-                } else {
-                    IO::ParseFileLean(side); // readable? (the session itself came from the mesh)
-                }
-            } catch (const std::exception &e) {
-                st.unreadable = true;
-                const std::string rec = SnakeSidecar::RecoveryPath(meshPath, now);
-                st.message = std::string(e.what()) + " The file is kept unchanged; this session is saved to " + rec + ".";
-                SetAutosave(rec, 1.0);
-                return st;
-            }
-        }
-        SetAutosave(side, 1.0);
-        return st;
+        return autosave.Open(meshPath, restore, now, [this](const std::string &side, bool load) {
+            if (load)
+                Load(side);
+            else
+                IO::ParseFileLean(side); // readable? (the session itself came from the mesh)
+        });
     }
 
     /// Autosave target (empty: none) and minimum interval between two autosaves.
-    void SetAutosave(const std::string &path, double minIntervalSeconds = 1.0)
-    {
-        autosavePath = path;
-        autosaveInterval = minIntervalSeconds;
-    }
-    const std::string &AutosavePath() const { return autosavePath; }
+    void SetAutosave(const std::string &path, double minIntervalSeconds = 1.0) { autosave.Set(path, minIntervalSeconds); }
+    const std::string &AutosavePath() const { return autosave.Path(); }
     /// Saves if something changed since the last save and (unless forced) the interval
     /// has passed. Returns true if it wrote. Throws SnakeError if writing fails.
     bool Autosave(bool force = false)
     {
-        if (autosavePath.empty() || revision == savedRevision) return false;
-        auto now = std::chrono::steady_clock::now();
-        if (!force && lastAutosave.time_since_epoch().count() != 0 &&
-            std::chrono::duration<double>(now - lastAutosave).count() < autosaveInterval)
-            return false;
-        lastAutosave = now;
-        Save(autosavePath);
+        if (!autosave.Due(revision, force)) return false;
+        Save(autosave.Path());
         return true;
     }
-    bool Dirty() const { return revision != savedRevision; }
+    bool Dirty() const { return autosave.Dirty(revision); }
 
     // ================================================================ status
     /// Increases with every change (for redraws, autosave and auto-export).
@@ -570,12 +535,10 @@ private:
     SnakeSeedList<MeshType> seedList{mesh};
     SnakeParams params;
     SeedPathCost seedCost = SeedPathCost::Length;
-    long revision = 0, savedRevision = 0;
+    long revision = 0;
     std::string lastOp;
     double lastOpMs = 0;
-    std::string autosavePath;
-    double autosaveInterval = 1.0;
-    std::chrono::steady_clock::time_point lastAutosave;
+    SnakeAutosave autosave;
     double computeMs = 0;
 
     SnakeSessionHistory<Snake, SnakeSeedList<MeshType>> history{{snakes, selected, seedList, params}};
