@@ -7,13 +7,9 @@
 // parameters, energy settings) saved to / restored from JSON, e.g. the sidecar file
 // <mesh>.snakes.json next to the mesh, with a throttled autosave.
 //
-// Undo works in the units a user thinks in: every user action is one step of a history of
-// whole-session snapshots (vcg_ext/snake_undo.h, bounded by memory). A Run, a drag (moves
-// grouped with BeginAction/EndAction), a Build, a seed click are each one step; the
-// snapshots share the snakes an action did not touch.
-//
 // Its parts: the energy and surface (SnakeEnergySource), the seed list being placed
-// (SnakeSeedList), the session file (SnakeSessionFile) and where it lives (SnakeSidecar).
+// (SnakeSeedList), the undo history of whole user actions (SnakeSessionHistory), the session
+// file (SnakeSessionFile), and where and when it is saved (SnakeSidecar, SnakeAutosave).
 //
 // Every user input is validated: bad input throws vcg::tri::SnakeError with a message
 // for the user, and leaves the controller unchanged.
