@@ -22,6 +22,7 @@
 #include <vcg_ext/snake_curve.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_history.h>
+#include <vcg_ext/snake_initial_curve.h>
 #include <vcg_ext/snake_partition.h>
 #include <vcg_ext/snake_projection_motion.h>
 #include <vcg_ext/snake_run_control.h>
@@ -70,30 +71,10 @@ public:
     }
 
     /// Samples along a vertex path (consecutive vertices share an edge). Closed paths do not
-    /// repeat the first vertex.
+    /// repeat the first vertex (SnakeInitialCurve).
     void InitFromPath(const std::vector<int> &pathVerts, bool closed, double lengthScale = 0)
     {
-        const MeshType &m = surf->Mesh();
-        std::vector<int> pv = pathVerts;
-        if (closed && !pv.empty()) pv.push_back(pv.front());
-        if (pv.size() < 2) throw SnakeError("Geometric snake: the seed path is too short.");
-        for (int v : pv)
-            if (v < 0 || v >= int(m.vert.size()) || m.vert[v].IsD())
-                throw SnakeError("Geometric snake: the seed path has an invalid vertex.");
-        PathOnSurface path;
-        std::vector<double> pathEdges;
-        for (size_t i = 0; i < pv.size(); ++i) {
-            path.points.push_back(surf->VertexPoint(pv[i]));
-            path.cum.push_back(i == 0 ? 0.0 : path.cum.back() + dist(pv[i - 1], pv[i]));
-            if (i == 0) continue;
-            pathEdges.push_back(path.cum[i] - path.cum[i - 1]);
-            const SurfacePoint e0 = surf->PointOnEdge(pv[i - 1], pv[i], 0.0);
-            if (e0.face < 0) throw SnakeError("Geometric snake: the seed path uses a missing edge.");
-            path.pieces.push_back({e0, surf->PointOnEdge(pv[i - 1], pv[i], 1.0), surf->EdgeFaces(pv[i - 1], pv[i])});
-        }
-        // The snake's length unit: the median edge length along its seed path, so that one
-        // set of parameters fits meshes whose edge lengths vary by 10-100x.
-        sampleAlong(path, closed, (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(pathEdges));
+        setInitial(Initial::FromVertexPath(*surf, pathVerts, closed, st.params.spacing, lengthScale), closed);
     }
 
     /// Seeds given as surface points (face + barycentric, e.g. snapped from coordinates or a
@@ -114,34 +95,7 @@ public:
     /// snake's length unit; 0 = the median edge of the faces the path crosses.
     void InitFromSurfacePath(const std::vector<SurfacePoint> &pathPts, bool closed, double lengthScale = 0)
     {
-        const MeshType &m = surf->Mesh();
-        PathOnSurface path;
-        std::vector<SurfacePoint> &pv = path.points;
-        for (const auto &p : pathPts) {
-            checkPoint(p);
-            if (pv.empty() || p.Pd(m) != pv.back().Pd(m)) pv.push_back(p);
-        }
-        if (closed && pv.size() > 1 && pv.front().Pd(m) == pv.back().Pd(m)) pv.pop_back();
-        if (closed && !pv.empty()) pv.push_back(pv.front());
-        if (pv.size() < 2) throw SnakeError("Geometric snake: the seed path is too short.");
-        // The face each piece lies in, and both ends expressed in it.
-        std::vector<int> pieceFaces;
-        path.cum.assign(1, 0.0);
-        for (size_t i = 0; i + 1 < pv.size(); ++i) {
-            PathPiece piece;
-            const int f = surf->CommonFace(pv[i], pv[i + 1]);
-            if (f < 0) throw SnakeError("Geometric snake: consecutive seed path points share no face.");
-            pv[i].InFace(m, f, piece.from);
-            pv[i + 1].InFace(m, f, piece.to);
-            piece.faces = {f};
-            path.pieces.push_back(piece);
-            pieceFaces.push_back(f);
-            path.cum.push_back(path.cum.back() + (pv[i + 1].Pd(m) - pv[i].Pd(m)).Norm());
-        }
-        // The length unit: the median edge of the faces the path crosses (the pieces
-        // themselves can be far longer than any edge on a CAD face).
-        sampleAlong(path, closed,
-                    (lengthScale > 0 && std::isfinite(lengthScale)) ? lengthScale : medianPositive(faceEdges(pieceFaces)));
+        setInitial(Initial::FromSurfacePath(*surf, pathPts, closed, st.params.spacing, lengthScale), closed);
     }
 
     /// Restores samples (e.g. from JSON). Gaps are re-projected on the next operation.
@@ -150,14 +104,11 @@ public:
     void InitFromSamples(const std::vector<SnakeSample> &samples, bool closed, double lengthScale = 0)
     {
         if (int(samples.size()) < (closed ? 3 : 2)) throw SnakeError("Geometric snake: too few samples.");
-        if (samples.size() > 200000)
-            throw SnakeError("Geometric snake: " + std::to_string(samples.size()) + " samples are too many (at most 200000).");
+        if (long(samples.size()) > Initial::MaxSamples())
+            throw SnakeError("Geometric snake: " + std::to_string(samples.size()) + " samples are too many (at most " +
+                             std::to_string(Initial::MaxSamples()) + ").");
         for (const auto &s : samples) checkPoint(s.p);
-        if (!(lengthScale > 0) || !std::isfinite(lengthScale)) {
-            std::vector<int> faces;
-            for (const auto &s : samples) faces.push_back(s.p.face);
-            lengthScale = medianPositive(faceEdges(faces));
-        }
+        if (!(lengthScale > 0) || !std::isfinite(lengthScale)) lengthScale = Initial::UnitOf(*surf, samples);
         pushUndo();
         st.samples = samples;
         st.closed = closed;
@@ -441,123 +392,27 @@ public:
 
 private:
 
-    /// A path on the surface to take samples along: its points (closed: the first repeated at
-    /// the end), their arc lengths, and per piece between two points its ends expressed in
-    /// one face and the faces a gap over it holds.
-    struct PathPiece
+    typedef SnakeInitialCurve<MeshType> Initial;
+    // a new curve (Sec. 5.5, 7): the initial one of the snake, its gaps traced
+    void setInitial(typename Initial::Result r, bool closed)
     {
-        SurfacePoint from, to; // in the same face
-        std::vector<int> faces;
-    };
-    struct PathOnSurface
-    {
-        std::vector<SurfacePoint> points;
-        std::vector<double> cum;
-        std::vector<PathPiece> pieces;
-    };
-
-    /// Sec. 7: samples at uniform spacing (`spacing` length units) along the path, the ends of
-    /// an open one exactly at its ends; the gaps between them are the path's pieces they span
-    /// (their faces) with the path points strictly inside as crossings: the initial curve.
-    void sampleAlong(const PathOnSurface &path, bool closed, double unit)
-    {
-        const std::vector<double> &cum = path.cum;
-        const double L = cum.back();
-        const double d = st.params.spacing * unit;
-        if (!(L > 1e-9 * surf->MeanEdge())) throw SnakeError("Geometric snake: the seed path has zero length.");
-        long n = closed ? std::lround(L / d) : std::lround(L / d) + 1;
-        n = std::max<long>(n, closed ? 3 : 2);
-        if (n > 200000) throw SnakeError(tooManySamples(n, L, unit, path.points.size() - (closed ? 1 : 0)));
-        const double step = closed ? L / double(n) : L / double(n - 1);
-
         pushUndo();
-        st.samples.clear();
-        st.gaps.clear();
+        st.samples = std::move(r.samples);
+        st.gaps = std::move(r.gaps);
         st.closed = closed;
-        st.unit = unit;
-        std::vector<double> sampleArc;
-        size_t e = 0;
-        for (long k = 0; k < n; ++k) {
-            const double s = (!closed && k == n - 1) ? L : std::min(L, k * step);
-            while (e + 2 < path.points.size() && cum[e + 1] < s) ++e;
-            const double len = cum[e + 1] - cum[e];
-            const double t = std::min(1.0, std::max(0.0, len > 0 ? (s - cum[e]) / len : 0.0));
-            const PathPiece &piece = path.pieces[e];
-            SnakeSample smp;
-            smp.p = SurfacePoint(piece.from.face, piece.from.bary * (1 - t) + piece.to.bary * t);
-            smp.p.Normalize();
-            st.samples.push_back(smp);
-            sampleArc.push_back(s);
-        }
-        const int gapsN = numGaps();
-        st.gaps.assign(gapsN, Gap());
-        const double eps = 1e-12 * L; // relative: any scale
-        for (int g = 0; g < gapsN; ++g) {
-            const double s0 = sampleArc[g], s1 = (g + 1 < n) ? sampleArc[g + 1] : L;
-            Gap &gap = st.gaps[g];
-            for (size_t i = 0; i < path.pieces.size(); ++i) {
-                if (cum[i + 1] < s0 - eps || cum[i] > s1 + eps) continue;
-                gap.faces.insert(gap.faces.end(), path.pieces[i].faces.begin(), path.pieces[i].faces.end());
-                if (cum[i] > s0 + eps && cum[i] < s1 - eps) gap.crossings.push_back(path.points[i]);
-            }
-            gap.traced = true;
-        }
+        st.unit = r.unit;
         initialSamples = st.samples;
         initialPolyline = Polyline();
         resetRun();
     }
-
-    /// The "too many samples" message, blaming the spacing or the length of the path.
-    std::string tooManySamples(long n, double L, double unit, size_t pathPoints) const
-    {
-        const double edges = L / unit;
-        char buf[320];
-        if (st.params.spacing < 1.0 && edges <= 200000)
-            std::snprintf(buf, sizeof buf, "Geometric snake: the sample spacing (%g edge lengths) is too small for "
-                          "this path: it would need %ld samples (at most 200000). Raise the spacing.",
-                          st.params.spacing, n);
-        else
-            std::snprintf(buf, sizeof buf, "Geometric snake: the seed path is too long for one snake: %zu points, "
-                          "%.0f local edge lengths, %ld samples at spacing %g (at most 200000). Use fewer or "
-                          "closer seeds, or a larger spacing.", pathPoints, edges, n, st.params.spacing);
-        return buf;
-    }
     int numGaps() const { return st.NumGaps(); }
-    /// The edge lengths of the given faces, in double.
-    std::vector<double> faceEdges(const std::vector<int> &faces) const
-    {
-        const MeshType &m = surf->Mesh();
-        std::vector<double> l;
-        for (int f : faces)
-            for (int k = 0; k < 3; ++k)
-                l.push_back(vcg::Distance(vcg::Point3d::Construct(m.face[f].cP(k)),
-                                          vcg::Point3d::Construct(m.face[f].cP((k + 1) % 3))));
-        return l;
-    }
-    /// Median of the positive values (the mesh's mean edge length if there is none).
-    double medianPositive(std::vector<double> v) const
-    {
-        v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !(x > 0) || !std::isfinite(x); }), v.end());
-        if (v.empty()) return surf->MeanEdge();
-        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-        return v[v.size() / 2];
-    }
-    double dist(int a, int b) const
-    {
-        const MeshType &m = surf->Mesh(); // in double: a float square over- or underflows at 1e30 / 1e-30
-        return vcg::Distance(vcg::Point3d::Construct(m.vert[a].cP()), vcg::Point3d::Construct(m.vert[b].cP()));
-    }
     void checkIndex(int i) const
     {
         if (i < 0 || i >= int(st.samples.size()))
             throw SnakeError("Geometric snake: no sample " + std::to_string(i) + " (the snake has " +
                              std::to_string(st.samples.size()) + ").");
     }
-    void checkPoint(const SurfacePoint &p) const
-    {
-        if (!p.IsValid() || !surf->FaceUsable(p.face))
-            throw SnakeError("Geometric snake: the point is not on the mesh (face " + std::to_string(p.face) + ").");
-    }
+    void checkPoint(const SurfacePoint &p) const { Initial::CheckPoint(*surf, p); }
     void pushUndo() { history.Push(st); }
 
     SnakeMotionFrame frame() const
