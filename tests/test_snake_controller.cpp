@@ -592,3 +592,26 @@ TEST(SnakeController, BuildingASecondSnakeKeepsTheFirstConverged)
     EXPECT_DOUBLE_EQ(c.Get(1).Params().alpha, 0.2);
     EXPECT_DOUBLE_EQ(c.Get(0).Params().alpha, SnakeParams().alpha);
 }
+
+// A seed list that mixes a click and a vertex seed becomes surface points through
+// SnakeSurface::VertexPoint; a vertex no face uses (left over in the file) has no such point:
+// a clear error, the seeds kept, no snake (it read past the vertex's empty face list before).
+TEST(SnakeController, VertexSeedWithoutFacesIsRefused)
+{
+    CMeshO m;
+    MakeCube(m);
+    const int lone = int(m.vert.size());
+    vcg::tri::Allocator<CMeshO>::AddVertex(m, CMeshO::CoordType(3, 3, 3));
+    gs_test::EnableSnakeAdjacency(m);
+    Controller c(m);
+    c.AddSeedFromPick(10, vcg::Point3d(0.2, 0.7, 0.1));
+    c.AddSeedVertex(lone);
+    try {
+        c.CloseSeeds(false);
+        FAIL() << "a seed at a vertex without faces was accepted";
+    } catch (const vcg::tri::SnakeError &e) {
+        EXPECT_NE(std::string(e.what()).find("belongs to no face"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(c.SnakeCount(), 0);
+    EXPECT_EQ(c.Seeds().size(), 2u);
+}
