@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 #include <set>
@@ -16,13 +18,16 @@ namespace {
 using namespace vcg::tri;
 
 // The flood of SurfaceProjection::Closest without shortcuts: every face reached through faces
-// within `radius` of q (and the start face) is measured exactly; the first of the closest wins.
+// within `radius` of q (and the start face) is measured exactly; the first of the closest wins,
+// where a later face must be closer by more than rounding (1e-12 of the coordinates and radius)
+// to win.
 SurfacePoint ReferenceClosest(const SnakeSurface<CMeshO> &s, int startFace, const vcg::Point3d &q, double radius,
                               int &visited)
 {
     const CMeshO &m = s.Mesh();
     std::vector<int> todo(1, startFace);
     std::set<int> seen(todo.begin(), todo.end());
+    const double tie = 1e-12 * (std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) + radius);
     double bestD = std::numeric_limits<double>::max();
     int bestF = startFace;
     vcg::Point3d bestP = q;
@@ -36,7 +41,7 @@ SurfacePoint ReferenceClosest(const SnakeSurface<CMeshO> &s, int startFace, cons
         double d;
         vcg::Point3d c;
         vcg::TrianglePointDistance<double>(tri(f), q, d, c);
-        if (d < bestD) { bestD = d; bestF = f; bestP = c; }
+        if (d < bestD - tie) { bestD = d; bestF = f; bestP = c; }
         if (d > radius && f != startFace) continue;
         for (int k = 0; k < 3; ++k) {
             const CFaceO *h = m.face[f].cFFp(k);

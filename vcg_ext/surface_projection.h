@@ -45,6 +45,12 @@ public:
         const double slack = 1e-9 * (std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) + radius);
         const double rIn = std::max(0.0, radius - slack), rOut = radius + slack;
         const double rIn2 = rIn * rIn, rOut2 = rOut * rOut;
+        // A point beyond an edge of a convex part is equally close to both faces of the edge:
+        // its two distances differ in their last bits only, so "the closer face" would flip with
+        // any rounding of the coordinates (the mesh scaled by 1e30 is rounded differently) and
+        // the next update would start from the other face. A face wins only by more than that
+        // rounding; on a tie the first one visited, which does not depend on the scale.
+        const double tie = 1e-3 * slack;
         double bestD = std::numeric_limits<double>::max();
         int bestF = startFace;
         vcg::Point3d bestP = q;
@@ -72,7 +78,7 @@ public:
                 double d;
                 vcg::Point3d c;
                 vcg::TrianglePointDistance<double>(t, q, d, c);
-                if (d < bestD) { bestD = d; bestF = f; bestP = c; }
+                if (d < bestD - tie) { bestD = d; bestF = f; bestP = c; }
                 if (f != startFace && !(far2 < rIn2) && !(box2 > rOut2)) expand = !(d > radius);
             }
             if (!expand) continue;
