@@ -161,7 +161,7 @@ public:
     /// Gradient of E at p, in space, tangent to p's face: dE/dd * (x - c)/d, projected.
     vcg::Point3d Gradient(const SurfacePoint &p, double w) const
     {
-        vcg::Point3d c;
+        vcg::Point3d c(0, 0, 0); // set by Distance whenever d is finite
         const double d = Distance(p, &c);
         if (!std::isfinite(d) || !(d > 0)) return vcg::Point3d(0, 0, 0);
         const vcg::Point3d x = p.Pd(*mesh);
