@@ -2,34 +2,26 @@
 #define VCG_EXT_GEOMETRIC_SNAKE_H
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <deque>
 #include <functional>
-#include <map>
-#include <numeric>
 #include <memory>
 #include <string>
-#include <tuple>
 #include <vector>
 
-#include <Eigen/Dense>
+#include <vcg/space/point3.h>
 
-#include <vcg_ext/face_path.h>
-#include <vcg_ext/path_tighten.h>
 #include <vcg_ext/seed_path.h>
 #include <vcg_ext/snake_curve.h>
 #include <vcg_ext/snake_error.h>
 #include <vcg_ext/snake_history.h>
 #include <vcg_ext/snake_initial_curve.h>
 #include <vcg_ext/snake_partition.h>
+#include <vcg_ext/snake_polyline.h>
 #include <vcg_ext/snake_projection_motion.h>
 #include <vcg_ext/snake_run_control.h>
 #include <vcg_ext/snake_segment_motion.h>
 #include <vcg_ext/snake_surface.h>
 #include <vcg_ext/surface_point.h>
-#include <vcg_ext/surface_projection.h>
 
 namespace vcg {
 namespace tri {
@@ -175,7 +167,7 @@ public:
         st.samples[i].p = p;
         st.samples[i].p.Normalize();
         if (fix) st.samples[i].fixed = true;
-        invalidateAround(i);
+        Line::InvalidateAround(st, i);
         resetRun();
     }
 
@@ -192,29 +184,12 @@ public:
     int InsertSample(int gap)
     {
         if (gap < 0 || gap >= numGaps()) throw SnakeError("Geometric snake: no gap " + std::to_string(gap) + ".");
-        tightenGaps();
-        std::vector<SurfacePoint> pts = gapPoints(gap);
-        std::vector<vcg::Point3d> xyz;
-        for (auto &p : pts) xyz.push_back(p.Pd(surf->Mesh()));
-        double L = 0;
-        for (size_t k = 1; k < xyz.size(); ++k) L += (xyz[k] - xyz[k - 1]).Norm();
-        SurfacePoint mid = pts.front();
-        double acc = 0;
-        for (size_t k = 1; k < xyz.size(); ++k) {
-            double l = (xyz[k] - xyz[k - 1]).Norm();
-            if (acc + l >= L / 2 && l > 0) {
-                double t = (L / 2 - acc) / l;
-                mid = interpolate(pts[k - 1], pts[k], t);
-                break;
-            }
-            acc += l;
-        }
+        const SurfacePoint mid = Line::GapMiddle(*surf, st, gap);
         pushUndo();
         SnakeSample s;
         s.p = mid;
         st.samples.insert(st.samples.begin() + gap + 1, s);
-        st.gaps[gap] = Gap();
-        st.gaps.insert(st.gaps.begin() + gap + 1, Gap());
+        Line::SplitGap(st, gap);
         resetRun();
         return gap + 1;
     }
@@ -226,15 +201,7 @@ public:
             throw SnakeError("Geometric snake: cannot delete, the snake would have too few samples.");
         pushUndo();
         st.samples.erase(st.samples.begin() + i);
-        int n = int(st.samples.size());
-        if (st.closed) {
-            st.gaps.erase(st.gaps.begin() + i);
-            st.gaps[(i - 1 + n) % n] = Gap();
-        } else {
-            int g = std::min(i, int(st.gaps.size()) - 1);
-            st.gaps.erase(st.gaps.begin() + g);
-            if (i - 1 >= 0 && i - 1 < int(st.gaps.size())) st.gaps[i - 1] = Gap();
-        }
+        Line::MergeGaps(st, i);
         resetRun();
     }
 
@@ -305,26 +272,11 @@ public:
     /// the first point. Untraced gaps are traced first.
     std::vector<SurfacePoint> Polyline()
     {
-        bool missing = false;
-        for (const auto &g : st.gaps) missing |= !g.traced;
-        if (missing && st.samples.size() >= 2) retrace();
-        tightenGaps();
-        std::vector<SurfacePoint> out;
-        int n = int(st.samples.size());
-        for (int i = 0; i < n; ++i) {
-            out.push_back(st.samples[i].p);
-            if (i < numGaps())
-                for (const auto &c : gapPoints(i, false)) out.push_back(c);
-        }
-        return out;
+        if (!Line::Traced(st) && st.samples.size() >= 2) retrace();
+        return Line::Points(*surf, st);
     }
 
-    std::vector<vcg::Point3d> PolylinePositions()
-    {
-        std::vector<vcg::Point3d> out;
-        for (const auto &p : Polyline()) out.push_back(p.Pd(surf->Mesh()));
-        return out;
-    }
+    std::vector<vcg::Point3d> PolylinePositions() { return Line::Positions(*surf, Polyline()); }
 
 private:
     // the motions' caches (embeddings, spline systems) are of the snake before a change
@@ -335,6 +287,7 @@ private:
     }
     typedef SnakeSegment Segment;
     typedef SnakeRunControl<MeshType> RunControl;
+    typedef SnakePolyline<MeshType> Line; // the curve between the samples: the gaps
 
     std::shared_ptr<Surface> surf;
     SnakeSegmentMotion<MeshType> motion;
@@ -451,70 +404,6 @@ private:
         stats.converged = false;
         stats.stopped = false;
     }
-    void invalidateAround(int i)
-    {
-        int n = int(st.samples.size());
-        if (st.closed) {
-            st.gaps[i] = Gap();
-            st.gaps[(i - 1 + n) % n] = Gap();
-        } else {
-            if (i < int(st.gaps.size())) st.gaps[i] = Gap();
-            if (i - 1 >= 0) st.gaps[i - 1] = Gap();
-        }
-    }
-
-    /// Point between two surface points that share a face (consecutive polyline points).
-    SurfacePoint interpolate(const SurfacePoint &a, const SurfacePoint &b, double t) const
-    {
-        const MeshType &m = surf->Mesh();
-        vcg::Point3d pa = a.Pd(m), pb = b.Pd(m);
-        vcg::Point3d q = pa * (1 - t) + pb * t;
-        return SurfaceProjection<MeshType>::Closest(*surf, a.face, q, 2 * (pb - pa).Norm() + st.unit);
-    }
-
-    /// The shortest path through each traced gap's faces (path_tighten.h), once per trace,
-    /// where the polyline is read: the motion does not read the crossings.
-    void tightenGaps()
-    {
-        for (auto &gap : st.gaps)
-            if (gap.traced && gap.tightenPending) {
-                PathTighten<MeshType>::Tighten(surf->Mesh(), gap.tracedFrom, gap.crossings, gap.tracedTo);
-                gap.tightenPending = false;
-            }
-    }
-
-    /// Points strictly inside gap i (edge crossings); falls back to the shared-edge
-    /// midpoints of the face path when the gap was never traced.
-    std::vector<SurfacePoint> gapPoints(int g, bool withEnds = true) const
-    {
-        const Gap &gap = st.gaps[g];
-        int n = int(st.samples.size());
-        std::vector<SurfacePoint> out;
-        if (withEnds) out.push_back(st.samples[g].p);
-        if (gap.traced) {
-            for (const auto &c : gap.crossings) out.push_back(c);
-        } else {
-            std::vector<int> fp = FacePath<MeshType>::Find(*surf, st.samples[g].p.face, st.samples[(g + 1) % n].p.face);
-            std::vector<SurfacePoint> mid;
-            for (size_t k = 0; k + 1 < fp.size(); ++k) {
-                const FaceType &f = surf->Mesh().face[fp[k]];
-                for (int e = 0; e < 3; ++e)
-                    if (surf->Idx(f.cFFp(e)) == fp[k + 1]) {
-                        vcg::Point3d b(0, 0, 0);
-                        b[e] = 0.5;
-                        b[(e + 1) % 3] = 0.5;
-                        mid.push_back(SurfacePoint(fp[k], b));
-                    }
-            }
-            // the shortest path through those faces, not their edges' midpoints (on slivers
-            // these lie far from both samples)
-            PathTighten<MeshType>::Tighten(surf->Mesh(), st.samples[g].p, mid, st.samples[(g + 1) % n].p);
-            out.insert(out.end(), mid.begin(), mid.end());
-        }
-        if (withEnds) out.push_back(st.samples[(g + 1) % n].p);
-        return out;
-    }
-
     // ----- partitioning (Sec. 5.1): snake_partition.h, checked before any sample moves
     std::vector<Segment> partition(std::vector<Segment> &overlaps) const
     {
