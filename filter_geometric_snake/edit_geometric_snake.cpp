@@ -5,6 +5,7 @@
 #include <vcg_ext/snake_mesh_store.h>
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/index/grid_static_ptr.h>
+#include <Eigen/Dense>
 #include "snake_dock.h"
 
 #include <chrono>

@@ -2,10 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdio>
 #include <map>
 #include <random>
 
+#include <Eigen/Dense>
+
 #include <snake_test_util.h>
+#include <vcg_ext/path_tighten.h>
 #include <vcg_ext/snake_io.h>
 
 using namespace vcg::tri;

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 
+#include <Eigen/Dense>
+
 #include <snake_test_util.h>
 #include <vcg_ext/feature_energy.h>
 
