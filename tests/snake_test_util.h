@@ -1,7 +1,8 @@
 #ifndef GS_TESTS_SNAKE_TEST_UTIL_H
 #define GS_TESTS_SNAKE_TEST_UTIL_H
 
-// Shared helpers for the snake tests: CMeshO with the adjacency the engine needs, seeds
+// Shared helpers for the snake tests: a mesh (CMeshO, or one with its components, such as a
+// double-precision one) with the adjacency the engine needs, seeds
 // placed near known features, and distances of a curve to the exact feature.
 
 #include <memory>
@@ -15,7 +16,8 @@
 
 namespace gs_test {
 
-inline void EnableSnakeAdjacency(CMeshO &m)
+template <class M>
+void EnableSnakeAdjacency(M &m)
 {
     if (!m.vert.IsVFAdjacencyEnabled()) m.vert.EnableVFAdjacency();
     if (!m.face.IsVFAdjacencyEnabled()) m.face.EnableVFAdjacency();
@@ -24,12 +26,13 @@ inline void EnableSnakeAdjacency(CMeshO &m)
     if (!m.vert.IsCurvatureDirEnabled()) m.vert.EnableCurvatureDir();
     if (!m.vert.IsMarkEnabled()) m.vert.EnableMark();
     if (!m.face.IsMarkEnabled()) m.face.EnableMark();
-    vcg::tri::UpdateTopology<CMeshO>::FaceFace(m);
-    vcg::tri::UpdateTopology<CMeshO>::VertexFace(m);
+    vcg::tri::UpdateTopology<M>::FaceFace(m);
+    vcg::tri::UpdateTopology<M>::VertexFace(m);
 }
 
 /// Index of the mesh vertex nearest to p.
-inline int NearestVertex(const CMeshO &m, const vcg::Point3d &p)
+template <class M>
+int NearestVertex(const M &m, const vcg::Point3d &p)
 {
     int best = -1;
     double bd = 1e300;
@@ -41,7 +44,8 @@ inline int NearestVertex(const CMeshO &m, const vcg::Point3d &p)
     return best;
 }
 
-inline std::vector<int> NearestVertices(const CMeshO &m, const std::vector<vcg::Point3d> &pts)
+template <class M>
+std::vector<int> NearestVertices(const M &m, const std::vector<vcg::Point3d> &pts)
 {
     std::vector<int> out;
     for (auto &p : pts) {

@@ -28,36 +28,6 @@ class DFace : public vcg::Face<DUsed, vcg::face::InfoOcf, vcg::face::VertexRef, 
                                vcg::face::Normal3d, vcg::face::MarkOcf, vcg::face::FFAdjOcf, vcg::face::VFAdjOcf> {};
 class DMesh : public vcg::tri::TriMesh<vcg::vertex::vector_ocf<DVertex>, vcg::face::vector_ocf<DFace>> {};
 
-template <class M>
-void EnableAdjacency(M &m)
-{
-    m.vert.EnableVFAdjacency();
-    m.face.EnableVFAdjacency();
-    m.face.EnableFFAdjacency();
-    m.vert.EnableCurvature();
-    m.vert.EnableCurvatureDir();
-    m.vert.EnableMark();
-    m.face.EnableMark();
-    vcg::tri::UpdateTopology<M>::FaceFace(m);
-    vcg::tri::UpdateTopology<M>::VertexFace(m);
-}
-
-template <class M>
-std::vector<int> NearestVertices(const M &m, const std::vector<vcg::Point3d> &pts)
-{
-    std::vector<int> out;
-    for (auto &p : pts) {
-        int best = 0;
-        double bd = 1e300;
-        for (size_t i = 0; i < m.vert.size(); ++i) {
-            double d = (vcg::Point3d::Construct(m.vert[i].cP()) - p).SquaredNorm();
-            if (d < bd) bd = d, best = int(i);
-        }
-        if (out.empty() || out.back() != best) out.push_back(best);
-    }
-    return out;
-}
-
 struct Outcome
 {
     std::vector<vcg::Point3d> samples; // divided by the scale
@@ -75,7 +45,7 @@ Outcome RunCube(double s, bool closed, SnakeMethod method)
     using Surface = SnakeSurface<M>;
     M m;
     gs_test::MakeRotatedIcoCube(m, 4, s);
-    EnableAdjacency(m);
+    EnableSnakeAdjacency(m);
     FeatureEnergy<M>::Compute(m, FeatureEnergyType::NormalVariation, 2);
     auto surf = std::make_shared<Surface>(m);
     const double h = surf->MeanEdge() / s;
@@ -87,7 +57,7 @@ Outcome RunCube(double s, bool closed, SnakeMethod method)
     } else {
         for (double z : {-0.6, -0.2, 0.2, 0.6}) pts.push_back(vcg::Point3d(1.0, 1.0 - 2 * h, z) * s);
     }
-    std::vector<int> seeds = NearestVertices(m, pts);
+    std::vector<int> seeds = gs_test::NearestVertices(m, pts);
     Outcome o;
     o.seedPathLength = SeedPath<M>::Compute(m, seeds, closed).length / s;
     SnakeParams p;
