@@ -420,6 +420,7 @@ private:
     {
         std::vector<Segment> overlaps;
         std::vector<Segment> segs = partition(overlaps);
+        motion.BeginOperation();
         for (auto &s : segs) motion.Move(st, stats, s, st.params.updatesPerOperation, frame());
         for (auto &s : overlaps) motion.Move(st, stats, s, st.params.updatesPerOperation, frame());
     }
@@ -429,6 +430,7 @@ private:
     {
         std::vector<Segment> overlaps;
         std::vector<Segment> segs = partition(overlaps);
+        motion.BeginOperation();
         for (auto &s : segs) motion.Move(st, stats, s, 0, frame());
         for (auto &s : overlaps) motion.Move(st, stats, s, 0, frame());
     }

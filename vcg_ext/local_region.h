@@ -44,6 +44,8 @@ public:
     std::vector<vcg::Point3d> pos;            // 3D position of each local vertex
     std::vector<int> boundary;                // outer loop (local ids), region on its left
     std::vector<double> arc;                  // per local vertex: order along the core (grown regions), else empty
+    std::vector<double> depth;                // per local vertex: distance from the core along edges (grown
+                                              // regions; the margin where the growth did not reach), else empty
     std::string error;
     int holesFilled = 0, meshHolesClosed = 0;
     /// How far the last region was trimmed: 0 the paper's region (vertex stars), 1 crossed
@@ -239,11 +241,16 @@ private:
 
     /// arc[v]: the position along the core (its faces are in curve order) of the core vertex
     /// nearest to local vertex v; vertices the growth did not reach take a neighbour's.
+    /// depth[v]: v's distance from the core (the growth's), at most the margin.
     void arcKeys(const SnakeSurface<MeshType> &s)
     {
         arc.assign(verts.size(), -1.0);
+        depth.assign(verts.size(), margin);
         for (size_t v = 0; v < verts.size(); ++v)
-            if (verts[v] >= 0 && s.vertMark[verts[v]] == gen) arc[v] = s.vertSrc[verts[v]];
+            if (verts[v] >= 0 && s.vertMark[verts[v]] == gen) {
+                arc[v] = s.vertSrc[verts[v]];
+                depth[v] = std::min(margin, s.vertDist[verts[v]]);
+            }
         for (int pass = 0; pass < 3; ++pass)
             for (const auto &t : tri)
                 for (int k = 0; k < 3; ++k)
@@ -256,7 +263,7 @@ private:
 
     void clear()
     {
-        faces.clear(); tri.clear(); adj.clear(); verts.clear(); pos.clear(); boundary.clear(); arc.clear();
+        faces.clear(); tri.clear(); adj.clear(); verts.clear(); pos.clear(); boundary.clear(); arc.clear(); depth.clear();
         error.clear(); holesFilled = meshHolesClosed = 0;
     }
     bool fail(const std::string &why) { error = why; return false; }

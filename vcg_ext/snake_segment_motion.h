@@ -56,6 +56,25 @@ public:
     /// Forget the kept embeddings (samples were edited, inserted or deleted).
     void ForgetEmbeddings() { embeddings.clear(); }
 
+    /// How many embeddings are kept (one may serve several segments).
+    int KeptEmbeddings() const
+    {
+        std::vector<const Embedding *> e;
+        for (const auto &k : embeddings) e.push_back(k.second.get());
+        std::sort(e.begin(), e.end());
+        return int(std::unique(e.begin(), e.end()) - e.begin());
+    }
+
+    /// A new operation: embeddings that served neither the last one nor the one before are
+    /// dropped (the partition moved on), so that the kept ones stay about one per segment.
+    void BeginOperation()
+    {
+        ++operation;
+        for (auto it = embeddings.begin(); it != embeddings.end();)
+            if (!it->second || it->second->used < operation - 2) it = embeddings.erase(it);
+            else ++it;
+    }
+
     /// Moves one segment (Sec. 5.2 - 5.4): local region, embedding, up to `updates` updates of
     /// Eq. 4 in the plane, back by barycentric coordinates, then retraces its gaps (Sec. 4.1).
     /// `updates` = 0 only retraces. `level`: energy level; `unit`: the snake's length unit.
@@ -70,16 +89,24 @@ public:
         auto t0 = SnakeClock::Now();
         bool wholeClosed = st.closed && k == int(st.samples.size()) && seg.idx.front() == 0 && !seg.fixFirst;
         int gapsInSeg = wholeClosed ? k : k - 1;
-        // Sec. 4.2: one embedding serves several updates, here several operations: the
-        // segment's last embedding is kept while its samples stay well inside it.
-        Embedding &E = embeddings[std::make_pair(seg.idx.front(), k)];
+        // Sec. 4.2: one embedding serves several updates, here several operations: an embedding
+        // is kept while the samples of a segment stay well inside it, and it serves whichever
+        // segment they form (the partition's borders move with the corners of the curve).
+        std::shared_ptr<Embedding> &slot = embeddings[std::make_pair(seg.idx.front(), k)];
         std::vector<int> &lf = work.lf;
         Eigen::MatrixXd &X = work.X;
         lf.resize(k);
         X.resize(k, 2);
-        if (E.valid && locate(st, seg, E, lf, X)) {
+        std::shared_ptr<Embedding> kept = slot && slot->valid && locate(st, seg, *slot, lf, X) ? slot : adopt(st, seg, lf, X);
+        if (kept) {
+            slot = kept;
             stats.reuses++;
-        } else {
+        } else if (!slot || slot.use_count() > 1) {
+            slot = std::make_shared<Embedding>(); // another segment still holds the old one
+        }
+        Embedding &E = *slot;
+        E.used = operation;
+        if (!kept) {
             E.valid = false;
             // Sec. 5.2: the faces the segment crosses ...
             std::vector<int> &core = work.core;
@@ -267,8 +294,9 @@ private:
     static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
 
     /// A local region with its planar embedding (Sec. 5.2-5.3), kept across operations while
-    /// the samples of its segment stay well inside it: their drift from where they were when
-    /// it was made stays below `reach` (half the region's margin, in plane units).
+    /// the samples of a segment stay well inside it: within half its margin of its core, i.e.
+    /// at least half the margin from its border. A region without a margin (trimmed) serves
+    /// only its own segment, and only until a sample moves.
     struct Embedding
     {
         LocalRegion<MeshType> region;
@@ -277,8 +305,9 @@ private:
         std::vector<Eigen::Vector2d> anchor;     // the segment's samples in the plane when embedded
         std::vector<Eigen::Matrix2d> jinvT;      // per real face, computed on first use
         std::vector<char> jDone;
-        double reach = 0;
         double distortion = 1; // worst on the faces carrying samples when embedded
+        int first = 0, count = 0, samples = 0; // the segment it was made for, of a snake of `samples`
+        long used = 0;                         // the last operation it served
         bool valid = false;
 
         int LocalFace(int meshFace) const
@@ -321,20 +350,56 @@ private:
     };
 
     /// The segment's samples in the plane of a kept embedding; false when one of them is no
-    /// longer in it or has drifted too far from where it was when the embedding was made.
+    /// longer well inside it (Embedding).
     bool locate(const SnakeCurve &st, const SnakeSegment &seg, const Embedding &E, std::vector<int> &lf,
                 Eigen::MatrixXd &X) const
     {
         const int k = int(seg.idx.size());
-        if (int(E.anchor.size()) != k) return false;
+        const LocalRegion<MeshType> &R = E.region;
+        const bool grown = R.margin > 0 && R.depth.size() == R.pos.size();
+        if (!grown && (E.first != seg.idx.front() || E.count != k || int(E.anchor.size()) != k)) return false;
         for (int j = 0; j < k; ++j) {
             const SurfacePoint &p = st.samples[seg.idx[j]].p;
             lf[j] = E.LocalFace(p.face);
             if (lf[j] < 0) return false;
             X.row(j) = toPlane(E, lf[j], p.bary).transpose();
-            if ((X.row(j).transpose() - E.anchor[j]).norm() > E.reach) return false;
+            if (grown) {
+                const auto &T = R.tri[lf[j]];
+                if (p.bary[0] * R.depth[T[0]] + p.bary[1] * R.depth[T[1]] + p.bary[2] * R.depth[T[2]] > 0.5 * R.margin)
+                    return false;
+            } else if (X.row(j).transpose() != E.anchor[j]) {
+                return false;
+            }
         }
         return true;
+    }
+
+    /// A kept embedding made for another segment that holds this one's samples well inside it
+    /// (the borders moved): the ones made for overlapping stretches of the snake, most overlap first.
+    std::shared_ptr<Embedding> adopt(const SnakeCurve &st, const SnakeSegment &seg, std::vector<int> &lf,
+                                     Eigen::MatrixXd &X)
+    {
+        const int n = int(st.samples.size());
+        std::vector<std::pair<int, Embedding *>> &cand = work.candidates;
+        cand.clear();
+        for (const auto &e : embeddings) {
+            Embedding *E = e.second.get();
+            if (!E || !E->valid || E->samples != n || !(E->region.margin > 0)) continue;
+            if (std::any_of(cand.begin(), cand.end(), [&](const std::pair<int, Embedding *> &c) { return c.second == E; }))
+                continue;
+            int overlap = 0;
+            for (int i : seg.idx) overlap += ((i - E->first) % n + n) % n < E->count;
+            if (overlap > 0) cand.emplace_back(-overlap, E);
+        }
+        // most overlap first, ties in the map's order (by segment): never by address, which
+        // would make the snake depend on the heap
+        std::stable_sort(cand.begin(), cand.end(),
+                         [](const std::pair<int, Embedding *> &a, const std::pair<int, Embedding *> &b) { return a.first < b.first; });
+        for (const auto &c : cand)
+            if (locate(st, seg, *c.second, lf, X))
+                for (const auto &e : embeddings)
+                    if (e.second.get() == c.second) return e.second;
+        return nullptr;
     }
 
     /// A new region around `core` and its embedding; its margin (a distance on each side) is at
@@ -375,7 +440,9 @@ private:
         }
         E.anchor.resize(k);
         for (int j = 0; j < k; ++j) E.anchor[j] = X.row(j).transpose();
-        E.reach = 0.5 * E.region.margin / unit;
+        E.first = seg.idx.front();
+        E.count = k;
+        E.samples = int(st.samples.size());
         E.valid = true;
         return true;
     }
@@ -499,7 +566,9 @@ private:
     using Rules::HoldAtWell;
     using Rules::alongPullBlend;
     using Rules::balloonPressure;
-    std::map<std::pair<int, int>, Embedding> embeddings; // by segment (first sample, samples)
+    // by segment (first sample, samples); segments whose samples one embedding holds share it
+    std::map<std::pair<int, int>, std::shared_ptr<Embedding>> embeddings;
+    long operation = 0;
     ConformalParam::Workspace conformal;
     SnakeSplineCache splines;
     struct Workspace // reused by every segment move: no allocation in the steady state
@@ -508,6 +577,7 @@ private:
         Eigen::MatrixXd X, B, F, Xn;
         RegionWalk::Result walk, probe;
         std::vector<Eigen::Vector2d> across, pull; // the curve's normal, the coarse gradient (plane)
+        std::vector<std::pair<int, Embedding *>> candidates; // adopt()
     } work;
 
 };
