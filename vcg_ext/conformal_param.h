@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,11 @@ namespace tri {
 ///
 /// The conformal energy of triangle T with local complex coordinates w_k is
 /// |sum_k (w_{k+2} - w_{k+1}) U_k|^2 / (2 A_T) (U_k = u_k + i v_k); its minimum with two pinned
-/// vertices solves a symmetric positive definite system, unknowns (u, v) interleaved, the
-/// vertices in a minimum-degree order of their graph (ties along the snake's arc length, or a
-/// sweep along the region's major axis), so that the LDL^T needs no analysis of its own.
+/// vertices solves a Hermitian positive definite system in the complex unknowns U (one per
+/// vertex: the real system in (u, v) has 2x2 blocks that are multiplications by complex
+/// numbers, and its LDL^T did four times the index work), the vertices in a minimum-degree
+/// order of their graph (ties along the snake's arc length, or a sweep along the region's major
+/// axis), so that the LDL^T needs no analysis of its own.
 class ConformalParam
 {
 public:
@@ -45,10 +48,11 @@ public:
         std::vector<Block> adj; // per vertex, at first[v] .. first[v] + fill[v]
         std::vector<double> diag;
         std::vector<double> keys;
-        Eigen::SparseMatrix<double> A, graph;
+        Eigen::SparseMatrix<std::complex<double>> A;
+        Eigen::SparseMatrix<double> graph;
         Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
-        Eigen::VectorXd rhs, sol;
-        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> solver;
+        Eigen::VectorXcd rhs, sol;
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<std::complex<double>>, Eigen::Lower, Eigen::NaturalOrdering<int>> solver;
         std::vector<int> lastOuter, lastInner; // the pattern the solver was analysed for
         int analyses = 0, factorizations = 0;
     };
@@ -154,8 +158,7 @@ public:
         }
         // A fill-reducing order of the free vertices: minimum degree (AMD) on the vertex graph,
         // numbered along the arc first (its ties). A strip numbered along its arc is banded, but
-        // its factor fills the band (the numeric LDL^T was two thirds of an embedding); the
-        // graph of vertices has a quarter of the entries of the interleaved system's.
+        // its factor fills the band (the numeric LDL^T was two thirds of an embedding).
         {
             Eigen::SparseMatrix<double> &G = w.graph;
             G.resize(nf, nf);
@@ -183,67 +186,55 @@ public:
             order.resize(nf); // the pins drop out: columns are the free vertices only
             for (int s = 0; s < nf; ++s) slot[order[s] = byOld[w.perm.indices()[s]]] = s;
         }
-        // The lower triangle of the interleaved (u, v) system, column by column, straight into
-        // compressed storage; pinned neighbours go to the right-hand side.
-        const int n2 = 2 * nf;
-        Eigen::SparseMatrix<double> &A = w.A;
-        w.rhs.setZero(n2);
+        // The lower triangle of the system, column by column, straight into compressed storage;
+        // pinned neighbours go to the right-hand side. The 2x2 blocks [c d; -d c] of (u, v) are
+        // multiplications by the complex number c - i d: the system is Hermitian in U = u + i v,
+        // half the unknowns and a quarter of the entries of the interleaved real one.
+        typedef std::complex<double> C;
+        Eigen::SparseMatrix<C> &A = w.A;
+        w.rhs.setZero(nf);
         int nnz = 0;
         for (int v = 0; v < nv; ++v)
             if (slot[v] >= 0) {
-                nnz += 2 + 1; // diagonal pair and the (v_s, u_s) zero kept for a fixed pattern
+                nnz += 1;
                 for (int q = first[v]; q < first[v] + fill[v]; ++q)
-                    if (slot[w.adj[q].v] > slot[v]) nnz += 4;
+                    if (slot[w.adj[q].v] > slot[v]) nnz += 1;
             }
-        A.resize(n2, n2);
+        A.resize(nf, nf);
         A.resizeNonZeros(nnz);
         int *outer = A.outerIndexPtr(), *inner = A.innerIndexPtr();
-        double *val = A.valuePtr();
+        C *val = A.valuePtr();
         int z = 0;
-        // columns in slot order: walk `order`, skipping the pins
+        // columns in slot order: walk `order` (the pins dropped out)
         for (int v : order) {
             const int sv = slot[v];
-            if (sv < 0) continue;
             // neighbours after v, sorted by slot
             const int b = first[v], e = first[v] + fill[v];
             std::sort(w.adj.begin() + b, w.adj.begin() + e,
                       [&](const Workspace::Block &x, const Workspace::Block &y) { return slot[x.v] < slot[y.v]; });
-            // column u_v: rows u_v, v_v, then u_t, v_t of later neighbours
-            outer[2 * sv] = z;
-            inner[z] = 2 * sv; val[z++] = w.diag[v] + 1e-12; // a vanishing regularization keeps
-            inner[z] = 2 * sv + 1; val[z++] = 0;             // degenerate triangles' vertices determined
+            outer[sv] = z;
+            // a vanishing regularization keeps degenerate triangles' vertices determined
+            inner[z] = sv; val[z++] = C(w.diag[v] + 1e-12, 0);
             for (int q = b; q < e; ++q) {
                 const int t = w.adj[q].v;
                 const int p = pinIndex(t);
-                const double cc = w.adj[q].c, dd = w.adj[q].d; // block (v, t): [cc dd; -dd cc]
+                const C h(w.adj[q].c, w.adj[q].d); // row t of column v: H(t, v) = conj(H(v, t)), H(v, t) = c - i d
                 if (p >= 0) {
-                    w.rhs[2 * sv] -= cc * pin[p][0] + dd * pin[p][1];
-                    w.rhs[2 * sv + 1] -= -dd * pin[p][0] + cc * pin[p][1];
+                    w.rhs[sv] -= std::conj(h) * C(pin[p][0], pin[p][1]);
                     continue;
                 }
                 if (slot[t] < sv) continue;
-                inner[z] = 2 * slot[t]; val[z++] = cc;      // (u_t, u_v)
-                inner[z] = 2 * slot[t] + 1; val[z++] = dd;  // (v_t, u_v) = -(block (t, v))_uv
-            }
-            // column v_v
-            outer[2 * sv + 1] = z;
-            inner[z] = 2 * sv + 1; val[z++] = w.diag[v] + 1e-12;
-            for (int q = b; q < e; ++q) {
-                const int t = w.adj[q].v;
-                if (pinIndex(t) >= 0 || slot[t] < sv) continue;
-                const double cc = w.adj[q].c, dd = w.adj[q].d;
-                inner[z] = 2 * slot[t]; val[z++] = -dd;     // (u_t, v_v)
-                inner[z] = 2 * slot[t] + 1; val[z++] = cc;  // (v_t, v_v)
+                inner[z] = slot[t]; val[z++] = h;
             }
         }
-        outer[n2] = z;
+        outer[nf] = z;
         A.resizeNonZeros(z);
         // Symbolic analysis only when the pattern changed (the same region embedded again).
-        const bool same = int(w.lastOuter.size()) == n2 + 1 && std::equal(outer, outer + n2 + 1, w.lastOuter.begin()) &&
+        const bool same = int(w.lastOuter.size()) == nf + 1 && std::equal(outer, outer + nf + 1, w.lastOuter.begin()) &&
                           int(w.lastInner.size()) == z && std::equal(inner, inner + z, w.lastInner.begin());
         if (!same) {
             w.solver.analyzePattern(A);
-            w.lastOuter.assign(outer, outer + n2 + 1);
+            w.lastOuter.assign(outer, outer + nf + 1);
             w.lastInner.assign(inner, inner + z);
             ++w.analyses;
         }
@@ -254,7 +245,7 @@ public:
         if (w.solver.info() != Eigen::Success || !w.sol.allFinite()) { error = "conformal embedding: solve failed"; return false; }
         for (int v = 0; v < nv; ++v) {
             int p = pinIndex(v);
-            uv[v] = p >= 0 ? pin[p] : Eigen::Vector2d(w.sol[2 * slot[v]], w.sol[2 * slot[v] + 1]);
+            uv[v] = p >= 0 ? pin[p] : Eigen::Vector2d(w.sol[slot[v]].real(), w.sol[slot[v]].imag());
         }
         // Scale to mesh units.
         double l3 = 0, l2 = 0;

@@ -5,10 +5,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <memory>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -18,6 +16,7 @@
 #include <vcg_ext/local_region.h>
 #include <vcg_ext/region_walk.h>
 #include <vcg_ext/snake_curve.h>
+#include <vcg_ext/snake_kept_embeddings.h>
 #include <vcg_ext/snake_motion_rules.h>
 #include <vcg_ext/snake_partition.h>
 #include <vcg_ext/snake_spline.h>
@@ -30,10 +29,10 @@ namespace vcg {
 namespace tri {
 
 /// How a snake moves by the paper's method (Sec. 5): one segment at a time in the plane of a
-/// local embedding. Owns the scratch state reused across operations: the kept embeddings, the
-/// factored spline systems and a workspace. The naive method of Sec. 4.2 is
-/// SnakeProjectionMotion; the rules both follow are SnakeMotionRules. The session (creation,
-/// editing, undo, convergence) is GeometricSnake's business.
+/// local embedding. Owns the scratch state reused across operations: the kept embeddings
+/// (SnakeKeptEmbeddings), the factored spline systems and a workspace. The naive method of
+/// Sec. 4.2 is SnakeProjectionMotion; the rules both follow are SnakeMotionRules. The session
+/// (creation, editing, undo, convergence) is GeometricSnake's business.
 template <class MeshType>
 class SnakeSegmentMotion : public SnakeMotionRules<MeshType>
 {
@@ -42,6 +41,7 @@ class SnakeSegmentMotion : public SnakeMotionRules<MeshType>
 public:
     typedef typename MeshType::FaceType FaceType;
     typedef SnakeSurface<MeshType> Surface;
+    typedef SnakeEmbedding<MeshType> Embedding;
 
     explicit SnakeSegmentMotion(std::shared_ptr<Surface> s) : Rules(std::move(s)) {}
 
@@ -54,26 +54,11 @@ public:
         ForgetEmbeddings();
     }
     /// Forget the kept embeddings (samples were edited, inserted or deleted).
-    void ForgetEmbeddings() { embeddings.clear(); }
-
+    void ForgetEmbeddings() { kept.Clear(); }
     /// How many embeddings are kept (one may serve several segments).
-    int KeptEmbeddings() const
-    {
-        std::vector<const Embedding *> e;
-        for (const auto &k : embeddings) e.push_back(k.second.get());
-        std::sort(e.begin(), e.end());
-        return int(std::unique(e.begin(), e.end()) - e.begin());
-    }
-
-    /// A new operation: embeddings that served neither the last one nor the one before are
-    /// dropped (the partition moved on), so that the kept ones stay about one per segment.
-    void BeginOperation()
-    {
-        ++operation;
-        for (auto it = embeddings.begin(); it != embeddings.end();)
-            if (!it->second || it->second->used < operation - 2) it = embeddings.erase(it);
-            else ++it;
-    }
+    int KeptEmbeddings() const { return kept.Count(); }
+    /// A new operation (SnakeKeptEmbeddings::BeginOperation).
+    void BeginOperation() { kept.BeginOperation(); }
 
     /// Moves one segment (Sec. 5.2 - 5.4): local region, embedding, up to `updates` updates of
     /// Eq. 4 in the plane, back by barycentric coordinates, then retraces its gaps (Sec. 4.1).
@@ -92,21 +77,15 @@ public:
         // Sec. 4.2: one embedding serves several updates, here several operations: an embedding
         // is kept while the samples of a segment stay well inside it, and it serves whichever
         // segment they form (the partition's borders move with the corners of the curve).
-        std::shared_ptr<Embedding> &slot = embeddings[std::make_pair(seg.idx.front(), k)];
         std::vector<int> &lf = work.lf;
         Eigen::MatrixXd &X = work.X;
         lf.resize(k);
         X.resize(k, 2);
-        std::shared_ptr<Embedding> kept = slot && slot->valid && locate(st, seg, *slot, lf, X) ? slot : adopt(st, seg, lf, X);
-        if (kept) {
-            slot = kept;
-            stats.reuses++;
-        } else if (!slot || slot.use_count() > 1) {
-            slot = std::make_shared<Embedding>(); // another segment still holds the old one
-        }
-        Embedding &E = *slot;
-        E.used = operation;
-        if (!kept) {
+        Embedding *embedding = nullptr;
+        const bool reused = kept.Acquire(st, seg, lf, X, embedding);
+        if (reused) stats.reuses++;
+        Embedding &E = *embedding;
+        if (!reused) {
             E.valid = false;
             // Sec. 5.2: the faces the segment crosses ...
             std::vector<int> &core = work.core;
@@ -214,7 +193,7 @@ public:
                         d = pull[j].norm() > 0 ? alongPullBlend(d, pull[j], Rules::template acrossEnd<Eigen::Vector2d>(X, j, d))
                                                : Rules::template acrossEnd<Eigen::Vector2d>(X, j, d);
                     double len = d.norm();
-                    double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * widthAlong(E, lf[j], d / len) : 0;
+                    double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * E.WidthAlong(lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
                     if (len == 0) continue;
                     RegionWalk::Result &w = work.walk;
@@ -227,7 +206,7 @@ public:
                     double eNew = surf->EnergyAt(lev, pNew);
                     UpdateTrust(smp.trust, lev, eOld, eNew, slope[j] * std::min(len, cap));
                     if (level > 0 && !st.closed) { // open snakes only (HoldAtWell)
-                        const Eigen::Vector2d x1 = toPlane(E, w.face, toPoint(w.bary));
+                        const Eigen::Vector2d x1 = E.ToPlane(w.face, w.bary);
                         const Eigen::Vector2d x0 = X.row(j).transpose();
                         smp.heldFine = HoldAtWell(smp.heldFine, pOld, pNew, d, across[j], Eigen::Vector2d(-across[j].y(), across[j].x()),
                                                   level, [&](const Eigen::Vector2d &v, bool ahead, SurfacePoint &q) {
@@ -236,7 +215,7 @@ public:
                     }
                     lf[j] = w.face;
                     B.row(j) = w.bary.transpose();
-                    X.row(j) = toPlane(E, w.face, vcg::Point3d(w.bary[0], w.bary[1], w.bary[2])).transpose();
+                    X.row(j) = E.ToPlane(w.face, w.bary).transpose();
                     left |= w.exited;
                 }
                 stats.updates++;
@@ -293,115 +272,6 @@ private:
     template <class V>
     static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
 
-    /// A local region with its planar embedding (Sec. 5.2-5.3), kept across operations while
-    /// the samples of a segment stay well inside it: within half its margin of its core, i.e.
-    /// at least half the margin from its border. A region without a margin (trimmed) serves
-    /// only its own segment, and only until a sample moves.
-    struct Embedding
-    {
-        LocalRegion<MeshType> region;
-        VirtualBoundaryParam::Result emb;
-        std::vector<std::pair<int, int>> lookup; // (mesh face, local face), sorted
-        std::vector<Eigen::Vector2d> anchor;     // the segment's samples in the plane when embedded
-        std::vector<Eigen::Matrix2d> jinvT;      // per real face, computed on first use
-        std::vector<char> jDone;
-        double distortion = 1; // worst on the faces carrying samples when embedded
-        int first = 0, count = 0, samples = 0; // the segment it was made for, of a snake of `samples`
-        long used = 0;                         // the last operation it served
-        bool valid = false;
-
-        int LocalFace(int meshFace) const
-        {
-            auto it = std::lower_bound(lookup.begin(), lookup.end(), std::make_pair(meshFace, -1));
-            return (it != lookup.end() && it->first == meshFace) ? it->second : -1;
-        }
-        const Eigen::Matrix2d &JinvT(int t)
-        {
-            if (!jDone[t]) {
-                jDone[t] = 1;
-                const auto &T = region.tri[t];
-                Eigen::Matrix2d J;
-                J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
-                J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
-                jinvT[t] = std::abs(J.determinant()) > 1e-12 ? Eigen::Matrix2d(J.transpose().inverse())
-                                                              : Eigen::Matrix2d::Zero();
-            }
-            return jinvT[t];
-        }
-        /// Conformal and area distortion of local face t: the larger singular value of the
-        /// 3D -> plane map over the smaller one, times how far its scale is from 1/unit.
-        double Distortion(int t, double unit) const
-        {
-            const auto &T = region.tri[t];
-            const vcg::Point3d e1 = region.pos[T[1]] - region.pos[T[0]], e2 = region.pos[T[2]] - region.pos[T[0]];
-            const vcg::Point3d n = e1 ^ e2;
-            const double l1 = e1.Norm(), a2 = n.Norm();
-            if (!(l1 > 0) || !(a2 > 0)) return 1;
-            const vcg::Point3d x = e1 / l1, y = (n / a2) ^ x;
-            Eigen::Matrix2d P, J;
-            P << l1, e2 * x, 0, e2 * y;
-            J.col(0) = emb.uv[T[1]] - emb.uv[T[0]];
-            J.col(1) = emb.uv[T[2]] - emb.uv[T[0]];
-            const Eigen::Vector2d sv = Eigen::JacobiSVD<Eigen::Matrix2d>(J * P.inverse()).singularValues() * unit;
-            if (!(sv[1] > 0) || !std::isfinite(sv[0])) return 1e9;
-            const double scale = std::sqrt(sv[0] * sv[1]);
-            return sv[0] / sv[1] * std::max(scale, 1 / scale);
-        }
-    };
-
-    /// The segment's samples in the plane of a kept embedding; false when one of them is no
-    /// longer well inside it (Embedding).
-    bool locate(const SnakeCurve &st, const SnakeSegment &seg, const Embedding &E, std::vector<int> &lf,
-                Eigen::MatrixXd &X) const
-    {
-        const int k = int(seg.idx.size());
-        const LocalRegion<MeshType> &R = E.region;
-        const bool grown = R.margin > 0 && R.depth.size() == R.pos.size();
-        if (!grown && (E.first != seg.idx.front() || E.count != k || int(E.anchor.size()) != k)) return false;
-        for (int j = 0; j < k; ++j) {
-            const SurfacePoint &p = st.samples[seg.idx[j]].p;
-            lf[j] = E.LocalFace(p.face);
-            if (lf[j] < 0) return false;
-            X.row(j) = toPlane(E, lf[j], p.bary).transpose();
-            if (grown) {
-                const auto &T = R.tri[lf[j]];
-                if (p.bary[0] * R.depth[T[0]] + p.bary[1] * R.depth[T[1]] + p.bary[2] * R.depth[T[2]] > 0.5 * R.margin)
-                    return false;
-            } else if (X.row(j).transpose() != E.anchor[j]) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /// A kept embedding made for another segment that holds this one's samples well inside it
-    /// (the borders moved): the ones made for overlapping stretches of the snake, most overlap first.
-    std::shared_ptr<Embedding> adopt(const SnakeCurve &st, const SnakeSegment &seg, std::vector<int> &lf,
-                                     Eigen::MatrixXd &X)
-    {
-        const int n = int(st.samples.size());
-        std::vector<std::pair<int, Embedding *>> &cand = work.candidates;
-        cand.clear();
-        for (const auto &e : embeddings) {
-            Embedding *E = e.second.get();
-            if (!E || !E->valid || E->samples != n || !(E->region.margin > 0)) continue;
-            if (std::any_of(cand.begin(), cand.end(), [&](const std::pair<int, Embedding *> &c) { return c.second == E; }))
-                continue;
-            int overlap = 0;
-            for (int i : seg.idx) overlap += ((i - E->first) % n + n) % n < E->count;
-            if (overlap > 0) cand.emplace_back(-overlap, E);
-        }
-        // most overlap first, ties in the map's order (by segment): never by address, which
-        // would make the snake depend on the heap
-        std::stable_sort(cand.begin(), cand.end(),
-                         [](const std::pair<int, Embedding *> &a, const std::pair<int, Embedding *> &b) { return a.first < b.first; });
-        for (const auto &c : cand)
-            if (locate(st, seg, *c.second, lf, X))
-                for (const auto &e : embeddings)
-                    if (e.second.get() == c.second) return e.second;
-        return nullptr;
-    }
-
     /// A new region around `core` and its embedding; its margin (a distance on each side) is at
     /// least twice the sample spacing and 1.5 times the longest edge the segment crosses. When the
     /// faces carrying samples are embedded with a distortion above kMaxDistortion, the region grows once.
@@ -424,7 +294,7 @@ private:
                 const SurfacePoint &p = st.samples[seg.idx[j]].p;
                 lf[j] = E.region.LocalFace(*surf, p.face);
                 if (lf[j] < 0) return false; // cannot happen: sample faces are in the core
-                X.row(j) = toPlane(E, lf[j], p.bary).transpose();
+                X.row(j) = E.ToPlane(lf[j], p.bary).transpose();
                 E.distortion = std::max(E.distortion, E.Distortion(lf[j], unit));
             }
             // Too distorted where the samples are: grow the region once (a wider band moves the
@@ -476,25 +346,6 @@ private:
         return longest;
     }
 
-    static Eigen::Vector2d toPlane(const Embedding &E, int t, const vcg::Point3d &b)
-    {
-        const auto &T = E.region.tri[t];
-        return b[0] * E.emb.uv[T[0]] + b[1] * E.emb.uv[T[1]] + b[2] * E.emb.uv[T[2]];
-    }
-    template <class V>
-    static Eigen::Vector2d toPlane(const Embedding &E, int t, const V &b)
-    {
-        return toPlane(E, t, toPoint(b));
-    }
-    /// The width of embedded triangle t in direction d (unit vector): a step cap from the
-    /// local triangle size where the sample goes, so that on long thin triangles a move across
-    /// them is capped by their short side, not by their mean edge.
-    static double widthAlong(const Embedding &E, int t, const Eigen::Vector2d &d)
-    {
-        const auto &T = E.region.tri[t];
-        double a = E.emb.uv[T[0]].dot(d), b = E.emb.uv[T[1]].dot(d), c = E.emb.uv[T[2]].dot(d);
-        return std::max({a, b, c}) - std::min({a, b, c});
-    }
 
     /// The precise level is linear in each face: across a crease it is a V whose slope does
     /// not fade at the bottom, so every sample is pulled with full force onto the mesh's own
@@ -508,7 +359,7 @@ private:
     /// out it is the slope itself. False when a probe leaves the region.
     bool acrossSlope(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &nrm, double &slope)
     {
-        const double r = Rules::kAcrossReach * std::min(widthAlong(E, t, nrm), 1.0); // plane units: 1 = the length unit
+        const double r = Rules::kAcrossReach * std::min(E.WidthAlong(t, nrm), 1.0); // plane units: 1 = the length unit
         double lo, hi;
         if (!acrossEnergies(E, t, x, nrm, r, lo, hi)) return false;
         slope = (hi - lo) / (2 * r);
@@ -566,9 +417,7 @@ private:
     using Rules::HoldAtWell;
     using Rules::alongPullBlend;
     using Rules::balloonPressure;
-    // by segment (first sample, samples); segments whose samples one embedding holds share it
-    std::map<std::pair<int, int>, std::shared_ptr<Embedding>> embeddings;
-    long operation = 0;
+    SnakeKeptEmbeddings<MeshType> kept;
     ConformalParam::Workspace conformal;
     SnakeSplineCache splines;
     struct Workspace // reused by every segment move: no allocation in the steady state
@@ -577,7 +426,6 @@ private:
         Eigen::MatrixXd X, B, F, Xn;
         RegionWalk::Result walk, probe;
         std::vector<Eigen::Vector2d> across, pull; // the curve's normal, the coarse gradient (plane)
-        std::vector<std::pair<int, Embedding *>> candidates; // adopt()
     } work;
 
 };
