@@ -472,12 +472,6 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
         throw SnakeError("--use-quality is on, but the mesh has no vertex quality. Compute one first (e.g. "
                          "geometric-snake energy), or leave --use-quality off.");
     MeshValidation<CMeshO>::RequireAdjacencySafe(m);
-    // What MeshLab's updateDataMask(MM_FACEFACETOPO | MM_VERTFACETOPO) does for the filter.
-    m.face.EnableFFAdjacency();
-    m.vert.EnableVFAdjacency();
-    m.face.EnableVFAdjacency();
-    UpdateTopology<CMeshO>::FaceFace(m);
-    UpdateTopology<CMeshO>::VertexFace(m);
 
     const auto t0 = Clock::now();
     Controller ctl(m);
@@ -490,6 +484,15 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     b.seeds = seeds;
     b.closed = closed;
     b.maxOperations = maxOps;
+    // What MeshLab's updateDataMask(MM_FACEFACETOPO | MM_VERTFACETOPO) does for the filter,
+    // run as there while the energy is computed.
+    b.adjacency = [&m] {
+        m.face.EnableFFAdjacency();
+        m.vert.EnableVFAdjacency();
+        m.face.EnableVFAdjacency();
+        UpdateTopology<CMeshO>::FaceFace(m);
+        UpdateTopology<CMeshO>::VertexFace(m);
+    };
     if (!seedPts.empty()) b.seedPoints = Snap(job, m, seedPts, closed, source).points;
     SnakeBatch<CMeshO>::Result res;
     {

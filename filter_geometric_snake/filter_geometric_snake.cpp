@@ -547,7 +547,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 		return fail("UseQuality is on, but the mesh has no vertex quality. Compute one first (e.g. \"Compute "
 		            "Geometric Snake Feature Energy\" or any quality filter), or turn UseQuality off.");
 	tri::MeshValidation<CMeshO>::RequireAdjacencySafe(m.cm); // before MeshLab builds the adjacency
-	m.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
+	m.updateDataMask(MeshModel::MM_VERTQUALITY);
 
 	QElapsedTimer timer;
 	timer.start();
@@ -561,6 +561,8 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	b.seeds = seeds;
 	b.closed = closed;
 	b.maxOperations = maxOps;
+	// MeshLab's adjacency build runs while the energy is computed (on large meshes, on two cores).
+	b.adjacency = [&m] { m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO); };
 	if (!seedPts.empty()) {
 		const auto snap = tri::SeedPointSnap<CMeshO>::Snap(m.cm, seedPts, closed ? 3 : 2, closed);
 		logSnap(snap, pointSource);

@@ -3,7 +3,9 @@
 #  - the unit tests built with AddressSanitizer + UndefinedBehaviorSanitizer and asserts on
 #    (GS_SANITIZE=ON): any report fails the test (-fno-sanitize-recover);
 #  - the libFuzzer targets of fuzz/ (GS_BUILD_FUZZ=ON), each run for GS_FUZZ_SECONDS (60 s)
-#    from its seed corpus fuzz/corpus/<target>/ (CTest label `fuzz`).
+#    from its seed corpus fuzz/corpus/<target>/ (CTest label `fuzz`);
+#  - the unit tests that run work on a second thread (named *OnASecondThread), built with
+#    ThreadSanitizer (GS_SANITIZE_THREAD=ON) in build-tsan/: a race TSan sees fails them (it sees those of the small cases, see README).
 # No plugins here: MeshLab itself is not built with ASan. Needs build/meshlab-src (setup.sh).
 #   usage: scripts/test_sanitize.sh [extra ctest args]      env: GS_FUZZ_SECONDS (default 60)
 set -euo pipefail
@@ -21,4 +23,14 @@ cd build-asan
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}
 ctest --output-on-failure -j2 -L 'unit|fuzz' "$@"
+cd "$here"
+echo "[sanitize] configure + build (build-tsan/, clang, TSan: the tests that use a second thread)"
+CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGS_SANITIZE_THREAD=ON \
+  -DGS_BUILD_PLUGINS=OFF -DGS_BUILD_BENCH=OFF -DGS_BUILD_CLI=OFF -DMESHLAB_SOURCE_DIR="$src"
+cmake --build build-tsan -j2 --target test_feature_energy test_geometric_snake
+cd build-tsan
+export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:exitcode=66}
+n=$(ctest -N -R 'OnASecondThread$' | sed -n 's/^Total Tests: //p')
+[ "${n:-0}" -ge 3 ] || { echo "[sanitize] expected the *OnASecondThread tests in build-tsan/, found ${n:-0}"; exit 1; }
+ctest --output-on-failure -R 'OnASecondThread$' "$@"
 echo "[sanitize] sanitizer unit tests and fuzzers clean"

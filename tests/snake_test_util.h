@@ -16,6 +16,19 @@
 
 namespace gs_test {
 
+/// For its scope, meshes of more than `faces` faces run the engine's second-thread passes (see
+/// MeshValidation::SetConcurrentFaces): small meshes then take the threaded path too, where
+/// ThreadSanitizer sees both sides of a race.
+struct ConcurrentFacesScope
+{
+    typedef vcg::tri::MeshValidation<CMeshO> MV;
+    explicit ConcurrentFacesScope(int faces) : before(MV::ConcurrentFaces()) { MV::SetConcurrentFaces(faces); }
+    ~ConcurrentFacesScope() { MV::SetConcurrentFaces(before); }
+    ConcurrentFacesScope(const ConcurrentFacesScope &) = delete;
+    ConcurrentFacesScope &operator=(const ConcurrentFacesScope &) = delete;
+    const int before;
+};
+
 template <class M>
 void EnableSnakeAdjacency(M &m)
 {

@@ -10,6 +10,7 @@
 #include <common/ml_mesh_type.h>
 
 #include "generated_meshes.h"
+#include "snake_test_util.h"
 #include "vcg_ext/feature_energy.h"
 
 namespace {
@@ -480,3 +481,36 @@ TEST(FeatureEnergy, PlainMeshTypeWorks)
 }
 
 } // namespace
+
+// Above MeshValidation::ConcurrentFaces() faces Compute counts the topology on a second thread
+// while it computes the energy: its report must still be the mesh's (a pair of touching cones
+// and a face with a repeated vertex, appended to a grid of 180,000 faces), and the energy the
+// same as computed on its own. Also on a grid of 800 faces with the threshold at 0, where
+// ThreadSanitizer sees both sides of a race.
+TEST(FeatureEnergy, LargeMeshCountsItsTopologyOnASecondThread)
+{
+    for (int n : {300, 20}) {
+        gs_test::ConcurrentFacesScope threads(n < 100 ? 0 : vcg::tri::MeshValidation<CMeshO>::ConcurrentFaces());
+        CMeshO m;
+        gs_test::MakeFlatGrid(m, n);
+        CMeshO cones;
+        gs_test::MakeTouchingCones(cones, 12);
+        gs_test::AppendMesh(m, cones);
+        auto rep0 = vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[0], &m.vert[1], &m.vert[2]);
+        rep0->V(2) = rep0->V(0); // a face that repeats a vertex (AddFace asserts on one)
+        ASSERT_GT(m.fn, vcg::tri::MeshValidation<CMeshO>::ConcurrentFaces());
+        const auto rep = vcg::tri::MeshValidation<CMeshO>::Inspect(m);
+        ASSERT_EQ(rep.nonManifoldVertices, 1);
+        ASSERT_EQ(rep.degenerateFaces, 1);
+        const FE::Stats st = FE::Compute(m, FeatureEnergyType::NormalVariation, 2);
+        EXPECT_EQ(st.nonManifoldVertices, rep.nonManifoldVertices);
+        EXPECT_EQ(st.degenerateFaces, rep.degenerateFaces);
+        std::vector<float> q;
+        for (const auto &v : m.vert) q.push_back(v.cQ());
+        FE::NormalVariation(m);
+        FE::Normalize(m, true);
+        FE::Smooth(m, 2);
+        FE::Normalize(m, true);
+        for (size_t i = 0; i < m.vert.size(); ++i) ASSERT_EQ(m.vert[i].cQ(), q[i]) << n << " vertex " << i;
+    }
+}

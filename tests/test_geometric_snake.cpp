@@ -1,7 +1,9 @@
 // Unit and accuracy tests of the geometric snake engine (paper Sections 3-5).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <random>
@@ -10,6 +12,7 @@
 
 #include <snake_test_util.h>
 #include <vcg_ext/path_tighten.h>
+#include <vcg_ext/snake_energy_source.h>
 #include <vcg_ext/snake_io.h>
 
 using namespace vcg::tri;
@@ -430,6 +433,84 @@ TEST(GeometricSnake, FaceRepeatingAVertexIsRefusedBeforeAdjacency)
     } catch (const SnakeError &e) {
         EXPECT_NE(std::string(e.what()).find("same vertex twice"), std::string::npos) << e.what();
     }
+}
+
+// The surface takes the caller's adjacency as it is only if it is right: FF is checked (on a
+// second thread above MeshValidation::ConcurrentFaces() faces) and rebuilt when stale, VF is
+// always rebuilt. Both stale here, on a small mesh (one thread, then two: where ThreadSanitizer
+// sees races) and on a large one.
+TEST(GeometricSnake, StaleAdjacencyIsRebuiltAlsoWhenCheckedOnASecondThread)
+{
+    for (int c = 0; c < 3; ++c) {
+        const int n = c < 2 ? 20 : 250;
+        gs_test::ConcurrentFacesScope threads(c == 1 ? 0 : MeshValidation<CMeshO>::ConcurrentFaces());
+        CMeshO m;
+        gs_test::MakeFlatGrid(m, n);
+        EnableSnakeAdjacency(m);
+        ASSERT_EQ(c > 0, m.fn > MeshValidation<CMeshO>::ConcurrentFaces());
+        ASSERT_TRUE(Surface::FaceFaceCurrent(m));
+        const int f = m.fn / 2 + n; // an interior face
+        CMeshO::FaceType *g = m.face[f].FFp(0);
+        m.face[f].FFp(0) = &m.face[f]; // a border where there is none
+        m.vert[m.vn / 2].VFp() = nullptr; // a vertex that lost its faces
+        m.vert[m.vn / 2].VFi() = -1;
+        ASSERT_FALSE(Surface::FaceFaceCurrent(m));
+        Surface s(m);
+        EXPECT_TRUE(Surface::FaceFaceCurrent(m)) << n;
+        EXPECT_EQ(m.face[f].FFp(0), g) << n;
+        int faces = 0;
+        for (vcg::face::VFIterator<CMeshO::FaceType> vfi(&m.vert[m.vn / 2]); !vfi.End(); ++vfi) ++faces;
+        EXPECT_EQ(faces, 6) << n; // an interior vertex of the grid's diagonal
+    }
+}
+
+// The snake filter builds MeshLab's adjacency while the energy is computed, on the second core
+// of a large mesh: the energy is the one computed after the adjacency, bit for bit, and the
+// adjacency is complete. A failing adjacency build is the caller's error, after the energy has
+// ended. On a small mesh with one thread and with two (where ThreadSanitizer sees races), and
+// on a large one (not the crease energy: on 130k faces it takes minutes).
+TEST(SnakeEnergySource, EnergyComputedBesideTheAdjacencyOnASecondThread)
+{
+    for (int c = 0; c < 3; ++c)
+        for (FeatureEnergyType type : {FeatureEnergyType::NormalVariation, FeatureEnergyType::Crease}) {
+            if (c == 2 && type == FeatureEnergyType::Crease) continue;
+            const int n = c < 2 ? 32 : 256;
+            gs_test::ConcurrentFacesScope threads(c == 1 ? 0 : MeshValidation<CMeshO>::ConcurrentFaces());
+            CMeshO ref, m;
+            gs_test::MakeFlatGrid(ref, n);
+            for (auto &v : ref.vert) // 16 ridges and valleys of 53 degrees, on vertex columns
+                v.P()[2] = std::fabs(v.P()[0] * 8 - std::floor(v.P()[0] * 8) - 0.5f) / 16;
+            vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(m, ref);
+            ASSERT_EQ(c > 0, m.fn > MeshValidation<CMeshO>::ConcurrentFaces());
+            EnableSnakeAdjacency(ref);
+            FeatureEnergy<CMeshO>::Compute(ref, type, 2);
+
+            SnakeEnergySource<CMeshO> src(m);
+            src.SetSettings(type, 2);
+            ASSERT_FALSE(m.face.IsFFAdjacencyEnabled());
+            int calls = 0;
+            src.ComputeBeside([&] {
+                ++calls;
+                EnableSnakeAdjacency(m);
+            });
+            EXPECT_EQ(calls, 1);
+            EXPECT_TRUE(src.Computed());
+            ASSERT_TRUE(Surface::FaceFaceCurrent(m)) << n;
+            float lo = 1, hi = 0;
+            for (size_t i = 0; i < m.vert.size(); ++i) {
+                ASSERT_EQ(m.vert[i].cQ(), ref.vert[i].cQ()) << n << " vertex " << i;
+                lo = std::min(lo, m.vert[i].cQ()), hi = std::max(hi, m.vert[i].cQ());
+            }
+            EXPECT_LT(lo, 0.5f * hi) << n; // the ridges are in it
+            src.ComputeBeside([&] { ++calls; }); // computed: only the adjacency runs
+            EXPECT_EQ(calls, 2);
+
+            CMeshO bad;
+            vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(bad, ref);
+            SnakeEnergySource<CMeshO> failing(bad);
+            failing.SetSettings(type, 2);
+            EXPECT_THROW(failing.ComputeBeside([] { throw SnakeError("no adjacency"); }), SnakeError);
+        }
 }
 
 TEST(GeometricSnake, BadInputIsAClearError)

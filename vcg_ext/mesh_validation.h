@@ -44,6 +44,13 @@ public:
     /// ~1e-7 relative error, so anything thinner than this cannot be told from collinear.
     static double DegenerateRatio() { return 1e-6; }
 
+    /// Meshes with more live faces than this run a read-only pass (a check, a count) on a
+    /// second thread beside the pass that writes: there, a thread costs less than 1 % of it.
+    static int ConcurrentFaces() { return concurrentFaces(); }
+    /// For tests: ThreadSanitizer keeps only the last moments of each thread's accesses, so it
+    /// sees a race only between passes as short as a small mesh's; its tests lower this.
+    static void SetConcurrentFaces(int faces) { concurrentFaces() = faces; }
+
     /// Index of a vertex pointer in m.vert (VCG's tri::Index, usable on const meshes).
     static int VIndex(const MeshType &m, const VertexType *v) { return int(v - &*m.vert.begin()); }
 
@@ -242,6 +249,11 @@ public:
     }
 
 private:
+    static int &concurrentFaces()
+    {
+        static int faces = 100000;
+        return faces;
+    }
     static int Find(std::vector<int> &p, int x)
     {
         while (p[x] != x) {

@@ -38,6 +38,9 @@ public:
         std::vector<SurfacePoint> seedPoints;
         bool closed = false;
         int maxOperations = 1000;
+        /// The caller's FF/VF adjacency build (MeshLab's updateDataMask), if it is still to do:
+        /// run while the energy is computed (SnakeEnergySource::ComputeBeside).
+        std::function<void()> adjacency;
     };
 
     struct Result
@@ -60,6 +63,7 @@ public:
             ctl.SetCreaseAngle(s.creaseAngle);
             ctl.SetEnergySettings(s.energy, s.smoothingSteps);
         }
+        if (s.adjacency) ctl.ComputeEnergyBeside(s.adjacency);
         ctl.SetParams(s.params);
         if (s.seedPoints.empty()) {
             ctl.SetSeeds(s.seeds);

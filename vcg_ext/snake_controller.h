@@ -20,6 +20,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -75,6 +76,15 @@ public:
     {
         energy.Compute(type, smoothing);
         energyChanged();
+    }
+    /// The energy with the current settings, computed (if it is not yet) while `adjacency`,
+    /// the caller's FF/VF build, runs: on a large mesh the two share the two cores
+    /// (SnakeEnergySource::ComputeBeside).
+    void ComputeEnergyBeside(const std::function<void()> &adjacency)
+    {
+        const bool before = energy.Computed();
+        energy.ComputeBeside(adjacency);
+        if (!before) energyChanged();
     }
     /// Any quality field can drive a snake: take the current vertex quality as the energy
     /// (low = feature) instead of computing one. Saved sessions remember it.

@@ -7,6 +7,8 @@
 // whether the energy changed: the snakes on it must then start afresh (EnergyChanged).
 
 #include <cmath>
+#include <functional>
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +44,23 @@ public:
             surface->SetEnergyFromQuality();
             applyField();
         }
+    }
+    /// Computes the energy with the current settings, if it is not computed yet, while
+    /// `adjacency` (the caller's FF/VF build, e.g. MeshLab's updateDataMask: a sort of every
+    /// edge) runs: on a large mesh the energy goes to the second core. No energy type reads
+    /// the adjacency (they sweep the faces; the crease energy sorts its own edges) and the
+    /// adjacency build reads only the faces, so neither writes what the other reads.
+    /// Throws what either throws, after both have ended.
+    void ComputeBeside(const std::function<void()> &adjacency)
+    {
+        if (computed || mesh.fn <= MeshValidation<MeshType>::ConcurrentFaces()) {
+            adjacency();
+            if (!computed) Compute(type, smooth);
+            return;
+        }
+        std::future<void> energy = std::async(std::launch::async, [this] { Compute(type, smooth); });
+        adjacency(); // should it throw, the future's destructor still waits for the energy
+        energy.get();
     }
     /// The current vertex quality is the energy (low = feature).
     void UseQuality()

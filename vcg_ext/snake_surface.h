@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,12 +39,18 @@ public:
         MeshValidation<MeshType>::RequireAdjacencySafe(m);
         if (!tri::HasFFAdjacency(m) || !tri::HasVFAdjacency(m))
             throw SnakeError("Geometric snake: the mesh needs face-face and vertex-face adjacency enabled.");
-        // The caller (MeshLab, the CLI) has usually just built the adjacency: check it in one
-        // linear pass instead of rebuilding it (a sort of every edge).
-        if (!FaceFaceCurrent(m)) tri::UpdateTopology<MeshType>::FaceFace(m);
-        if (!VertexFaceCurrent(m)) tri::UpdateTopology<MeshType>::VertexFace(m);
+        // The caller (MeshLab, the CLI) has usually just built the adjacency: FF is checked in
+        // one linear pass instead of rebuilt (a sort of every edge), on the second core of a
+        // large mesh, as it only reads the faces. VF is rebuilt meanwhile: that is a linear pass
+        // too, and quicker than following its lists to check them (0.1 s against 0.25 s on 1.2M
+        // faces). The face normals are written in the same time; FF is rebuilt after, if need be.
+        std::future<bool> ffCurrent =
+            std::async(m.fn > MeshValidation<MeshType>::ConcurrentFaces() ? std::launch::async : std::launch::deferred,
+                       [&m] { return FaceFaceCurrent(m); });
+        tri::UpdateTopology<MeshType>::VertexFace(m);
         tri::UpdateNormal<MeshType>::PerFaceNormalized(m);
         meanEdge = MeshValidation<MeshType>::MeanEdgeLength(m);
+        if (!ffCurrent.get()) tri::UpdateTopology<MeshType>::FaceFace(m);
         faceCount = int(m.face.size());
         vertCount = int(m.vert.size());
         faceStamp.assign(m.face.size(), 0);
@@ -85,30 +92,6 @@ public:
         }
         return true;
     }
-    /// True when the VF lists hold exactly the live faces at each of their vertices.
-    static bool VertexFaceCurrent(const MeshType &m)
-    {
-        if (m.vert.empty() || m.face.empty()) return false;
-        size_t entries = 0, expected = 0;
-        for (const FaceType &f : m.face)
-            if (!f.IsD()) expected += 3;
-        for (const VertexType &v : m.vert) {
-            if (v.IsD()) continue;
-            const FaceType *f = v.cVFp();
-            int i = v.cVFi();
-            for (size_t guard = 0; f != nullptr; ++guard) {
-                if (guard > expected || i < 0 || i > 2 || f < &m.face[0] || f > &m.face.back() || f->IsD() ||
-                    f->cV(i) != &v)
-                    return false;
-                ++entries;
-                const FaceType *next = f->cVFp(i);
-                i = f->cVFi(i);
-                f = next;
-            }
-        }
-        return entries == expected;
-    }
-
     /// Coarse-to-fine capture (beyond the paper): besides the energy E read from quality
     /// (level 0, precise), a pyramid of smoothings of E (Sec. 6.3, by distance: see
     /// VertexEnergyField) whose wells reach `steps` mean edge lengths on the coarsest level,
