@@ -44,8 +44,9 @@ public:
     /// ~1e-7 relative error, so anything thinner than this cannot be told from collinear.
     static double DegenerateRatio() { return 1e-6; }
 
-    /// Meshes with more live faces than this run a read-only pass (a check, a count) on a
-    /// second thread beside the pass that writes: there, a thread costs less than 1 % of it.
+    /// Meshes with more live faces than this run two passes that share no written data on two
+    /// threads (a check or a count beside the pass that writes, the energy beside the
+    /// adjacency build): there, a thread costs less than 1 % of a pass.
     static int ConcurrentFaces() { return concurrentFaces(); }
     /// For tests: ThreadSanitizer keeps only the last moments of each thread's accesses, so it
     /// sees a race only between passes as short as a small mesh's; its tests lower this.
