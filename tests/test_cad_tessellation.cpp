@@ -4,9 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 
 #include <common/ml_mesh_type.h>
 
@@ -122,6 +124,99 @@ TEST(CreaseEnergy, FeatureEnergyStoresVertexValues)
     vcg::tri::FeatureEnergy<CMeshO>::Compute(g, FeatureEnergyType::Crease, 2);
     for (auto &v : g.vert) EXPECT_EQ(v.cQ(), 1.0f); // no crease at all: flat everywhere
 }
+
+// A ramp between two flats (45-degree creases at x = 4 and x = 6) on a grid whose x spacing
+// grades 20x within each part, with alternating diagonals: the distance of every surface
+// point within reach is exact (to the nearer crease of its own part), beyond reach + the
+// largest face the energy is flat (1), and every crease is found. The dense grid has far
+// more faces within reach of a face than the 4096 a walk over the patch once looked at.
+struct RampCase { int perUnit, ny; };
+class CreaseRampTest : public ::testing::TestWithParam<RampCase> {};
+
+TEST_P(CreaseRampTest, DistanceIsExactWithinReachAndTheEnergyFlatBeyond)
+{
+    const double x0 = 4, x1 = 6, X = 10, Y = 6;
+    std::vector<double> xs{0};
+    auto graded = [&](double a, double b, int n, bool growing) { // n spacings in ratio 20
+        const double q = std::pow(20.0, 1.0 / (n - 1));
+        std::vector<double> h(n);
+        double sum = 0;
+        for (int i = 0; i < n; ++i) sum += h[i] = std::pow(q, growing ? i : n - 1 - i);
+        double x = a;
+        for (int i = 0; i + 1 < n; ++i) xs.push_back(x += (b - a) * h[i] / sum);
+        xs.push_back(b); // exactly on the crease
+    };
+    const int n = GetParam().perUnit;
+    graded(0, x0, 4 * n, false); // finest at the crease
+    graded(x0, x1, 2 * n, true);
+    graded(x1, X, 4 * n, true);
+    const int ny = GetParam().ny, nx = int(xs.size());
+    auto height = [&](double x) { return x <= x0 ? 0.0 : (x >= x1 ? x1 - x0 : x - x0); };
+    std::vector<Point3d> pts;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) pts.push_back(Point3d(xs[i], Y * j / (ny - 1), height(xs[i])));
+    std::vector<std::array<int, 3>> tris;
+    for (int j = 0; j + 1 < ny; ++j)
+        for (int i = 0; i + 1 < nx; ++i) {
+            const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+            if ((i + j) % 2) tris.push_back({a, b, c}), tris.push_back({a, c, d});
+            else tris.push_back({a, b, d}), tris.push_back({b, c, d});
+        }
+    CMeshO m;
+    gs_test::MakeFromArrays(m, pts, tris);
+    double maxEdge = 0;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k) maxEdge = std::max(maxEdge, double(vcg::Distance(f.cP(k), f.cP((k + 1) % 3))));
+
+    const double w = 0.5, reach = 3 * w;
+    Crease ce;
+    ce.Build(m, Crease::DefaultAngle(), reach);
+    ASSERT_EQ(ce.CreaseCount(), 2 * (ny - 1));
+    // The exact distance on each part; on the ramp to the nearer of its two creases.
+    auto exact = [&](const Point3d &p, double faceX) {
+        if (faceX < x0) return x0 - p[0];
+        if (faceX > x1) return p[0] - x1;
+        const Point3d lo(x0, p[1], 0), hi(x1, p[1], x1 - x0);
+        return std::min(vcg::Distance(p, lo), vcg::Distance(p, hi));
+    };
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    int within = 0, flat = 0, onRamp = 0;
+    for (size_t f = 0; f < m.face.size(); ++f) {
+        double a = u(rng), b = u(rng);
+        if (a + b > 1) a = 1 - a, b = 1 - b;
+        const SurfacePoint p(int(f), vcg::Point3d(1 - a - b, a, b));
+        const Point3d x = p.Pd(m);
+        const double faceX = (m.face[f].cP(0)[0] + m.face[f].cP(1)[0] + m.face[f].cP(2)[0]) / 3.0;
+        const double d = exact(x, faceX), got = ce.Distance(p);
+        if (d <= reach) {
+            ASSERT_NEAR(got, d, 1e-5) << "face " << f << " at x = " << x[0];
+            EXPECT_NEAR(ce.Value(p, w), 1 - std::exp(-(d / w) * (d / w)), 1e-5);
+            ++within;
+            onRamp += faceX > x0 && faceX < x1;
+        } else if (d > reach + 3 * maxEdge) {
+            ASSERT_EQ(ce.Value(p, w), 1.0) << "face " << f << " at x = " << x[0];
+            ++flat;
+        } else {
+            ASSERT_TRUE(std::isinf(got) || std::abs(got - d) < 1e-5) << "face " << f; // exact, or none found
+        }
+    }
+    EXPECT_GT(within, int(m.face.size()) / 4);
+    EXPECT_GT(flat, int(m.face.size()) / 20);
+    EXPECT_GT(onRamp, int(m.face.size()) / 10);
+    // Vertex values: 0 on both creases, the exact energy on each side.
+    const std::vector<double> e = ce.VertexValues(w);
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const double x = xs[i];
+            if (x == x0 || x == x1) EXPECT_EQ(e[j * nx + i], 0.0);
+            const double d = x < x0 ? x0 - x : (x > x1 ? x - x1 : std::sqrt(2.0) * std::min(x - x0, x1 - x));
+            if (d <= reach) EXPECT_NEAR(e[j * nx + i], 1 - std::exp(-(d / w) * (d / w)), 1e-5) << "x = " << x;
+        }
+}
+
+INSTANTIATE_TEST_SUITE_P(Grids, CreaseRampTest, ::testing::Values(RampCase{10, 60}, RampCase{30, 200}),
+                         [](const ::testing::TestParamInfo<RampCase> &i) { return i.param.ny > 100 ? "Dense" : "Coarse"; });
 
 TEST(CreaseEnergy, SnakesReadItAtTheSamplesAndAFlatOneIsWarned)
 {

@@ -468,12 +468,11 @@ TEST(GeometricSnake, StaleAdjacencyIsRebuiltAlsoWhenCheckedOnASecondThread)
 // of a large mesh: the energy is the one computed after the adjacency, bit for bit, and the
 // adjacency is complete. A failing adjacency build is the caller's error, after the energy has
 // ended. On a small mesh with one thread and with two (where ThreadSanitizer sees races), and
-// on a large one (not the crease energy: on 130k faces it takes minutes).
+// on a large one.
 TEST(SnakeEnergySource, EnergyComputedBesideTheAdjacencyOnASecondThread)
 {
     for (int c = 0; c < 3; ++c)
         for (FeatureEnergyType type : {FeatureEnergyType::NormalVariation, FeatureEnergyType::Crease}) {
-            if (c == 2 && type == FeatureEnergyType::Crease) continue;
             const int n = c < 2 ? 32 : 256;
             gs_test::ConcurrentFacesScope threads(c == 1 ? 0 : MeshValidation<CMeshO>::ConcurrentFaces());
             CMeshO ref, m;
