@@ -32,7 +32,6 @@
 #include <vcg/space/distance3.h>
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg/space/segment3.h>
-#include <vcg/space/triangle3.h>
 
 #include "mesh_validation.h"
 #include "snake_energy_field.h"
