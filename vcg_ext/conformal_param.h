@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/OrderingMethods>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <vcg/space/point3.h>
@@ -177,8 +178,9 @@ public:
             go[nf] = gz;
             G.resizeNonZeros(gz);
             std::fill(G.valuePtr(), G.valuePtr() + gz, 1.0);
-            Eigen::AMDOrdering<int> amd;
-            amd(G, w.perm); // perm: new number -> old number
+            // G is symmetric already: Eigen's AMD routine itself, without AMDOrdering's copy of
+            // G^T + G (two sparse passes and allocations per embedding; the same order)
+            Eigen::internal::minimum_degree_ordering(G, w.perm); // perm: new number -> old number
             std::vector<int> &byOld = w.byOld;
             byOld.resize(nf);
             for (int v : order)
