@@ -203,12 +203,12 @@ TEST(AnyScale, TinySeedPathIsNotZeroLength)
 }
 
 // Is the closed loop's difference at 1e+-30 a matter of scale? No: it is its response to the
-// float rounding of the input, which every scale that is not a power of two changes, 1.1 as much
-// as 1e-30. The loop ends in one of a few states within the flat band of the level-0 well across
-// the cube's edges (its convergence tolerance lets it stop anywhere in it). Measured (session 15),
-// largest sample difference from scale 1, of the size: 1.7e-3 at 0.1, 1.8e-3 at 1/3 and 0.9,
-// 1.8e-2 at 1.1 (curves 9e-3 apart, half an edge length), 2.0e-7 at 3, 3.2e-7 at 7, 6.0e-5 at 10;
-// 6.0e-5 at 1e-30, 2.3e-4 at 1e-20, 1.3e-7 at 1e20, 3.3e-7 at 1e30.
+// float rounding of the input, which every scale that is not a power of two changes (1.1 moves
+// it 300 times farther than 1e-30). The loop ends in one of a few states within the flat band of
+// the level-0 well across the cube's edges (its convergence tolerance lets it stop anywhere in
+// it). Measured (session 15), largest sample difference from scale 1, of the size: 1.7e-3 at
+// 0.1, 1.8e-3 at 1/3 and 0.9, 1.8e-2 at 1.1 (curves 9e-3 apart, half an edge length), 2.0e-7 at
+// 3, 3.2e-7 at 7, 6.0e-5 at 10; 6.0e-5 at 1e-30, 2.3e-4 at 1e-20, 1.3e-7 at 1e20, 3.3e-7 at 1e30.
 TEST(AnyScale, ExtremeScalesMoveTheFloatLoopNoMoreThanOrdinaryRounding)
 {
     const Outcome ref = RunCube<CMeshO>(1.0, true, SnakeMethod::LocalEmbedding);
