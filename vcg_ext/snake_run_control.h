@@ -176,7 +176,9 @@ private:
             const double e = surf->EnergyAt(level, s.p), d = st.unit;
             bool rises = true;
             for (const double side : {wellMiss[i] == 2 ? -1.0 : 1.0, wellMiss[i] == 2 ? 1.0 : -1.0}) {
-                const SurfacePoint q = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * (side * d), 3 * d);
+                // The probe is d from the sample, so its closest point lies within d of it; 1.5 d
+                // leaves room for the search around bends (3 d flooded 4x the faces, same answers).
+                const SurfacePoint q = SurfaceProjection<MeshType>::Closest(*surf, s.p.face, p[i] + across * (side * d), 1.5 * d);
                 if (!(e <= surf->EnergyAt(level, q) + 1e-6)) {
                     rises = false;
                     wellMiss[i] = side > 0 ? 1 : 2;
