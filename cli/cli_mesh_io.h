@@ -30,6 +30,7 @@
 #include <wrap/io_trimesh/import_stl.h>
 
 #include <vcg_ext/safe_file_write.h>
+#include "obj_faces.h"
 #include <vcg_ext/snake_error.h>
 
 namespace gs_cli {
@@ -103,6 +104,8 @@ inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
         vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m); // MeshLab's default "unify STL vertices"
         vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
     } else if (ext == "obj") {
+        ObjFaces faces; // every index checked before the importer sees it (ObjFaces says why)
+        faces.Read(path);
         io::ImporterOBJ<CMeshO>::Info oi;
         if (!io::ImporterOBJ<CMeshO>::LoadMask(fn, oi)) throw failed("not a readable OBJ file");
         enable(oi.mask);
@@ -110,6 +113,8 @@ inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
         if (r != io::ImporterOBJ<CMeshO>::E_NOERROR && !(r & io::ImporterOBJ<CMeshO>::E_NON_CRITICAL_ERROR))
             throw failed(io::ImporterOBJ<CMeshO>::ErrorMsg(r));
         mask = oi.mask;
+        if (m.vn != faces.vertices) throw failed("its vertices could not all be read");
+        if (m.fn != faces.Triangles()) faces.Rebuild(m, mask); // the importer dropped some
     } else if (ext == "off") {
         if (!io::ImporterOFF<CMeshO>::LoadMask(fn, mask)) throw failed("not a readable OFF file");
         enable(mask);
