@@ -388,6 +388,9 @@ json RunEnergy(Job &job, CMeshO &m, int mask, json r)
     r["non_manifold_vertices"] = st.nonManifoldVertices;
     r["degenerate_faces"] = st.degenerateFaces;
     if (type == int(FeatureEnergyType::Crease)) r["creases"] = st.creases;
+    json warnings = json::array();
+    if (st.constant) warnings.push_back(FeatureEnergy<CMeshO>::ConstantWarning(FeatureEnergyType(type)));
+    r["warnings"] = warnings;
     Info(job, Fmt("Feature energy (%s, %d smoothing steps) on %d vertices: raw range [%g, %g], %.2f ms. Wrote %s.",
                   SnakeParamDefs::EnergyChoices()[type].label.c_str(), steps, m.vn, double(st.rawMin),
                   double(st.rawMax), st.seconds * 1e3, job.output.c_str()));
@@ -396,6 +399,7 @@ json RunEnergy(Job &job, CMeshO &m, int mask, json r)
     if (st.nonManifoldVertices > 0 || st.degenerateFaces > 0)
         Info(job, Fmt("warning: %d non-manifold vertices, %d degenerate faces (handled, but the energy may be "
                       "unreliable there).", st.nonManifoldVertices, st.degenerateFaces));
+    for (const auto &w : warnings) Info(job, "warning: " + w.get<std::string>());
     return r;
 }
 

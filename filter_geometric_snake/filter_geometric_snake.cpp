@@ -378,6 +378,8 @@ bool FilterGeometricSnakePlugin::applyFeatureEnergy(MeshDocument &md, const Rich
 	    double(q.second), colorize ? ", coloured by the quality ramp" : "");
 	if (type == int(tri::FeatureEnergyType::Crease))
 		Log("Crease energy: %d sharp edges (dihedral angle above %g degrees).", stats.creases, creaseAngle);
+	if (stats.constant)
+		Log(GLLogStream::WARNING, "%s", tri::FeatureEnergy<CMeshO>::ConstantWarning(tri::FeatureEnergyType(type)).c_str());
 	if (stats.nonManifoldVertices > 0 || stats.degenerateFaces > 0)
 		Log(GLLogStream::WARNING, "Feature energy: %d non-manifold vertices, %d degenerate faces (handled, but "
 		    "the energy may be unreliable there).", stats.nonManifoldVertices, stats.degenerateFaces);

@@ -514,3 +514,55 @@ TEST(FeatureEnergy, LargeMeshCountsItsTopologyOnASecondThread)
         for (size_t i = 0; i < m.vert.size(); ++i) ASSERT_EQ(m.vert[i].cQ(), q[i]) << n << " vertex " << i;
     }
 }
+
+namespace {
+
+/// A V-ridge of `deg` degrees between its faces' normals along x = 0.5 (a mesh line) of an
+/// n x n grid of [0,1]^2: one line of vertices, 1/n of the mesh.
+void MakeVRidge(CMeshO &m, int n, double deg)
+{
+    const double t = std::tan(deg / 2 * M_PI / 180);
+    gs_test::MakeHeightPlate(m, n, n, 1.0 / n, 1.0 / n, 0, 1,
+                             [t](double x, double) { return t * (0.5 - std::fabs(x - 0.5)); });
+}
+
+} // namespace
+
+// Issue 36: the normalisation clamped the lowest 0.5 % of the vertices, so a crease on fewer
+// (a 33-degree ridge on 300 x 300 and finer grids) became a constant field. The strongest
+// feature maps to 0 whatever its share of the mesh; the flats stay at 1.
+TEST(FeatureEnergy, ThinRidgeSurvivesOnFineGrids)
+{
+    for (int n : {100, 300, 600}) {
+        for (int steps : {0, 2}) {
+            CMeshO m;
+            MakeVRidge(m, n, 33);
+            const FE::Stats st = FE::Compute(m, FeatureEnergyType::NormalVariation, steps);
+            EXPECT_FALSE(st.constant) << n;
+            EXPECT_NEAR(st.rawMin, std::cos(16.5 * M_PI / 180), 1e-3) << n;
+            double ridgeMax = 0, flatMin = 1;
+            for (const auto &v : m.vert) {
+                const double d = std::fabs(double(v.cP()[0]) - 0.5);
+                if (d < 0.25 / n) ridgeMax = std::max(ridgeMax, double(v.cQ()));
+                else if (d > 0.1) flatMin = std::min(flatMin, double(v.cQ()));
+            }
+            EXPECT_LT(ridgeMax, 0.05) << n << " x " << n << ", " << steps << " smoothing steps";
+            EXPECT_GT(flatMin, 0.95) << n << " x " << n << ", " << steps << " smoothing steps";
+        }
+    }
+}
+
+// A field with no feature says so (Stats::constant, for the Log, stderr and the JSON log).
+TEST(FeatureEnergy, ConstantEnergyIsReported)
+{
+    CMeshO m;
+    gs_test::MakeGridPlate(m, 20, 20, 0.05, 0.05);
+    for (FeatureEnergyType t : kTypes) {
+        const FE::Stats st = FE::Compute(m, t, 2);
+        EXPECT_TRUE(st.constant) << Name(t);
+        for (const auto &v : m.vert) ASSERT_FLOAT_EQ(v.cQ(), 1.0f);
+    }
+    EXPECT_NE(FE::ConstantWarning(FeatureEnergyType::NormalVariation).find("constant"), std::string::npos);
+    MakeVRidge(m, 20, 33);
+    EXPECT_FALSE(FE::Compute(m, FeatureEnergyType::NormalVariation, 2).constant);
+}

@@ -17,6 +17,7 @@
 #include <functional>
 #include <future>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -25,6 +26,7 @@
 #include <vcg/space/plane3.h>
 
 #include "crease_energy.h"
+#include "energy_range.h"
 #include "mesh_validation.h"
 #include "snake_error.h"
 
@@ -57,6 +59,7 @@ public:
         int nonManifoldVertices = 0;
         int degenerateFaces = 0;
         int creases = 0; // crease energy: number of sharp edges found
+        bool constant = false; // no vertex stands out as a feature (ConstantWarning() says so)
         double seconds = 0;
     };
 
@@ -99,6 +102,7 @@ public:
             const typename MV::Report rep = inspection.get();
             st.nonManifoldVertices = rep.nonManifoldVertices;
             st.degenerateFaces = rep.degenerateFaces;
+            st.constant = IsConstant(m);
         };
 
         std::vector<ScalarType> oldQuality; // put back if the smoothing is cancelled
@@ -152,6 +156,22 @@ public:
         takeInspection();
         st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         return st;
+    }
+
+    /// True when every vertex has the flat value 1 (or none is live): the energy shows no feature.
+    static bool IsConstant(const MeshType &m)
+    {
+        for (const VertexType &v : m.vert)
+            if (!v.IsD() && v.cQ() < ScalarType(1 - 1e-6)) return false;
+        return true;
+    }
+
+    /// The warning for a Stats::constant energy (the filter's Log, the program's stderr and JSON).
+    static std::string ConstantWarning(FeatureEnergyType t)
+    {
+        return std::string("The feature energy (") + FeatureEnergyName(t) +
+               ") is constant: no vertex stands out as a feature (a flat or evenly curved mesh, or a crease angle "
+               "above every edge's), so a snake on it feels no feature force.";
     }
 
     /// Eq. 6: E(v) = min over faces f around v of n_v . n_f (raw, in [-1,1], 1 = flat).
@@ -242,33 +262,23 @@ public:
         return steps;
     }
 
-    /// Robust map of the vertex quality to [0,1]: the LowPercentile()..HighPercentile() range is
-    /// stretched to [0,1] and clamped (O(n) with nth_element). lowIsFeature: low raw values -> 0;
-    /// otherwise high raw values -> 0. A field that is constant (to 1e-5 relative) has no feature
-    /// and becomes 1 everywhere, as do NaN values.
-    static void Normalize(MeshType &m, bool lowIsFeature)
+    /// Robust map of the vertex quality to [0,1] by EnergyRange (the flat level at
+    /// HighPercentile() of all values, the strongest features at LowPercentile() of the non-flat
+    /// ones). lowIsFeature: low raw values -> 0; otherwise high raw values -> 0. A field with no
+    /// value off the flat level has no feature and becomes 1 everywhere, as do NaN values.
+    /// Returns false for such a constant field.
+    static bool Normalize(MeshType &m, bool lowIsFeature)
     {
+        const double sign = lowIsFeature ? 1.0 : -1.0;
         std::vector<double> vals;
         vals.reserve(m.vert.size());
         for (const VertexType &v : m.vert)
-            if (!v.IsD() && std::isfinite(double(v.cQ()))) vals.push_back(double(v.cQ()));
-        if (vals.empty()) return;
-        const size_t n = vals.size();
-        const size_t il = size_t(std::floor(LowPercentile() * double(n - 1)));
-        const size_t ih = size_t(std::ceil(HighPercentile() * double(n - 1)));
-        std::nth_element(vals.begin(), vals.begin() + il, vals.end());
-        const double lo = vals[il];
-        std::nth_element(vals.begin() + il, vals.begin() + ih, vals.end());
-        const double hi = vals[ih];
-        const double range = hi - lo;
-        const bool constant = !(range > 1e-5 * std::max(1.0, std::max(std::fabs(lo), std::fabs(hi))));
-        for (VertexType &v : m.vert) {
-            if (v.IsD()) continue;
-            const double q = double(v.cQ());
-            double t = 1.0;
-            if (!constant && std::isfinite(q)) t = lowIsFeature ? (q - lo) / range : (hi - q) / range;
-            v.Q() = ScalarType(std::min(1.0, std::max(0.0, t)));
-        }
+            if (!v.IsD() && std::isfinite(double(v.cQ()))) vals.push_back(sign * double(v.cQ()));
+        if (vals.empty()) return false;
+        const EnergyRange r = EnergyRange::Of(vals, LowPercentile());
+        for (VertexType &v : m.vert)
+            if (!v.IsD()) v.Q() = ScalarType(r.Map(sign * double(v.cQ())));
+        return !r.constant;
     }
 
     /// 3D gradient of the piecewise-linear quality inside face f (Sec. 6.2: constant per face).

@@ -12,6 +12,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
+#include <vcg_ext/energy_range.h>
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/snake_energy_field.h>
 #include <vcg_ext/snake_error.h>
@@ -143,7 +144,7 @@ public:
     bool MatchesMesh() const { return int(mesh.face.size()) == faceCount && int(mesh.vert.size()) == vertCount; }
 
     /// Copies per-vertex quality into the snake energy. Any quality field can drive a snake:
-    /// it is mapped robustly (0.1 / 99.9 percentiles) to [0,1] with low values = feature.
+    /// it is mapped robustly (EnergyRange, 0.1 % tails) to [0,1] with low values = feature.
     /// Non-finite values count as flat (1). A constant field gives no force (warned).
     void SetEnergyFromQuality()
     {
@@ -248,7 +249,7 @@ private:
     {
         warnings.clear();
         energy.assign(mesh.vert.size(), 1.0f);
-        std::vector<float> finite;
+        std::vector<double> finite;
         finite.reserve(mesh.vert.size());
         int bad = 0;
         for (size_t i = 0; i < mesh.vert.size(); ++i) {
@@ -263,21 +264,13 @@ private:
             warnings.push_back("No usable vertex quality: the snake feels no feature force.");
             return;
         }
-        auto pct = [&](double p) {
-            size_t k = std::min(finite.size() - 1, size_t(p * double(finite.size() - 1) + 0.5));
-            std::nth_element(finite.begin(), finite.begin() + k, finite.end());
-            return double(finite[k]);
-        };
-        double lo = pct(0.001), hi = pct(0.999);
-        if (!(hi - lo > 1e-12 * std::max(1.0, std::abs(hi)))) {
+        const EnergyRange range = EnergyRange::Of(finite, 0.001);
+        if (range.constant) {
             warnings.push_back("Vertex quality is constant: the snake feels no feature force.");
             return;
         }
-        for (size_t i = 0; i < mesh.vert.size(); ++i) {
-            float q = mesh.vert[i].cQ();
-            if (!std::isfinite(q)) continue;
-            energy[i] = float(std::min(1.0, std::max(0.0, (double(q) - lo) / (hi - lo))));
-        }
+        for (size_t i = 0; i < mesh.vert.size(); ++i)
+            if (!mesh.vert[i].IsD()) energy[i] = float(range.Map(double(mesh.vert[i].cQ())));
     }
 };
 
