@@ -29,6 +29,7 @@
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
+#include <vcg_ext/input_file.h>
 #include <vcg_ext/safe_file_write.h>
 #include "obj_faces.h"
 #include <vcg_ext/snake_error.h>
@@ -68,12 +69,9 @@ inline bool HasNewlineOrBinaryStlSize(const std::string &path, long long size)
 inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
 {
     namespace io = vcg::tri::io;
+    vcg::tri::InputFile::Require(path, "the mesh");
     struct stat st;
-    if (::stat(path.c_str(), &st) != 0)
-        throw SnakeError("Cannot open the mesh \"" + path + "\": " + std::strerror(errno) + ".");
-    if (S_ISDIR(st.st_mode)) throw SnakeError("\"" + path + "\" is a folder, not a mesh file.");
-    if (::access(path.c_str(), R_OK) != 0)
-        throw SnakeError("Cannot read the mesh \"" + path + "\": " + std::strerror(errno) + ".");
+    ::stat(path.c_str(), &st);
     if (st.st_size == 0) throw SnakeError("Cannot read the mesh \"" + path + "\": the file is empty.");
     const std::string ext = Extension(path);
     const char *fn = path.c_str();

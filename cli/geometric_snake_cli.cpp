@@ -43,6 +43,7 @@
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_param_defs.h>
+#include <vcg_ext/snake_sidecar.h>
 #include <vcg_ext/triangle_soup.h>
 
 using nlohmann::json;
@@ -244,10 +245,11 @@ void SetOption(Job &job, const std::string &key, const std::string &value, bool 
     }
 }
 
-/// The files a job must never overwrite: its input mesh (and Pick Points file).
+/// The files a job must never overwrite: its input mesh with the edit tool's session files
+/// (the filters' rule), and its Pick Points file.
 std::vector<ProtectedFile> Keep(const Job &job)
 {
-    std::vector<ProtectedFile> keep{{job.mesh, "the input mesh"}};
+    std::vector<ProtectedFile> keep = SnakeSidecar::ProtectedFiles(job.mesh);
     if (const ParamDef *d = job.values->FindOption("pp"))
         if (!job.values->Text(d->name).empty()) keep.push_back({job.values->Text(d->name), "the seed file"});
     return keep;
@@ -658,6 +660,7 @@ void CaseToJob(const std::string &line, const std::string &dir, Job &job)
 
 int RunBatch(const std::string &file, int jobs, int timeout, bool jsonLog, bool quiet)
 {
+    InputFile::Require(file, "the batch file");
     std::ifstream in(file);
     if (!in) throw SnakeError("Cannot read the batch file \"" + file + "\".");
     const size_t slash = file.find_last_of('/');

@@ -28,6 +28,7 @@
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg/space/triangle3.h>
 
+#include "input_file.h"
 #include "mesh_validation.h"
 #include "snake_error.h"
 #include "surface_point.h"
@@ -161,6 +162,7 @@ public:
     /// Reads a .pp file; a missing or unreadable file throws SnakeError naming it.
     static std::vector<PickedPoint> ReadPickPointsFile(const std::string &path)
     {
+        InputFile::Require(path, "the Pick Points file");
         std::ifstream in(path, std::ios::binary);
         if (!in) throw SnakeError("Cannot open the Pick Points file \"" + path + "\".");
         try {

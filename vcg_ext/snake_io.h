@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <vcg_ext/geometric_snake.h>
+#include <vcg_ext/input_file.h>
 #include <vcg_ext/safe_file_write.h>
 
 namespace vcg {
@@ -239,6 +240,7 @@ public:
     /// ParseLean on a file; refuses files over MaxFileBytes() before reading them.
     static json ParseFileLean(const std::string &path)
     {
+        InputFile::Require(path, "the curve file");
         std::error_code ec;
         const auto size = std::filesystem::file_size(path, ec);
         if (!ec && (long long)size > MaxFileBytes())

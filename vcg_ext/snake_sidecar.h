@@ -41,15 +41,26 @@ struct SnakeSidecar
         }
     }
 
-    /// Files of a mesh that curve exports and autosaves never overwrite: the mesh itself, its
-    /// sidecar and the sidecar's backup. `label`: the mesh's name for messages (default: path).
+    /// Files of a mesh that curve exports, autosaves and the geometric-snake program never
+    /// overwrite: the mesh itself, its sidecar, the sidecar's backup and its recovery files.
+    /// The one rule of the filters, the edit tool and the program. `label`: the mesh's name for
+    /// messages (default: path).
     static std::vector<ProtectedFile> ProtectedFiles(const std::string &meshPath, const std::string &label = "")
     {
         if (meshPath.empty()) return {};
         const std::string name = label.empty() ? meshPath : label;
-        return {{meshPath, "the mesh \"" + name + "\""},
-                {Path(meshPath), "the snake session file (sidecar) of \"" + name + "\""},
-                {Path(meshPath) + ".bak", "a backup of the snake session file of \"" + name + "\""}};
+        std::vector<ProtectedFile> keep{
+            {meshPath, "the mesh \"" + name + "\""},
+            {Path(meshPath), "the snake session file (sidecar) of \"" + name + "\""},
+            {Path(meshPath) + ".bak", "a backup of the snake session file of \"" + name + "\""}};
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        const fs::path mp = fs::absolute(meshPath, ec);
+        const std::string prefix = mp.filename().string() + ".snakes.recovered-";
+        for (fs::directory_iterator it(mp.parent_path(), ec), end; !ec && it != end; it.increment(ec))
+            if (it->path().filename().string().compare(0, prefix.size(), prefix) == 0)
+                keep.push_back({it->path().string(), "a recovered snake session of \"" + name + "\""});
+        return keep;
     }
 };
 

@@ -398,7 +398,7 @@ class CliTests(mlhost.WorkDirTestCase):
 
     def test_error_files(self):
         out = self.path("never.ply")
-        self.assert_error(["energy", self.path("missing.ply"), "-o", out], "Cannot open the mesh")
+        self.assert_error(["energy", self.path("missing.ply"), "-o", out], "Cannot (open|read) the mesh.*No such file")
         with open(self.path("junk.ply"), "w") as f:
             f.write("this is not a ply file\n")
         self.assert_error(["energy", self.path("junk.ply"), "-o", out], "Cannot read the mesh")
@@ -406,13 +406,54 @@ class CliTests(mlhost.WorkDirTestCase):
             f.write("v 0 0 0\nv 1 0 0\nf 1 2 7\n")
         self.assert_error(["energy", self.path("junk.obj"), "-o", out],
                           r"line 3 \(\"f 1 2 7\"\) refers to vertex 7, but only 2 vertices are defined")
-        self.assert_error(["energy", self.path("cube.3ds"), "-o", out], "Cannot open the mesh")
+        self.assert_error(["energy", self.path("cube.3ds"), "-o", out], "Cannot (open|read) the mesh.*No such file")
         self.assert_error(["energy", self.cube, "-o", self.path("nofolder/e.ply")], "does not exist")
         self.assert_error(["energy", self.cube, "-o", self.path("e.off")], "unknown format")
         for name, text in (("empty.stl", ""), ("noline.stl", "solid x"), ("empty.off", ""), ("empty.ply", "")):
             with open(self.path(name), "w") as f:  # vcglib's ASCII STL reader never returns on these
                 f.write(text)
             self.assert_error(["energy", self.path(name), "-o", out], "Cannot read the mesh")
+
+    def test_non_regular_inputs_refused_at_once(self):
+        """A FIFO, a device or a folder given as any input is refused at once, never read (issue 36:
+        a FIFO .pp blocked the program forever)."""
+        fifo = self.path("fifo")
+        os.mkfifo(fifo)
+        out = self.path("never.ply")
+        t0 = time.time()
+        for args, what in ((["energy", fifo + ".ply"], "the mesh"),
+                           (["snake", self.cube, "--pp", fifo, "--json-log"], "the Pick Points file"),
+                           (["path", self.cube, "--pp", "/dev/zero"], "the Pick Points file"),
+                           (["snake", self.cube, "--pp", self.work, "--json-log"], "the Pick Points file")):
+            with self.subTest(args=args):
+                if args[1] == fifo + ".ply":
+                    os.mkfifo(args[1])
+                rc, o, err = run(args + ["-o", out], timeout=20)
+                self.assertEqual(rc, 1, err)
+                self.assertRegex(err, "Cannot read %s .*(not a regular file|a folder)" % what)
+        rc, o, err = run(["--batch", fifo], timeout=20)
+        self.assertEqual(rc, 1, err)
+        self.assertRegex(err, "Cannot read the batch file .*not a regular file")
+        self.assertLess(time.time() - t0, 15)
+
+    def test_never_writes_the_session_files(self):
+        """The edit tool's session file, its backup and recovered sessions are the user's: the
+        program refuses them as outputs, as the filters and the tool do (issue 36)."""
+        a, b = self.cube_index((0.0, 0.0, 0.0)), self.cube_index((1.0, 0.0, 0.0))
+        for suffix in (".snakes.json", ".snakes.recovered-20260101-120000.json"):
+            with self.subTest(suffix=suffix):
+                side = self.cube + suffix
+                with open(side, "w") as f:
+                    f.write('{"precious": true}\n')
+                self.assert_error(["snake", self.cube, "--seeds", "%d,%d" % (a, b), "-o", side],
+                                  "Refusing to write .*(session)")
+                self.assert_error(["path", self.cube, "--seeds", "%d,%d" % (a, b), "-o", side],
+                                  "Refusing to write")
+                self.assertEqual(open(side).read(), '{"precious": true}\n')
+        # the sidecar of a mesh not yet saved is refused too (the tool would write it)
+        os.remove(self.cube + ".snakes.json")
+        self.assert_error(["path", self.cube, "--seeds", "%d,%d" % (a, b), "-o", self.path("cube.ply.snakes.json")],
+                          "Refusing to write")
 
     def test_safe_writes(self):
         """Never the input mesh; a failed run leaves an existing output as it was."""
@@ -470,7 +511,7 @@ class CliTests(mlhost.WorkDirTestCase):
         self.assertEqual(sorted(r["case"] - 1 for r in errors), sorted(bad))
         self.assertEqual(summary, [dict(summary[0], ok=18, errors=2, cases=20)])
         for r in errors:
-            self.assertRegex(r["error"], "Cannot open the mesh|does not exist")
+            self.assertRegex(r["error"], "Cannot (open|read) the mesh|does not exist")
         for i, c in enumerate(cases):
             self.assertEqual(os.path.exists(self.path(c["output"])), i not in bad, c)
         self.assertIn("batch: 20 cases, 18 ok, 2 errors", err)

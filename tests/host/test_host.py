@@ -485,11 +485,14 @@ class HostTests(mlhost.WorkDirTestCase):
         bad_pp = self.path("bad.pp")
         with open(bad_pp, "w") as f:
             f.write("<PickedPoints><point x=\"1\" y=\"oops\" z=\"3\"/></PickedPoints>\n")
+        fifo = self.path("fifo.pp")
+        os.mkfifo(fifo)
         for params, msg in (({"SeedPoints": "1 2 three; 4 5 6"}, "unexpected character"),
                             ({"SeedPoints": "6 3 20; nan 2 20"}, "finite"),
                             ({"SeedPoints": "6 3 20"}, "at least 2 seed points"),
                             ({"SeedPoints": "6 3 20; 30 2 90"}, "farther than 10% of the bounding box diagonal"),
-                            ({"SeedFile": self.path("missing.pp")}, "Cannot open the Pick Points file"),
+                            ({"SeedFile": self.path("missing.pp")}, "Cannot read the Pick Points file"),
+                            ({"SeedFile": fifo}, "not a regular file"),  # issue 36: a FIFO blocked forever
                             ({"SeedFile": bad_pp}, "Not a MeshLab Pick Points"),
                             ({"SeedPoints": "6 3 20; 30 2 20", "SeedFile": bad_pp}, "use one of them"),
                             ({}, "No seeds given")):
