@@ -148,29 +148,6 @@ inline void CheckWritable(const std::string &path, const std::vector<std::string
     SafeFileWrite::CheckTarget(path, keep);
 }
 
-/// The temporary file AtomicWrite uses for `path` in process `pid` (any counter): "<dir>/.<name>.tmp<pid>-".
-inline std::string TempPrefix(const std::string &path, long pid)
-{
-    const size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-    return dir + "." + path.substr(dir.size()) + ".tmp" + std::to_string(pid) + "-";
-}
-
-/// Removes the temporary files a killed process may have left for `path` (AtomicWrite's and
-/// SafeFileWrite's, both "<dir>/.<name>.tmp...").
-inline void RemoveTemporaries(const std::string &path)
-{
-    const std::string prefix = TempPrefix(path, 0).substr(0, TempPrefix(path, 0).size() - 2);
-    const size_t slash = prefix.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : prefix.substr(0, slash);
-    const std::string stem = prefix.substr(slash == std::string::npos ? 0 : slash + 1);
-    if (DIR *d = ::opendir(dir.c_str())) {
-        while (dirent *e = ::readdir(d))
-            if (std::strncmp(e->d_name, stem.c_str(), stem.size()) == 0) std::remove((dir + "/" + e->d_name).c_str());
-        ::closedir(d);
-    }
-}
-
 /// SafeFileWrite for vcglib's exporters, which write to a file name: `writer(tmp)` fills a
 /// temporary file in the target's folder (same extension, for writers that choose the format by
 /// it), which is flushed to disk and renamed over `path`: a failure leaves no partial file and
@@ -178,17 +155,22 @@ inline void RemoveTemporaries(const std::string &path)
 inline void AtomicWrite(const std::string &path, const std::function<void(const std::string &)> &writer)
 {
     static int counter = 0;
-    const std::string tmp = TempPrefix(path, long(::getpid())) + std::to_string(++counter) + "." + Extension(path);
+    SafeFileWrite::RemoveLeftovers(path);
+    const std::string tmp = SafeFileWrite::TempPrefix(path, long(::getpid())) + std::to_string(++counter) + "." +
+                            Extension(path);
+    vcg::tri::TempFiles::Add(tmp);
     try {
         writer(tmp);
         const int fd = ::open(tmp.c_str(), O_RDONLY);
         const bool synced = fd >= 0 && ::fsync(fd) == 0;
         if (fd >= 0) ::close(fd);
         if (!synced) throw SnakeError("Cannot write \"" + path + "\": " + std::strerror(errno) + ".");
-        if (std::rename(tmp.c_str(), path.c_str()) != 0)
+        if (std::rename(tmp.c_str(), SafeFileWrite::Canonical(path).c_str()) != 0)
             throw SnakeError("Cannot write \"" + path + "\": " + std::strerror(errno) + ".");
+        vcg::tri::TempFiles::Remove(tmp);
     } catch (...) {
         std::remove(tmp.c_str());
+        vcg::tri::TempFiles::Remove(tmp);
         throw;
     }
 }

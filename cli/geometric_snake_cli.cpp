@@ -150,7 +150,7 @@ std::string Synopsis(const Command &c)
     for (const auto &o : c.outputs) outs += (outs.empty() ? "OUT." : "|.") + o;
     s += c.outputRequired ? " -o\1" + outs : " [-o\1" + outs + "]";
     if (c.name == "snake") s += " [--mesh-out\1MESH.ply]";
-    return s + " [--json-log] [-q]";
+    return s + " [--timeout\1S] [--json-log] [-q]";
 }
 
 std::string CommandHelp(const Command &c)
@@ -181,6 +181,9 @@ std::string CommandHelp(const Command &c)
                                              (c.outputRequired ? "" : " Optional with --mesh-out or --json-log."));
     if (c.name == "snake")
         s += OptionHelp("--mesh-out FILE.ply", "Also write the mesh with the feature energy in its vertex quality.");
+    s += OptionHelp("--timeout S", "Stop the run after S seconds (wall clock): its temporary files are removed, "
+                                   "the reason goes to stderr (and with --json-log to stdout), exit status 1. "
+                                   "Default: no limit.");
     s += OptionHelp("--json-log", "Print the run's statistics as one JSON line on stdout.");
     s += OptionHelp("-q, --quiet", "No messages on stderr except errors; no progress bar.");
     return s;
@@ -213,8 +216,11 @@ std::string MainHelp()
                                    "(default: no limit).") +
          "\nexit status: 0 success; 1 the run failed (bad mesh, seeds, parameters or files; in a batch: any "
          "case failed); 2 bad command line.\n"
-         "Outputs are written to a temporary file and renamed into place: a failed run leaves no partial\n"
-         "file and never overwrites the input mesh.\n";
+         "Outputs are written to a temporary file (.NAME.gs-tmp-PID-...) and renamed into place: a failed,\n"
+         "interrupted (SIGINT, SIGTERM, SIGHUP), size-limited (SIGXFSZ) or timed-out run leaves no partial\n"
+         "file, and a later write to the same output removes what a killed run left. The program never\n"
+         "overwrites the input mesh, its Pick Points file, nor the edit tool's session files\n"
+         "(MESH.snakes.json, its backup and recovered sessions).\n";
     return s;
 }
 
@@ -606,6 +612,67 @@ bool RunCaught(Job &job, json &result, std::string &error)
     return false;
 }
 
+// ============================================================================ signals
+// A run stopped by SIGINT, SIGTERM, SIGHUP, SIGXFSZ (ulimit -f) or its --timeout (SIGALRM)
+// removes its temporary files (TempFiles) and says why, on stderr and with --json-log on stdout;
+// the messages are made before the run, so that the handler only calls write() and unlink().
+namespace stop {
+char errText[3][1024], jsonText[3][2048];
+volatile sig_atomic_t silent = 0; // a batch case: its parent reports it
+
+void Write(int fd, const char *s)
+{
+    for (size_t n = std::strlen(s); n > 0;) {
+        const ssize_t w = ::write(fd, s, n);
+        if (w <= 0) return;
+        s += w;
+        n -= size_t(w);
+    }
+}
+
+void Handler(int sig)
+{
+    TempFiles::RemoveAll();
+    const int k = sig == SIGALRM ? 0 : sig == SIGXFSZ ? 1 : 2;
+    if (!silent) {
+        Write(STDERR_FILENO, errText[k]);
+        Write(STDOUT_FILENO, jsonText[k]);
+    }
+    if (k == 2 || silent) { // as killed by the signal, for the caller (a batch's parent)
+        ::signal(sig, SIG_DFL);
+        sigset_t one;
+        sigemptyset(&one);
+        sigaddset(&one, sig);
+        ::sigprocmask(SIG_UNBLOCK, &one, nullptr); // blocked while its handler runs
+        ::raise(sig);
+    }
+    ::_exit(1);
+}
+
+/// Installs the handler; `command`, `mesh` and `timeout` go into the messages.
+void Install(const std::string &command, const std::string &mesh, int timeout, bool jsonLog)
+{
+    const std::string why[3] = {
+        "stopped after --timeout " + std::to_string(timeout) + " s",
+        "stopped: a file reached the size limit (ulimit -f)",
+        "stopped by a signal (interrupt, terminate or hang-up)"};
+    for (int k = 0; k < 3; ++k) {
+        const std::string e = why[k] + "; its temporary files are removed and no output is partly written.";
+        std::snprintf(errText[k], sizeof errText[k], "%s: error: %s\n", kProgram, e.c_str());
+        std::snprintf(jsonText[k], sizeof jsonText[k], "%s",
+                      jsonLog ? (json({{"command", command}, {"mesh", mesh}, {"ok", false}, {"error", e}}).dump() + "\n")
+                                    .c_str()
+                              : "");
+    }
+    struct sigaction sa;
+    std::memset(&sa, 0, sizeof sa);
+    sa.sa_handler = Handler;
+    sigemptyset(&sa.sa_mask);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGALRM}) sigaddset(&sa.sa_mask, s);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGALRM}) ::sigaction(s, &sa, nullptr);
+}
+} // namespace stop
+
 // ============================================================================ batch
 std::string JsonToText(const json &v)
 {
@@ -713,6 +780,7 @@ int RunBatch(const std::string &file, int jobs, int timeout, bool jsonLog, bool 
                 continue;
             }
             if (pid == 0) { // the case, isolated in its own process
+                stop::silent = 1; // a stopped case: its temporary files go, the parent reports it
                 if (timeout > 0) ::alarm(unsigned(timeout)); // SIGALRM ends a case that hangs
                 json r;
                 std::string err;
@@ -752,7 +820,7 @@ int RunBatch(const std::string &file, int jobs, int timeout, bool jsonLog, bool 
             try {
                 CaseToJob(cases[i].text, dir, killed);
                 for (const auto &o : {killed.output, killed.meshOut})
-                    if (!o.empty()) RemoveTemporaries(o);
+                    if (!o.empty()) SafeFileWrite::RemoveLeftovers(o);
             } catch (const std::exception &) {
             }
             std::string why = "the case stopped without a result";
@@ -847,6 +915,7 @@ int Main(int argc, char **argv)
         if (!positional.empty() || !opts.empty())
             throw UsageError("--batch takes the cases from its file: no command, mesh or other options beside it "
                              "(only --jobs, --timeout, --json-log, --quiet).");
+        stop::Install("batch", batch, timeout, job.jsonLog);
         return RunBatch(batch, jobs, timeout, job.jsonLog, job.quiet);
     }
     if (positional.empty() || positional[0] == "help") {
@@ -863,11 +932,13 @@ int Main(int argc, char **argv)
     }
     if (positional.size() > 2) throw UsageError("unexpected argument \"" + positional[2] + "\".");
     if (positional.size() == 2) job.mesh = positional[1];
-    if (jobs || timeout) throw UsageError("--jobs and --timeout only apply to --batch.");
+    if (jobs) throw UsageError("--jobs only applies to --batch.");
     job.values.reset(new ParamValues(*job.cmd->defs));
     for (const auto &o : opts) SetOption(job, o.first, o.second.first, o.second.second);
     CheckJob(job);
     job.progress = !job.quiet && ::isatty(STDERR_FILENO);
+    stop::Install(job.cmd->name, job.mesh, timeout, job.jsonLog);
+    if (timeout > 0) ::alarm(unsigned(timeout));
 
     json r;
     std::string err;

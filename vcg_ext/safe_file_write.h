@@ -5,17 +5,23 @@
 // itself, not a file the user must keep), the content goes to a temporary file in the same
 // folder, is flushed to disk, and only then renamed over the target. rename() within one file
 // system is atomic on POSIX: the target is always either the old file or the complete new one.
+// Temporary files are named "<dir>/.<name>.gs-tmp-<pid>-<random>" and listed in TempFiles while
+// they exist: a program's signal handler removes them (TempFiles::RemoveAll), and a later write
+// to the same target removes those a killed process left (RemoveLeftovers).
 
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -32,9 +38,70 @@ struct ProtectedFile
     std::string what;
 };
 
+/// The temporary files this process is writing, removable from a signal handler.
+class TempFiles
+{
+public:
+    static void Add(const std::string &path)
+    {
+        for (auto &s : Slots())
+            if (s[0] == '\0' && path.size() < sizeof s) {
+                std::memcpy(s, path.c_str(), path.size() + 1);
+                return;
+            }
+    }
+    static void Remove(const std::string &path)
+    {
+        for (auto &s : Slots())
+            if (path == s) s[0] = '\0';
+    }
+    /// Unlinks every listed file; async-signal-safe (for SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGALRM).
+    static void RemoveAll()
+    {
+        for (auto &s : Slots())
+            if (s[0] != '\0') {
+                ::unlink(s);
+                s[0] = '\0';
+            }
+    }
+
+private:
+    static char (&Slots())[16][4096]
+    {
+        static char slots[16][4096];
+        return slots;
+    }
+};
+
 class SafeFileWrite
 {
 public:
+    /// "<dir>/.<name>.gs-tmp-<pid>-": every temporary file of a write to `target` by process pid
+    /// starts so (in the folder of `target`, which is written through a symbolic link).
+    static std::string TempPrefix(const std::string &target, long pid)
+    {
+        const std::filesystem::path t(Canonical(target));
+        return t.parent_path().string() + "/." + t.filename().string() + ".gs-tmp-" + std::to_string(pid) + "-";
+    }
+
+    /// Removes the temporary files of writes to `target` whose process has ended (killed before it
+    /// could clean up).
+    static void RemoveLeftovers(const std::string &target)
+    {
+        const std::string prefix = TempPrefix(target, 0);
+        const size_t slash = prefix.find_last_of('/');
+        const std::string dir = prefix.substr(0, slash), stem = prefix.substr(slash + 1, prefix.size() - slash - 3);
+        DIR *d = ::opendir(dir.c_str());
+        if (!d) return;
+        while (dirent *e = ::readdir(d)) {
+            if (std::strncmp(e->d_name, stem.c_str(), stem.size()) != 0) continue;
+            const long pid = std::strtol(e->d_name + stem.size(), nullptr, 10);
+            if (pid > 0 && pid != long(::getpid()) && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH)
+                ::unlink((dir + "/" + e->d_name).c_str());
+        }
+        ::closedir(d);
+    }
+
     /// Lower-case extension without the dot, "" when the file name has none ("a.b/c" -> "").
     static std::string Extension(const std::string &path)
     {
@@ -91,16 +158,18 @@ public:
     {
         CheckTarget(path, keep);
         const std::string target = Canonical(path); // through a symbolic link: keep the link
-        const std::string dir = std::filesystem::path(target).parent_path().string();
-        std::string tmpl = dir + "/." + std::filesystem::path(target).filename().string() + ".tmp-XXXXXX";
+        RemoveLeftovers(target);
+        std::string tmpl = TempPrefix(target, long(::getpid())) + "XXXXXX";
         std::vector<char> name(tmpl.begin(), tmpl.end());
         name.push_back('\0');
         const int fd = ::mkstemp(name.data());
         if (fd < 0) throw SnakeError("Cannot write \"" + path + "\": " + std::strerror(errno) + ".");
         const std::string tmp(name.data());
+        TempFiles::Add(tmp);
         auto fail = [&](const std::string &why) {
             ::close(fd);
             std::remove(tmp.c_str());
+            TempFiles::Remove(tmp);
             throw SnakeError("Cannot write \"" + path + "\": " + why + ". The existing file, if any, is unchanged.");
         };
         // the new file gets the old file's permissions, or the usual ones for a new file
@@ -122,14 +191,18 @@ public:
         }
         if (::fsync(fd) != 0) fail(std::strerror(errno));
         if (::close(fd) != 0) {
+            const std::string why = std::strerror(errno);
             std::remove(tmp.c_str());
-            throw SnakeError("Cannot write \"" + path + "\": " + std::strerror(errno) + ".");
+            TempFiles::Remove(tmp);
+            throw SnakeError("Cannot write \"" + path + "\": " + why + ".");
         }
         if (std::rename(tmp.c_str(), target.c_str()) != 0) {
             const std::string why = std::strerror(errno);
             std::remove(tmp.c_str());
+            TempFiles::Remove(tmp);
             throw SnakeError("Cannot write \"" + path + "\": " + why + ". The existing file, if any, is unchanged.");
         }
+        TempFiles::Remove(tmp);
     }
 };
 

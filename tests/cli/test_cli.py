@@ -455,6 +455,50 @@ class CliTests(mlhost.WorkDirTestCase):
         self.assert_error(["path", self.cube, "--seeds", "%d,%d" % (a, b), "-o", self.path("cube.ply.snakes.json")],
                           "Refusing to write")
 
+    def test_killed_runs_leave_no_temporary_file(self):
+        """SIGXFSZ (ulimit -f) while writing, SIGTERM and SIGINT while running, --timeout: no file is left
+        behind and stderr says why; a later write removes what a killed run left (issue 36)."""
+        import resource
+        import signal
+        a, b = self.cube_index((0.0, 0.0, 0.0)), self.cube_index((1.0, 0.0, 0.0))
+        limit = lambda: resource.setrlimit(resource.RLIMIT_FSIZE, (600, 600))  # noqa: E731
+        for args in (["energy", self.cube, "-o", self.path("big.ply")],
+                     ["snake", self.cube, "--seeds", "%d,%d" % (a, b), "--spacing", "0.2", "-o", self.path("s.json")]):
+            with self.subTest(args=args[0]):
+                before = set(os.listdir(self.work))
+                p = subprocess.run([CLI] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=limit,
+                                   timeout=60)
+                err = p.stderr.decode()
+                self.assertEqual(p.returncode, 1, err)
+                self.assertIn("size limit", err)
+                self.assertEqual(set(os.listdir(self.work)) - before, set())
+        verts, faces = mlhost.grid_cube(80)  # 76800 faces: 10000 smoothing steps take many seconds
+        mlhost.write_ply(self.path("big.ply"), verts, faces, binary=True)
+        long_run = ["energy", self.path("big.ply"), "--smoothing", "10000", "-q", "-o", self.path("never.ply"),
+                    "--json-log"]
+        for sig in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):
+            with self.subTest(signal=sig):
+                p = subprocess.Popen([CLI] + long_run, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+                time.sleep(1.0)
+                p.send_signal(sig)
+                out, err = p.communicate(timeout=30)
+                self.assertEqual(p.returncode, -sig, err)
+                self.assertIn("stopped by a signal", err.decode())
+                self.assertFalse(json.loads(out.decode())["ok"])
+        t0 = time.time()
+        rc, out, err = run(long_run + ["--timeout", "2"], timeout=60)
+        self.assertEqual(rc, 1)
+        self.assertLess(time.time() - t0, 20)
+        self.assertIn("stopped after --timeout 2 s", err)
+        self.assertIn("--timeout", json.loads(out)["error"])
+        self.assertEqual([f for f in os.listdir(self.work) if "never" in f], [])
+        # what a killed process left (pid 2^22+1 is beyond Linux's pid_max: never a live process)
+        stale = self.path(".e.ply.gs-tmp-4194305-1.ply")
+        with open(stale, "w") as f:
+            f.write("partial")
+        self.ok(["energy", self.cube, "-o", self.path("e.ply")])
+        self.assertFalse(os.path.exists(stale))
+
     def test_safe_writes(self):
         """Never the input mesh; a failed run leaves an existing output as it was."""
         size = os.path.getsize(self.cube)
