@@ -90,8 +90,21 @@ public:
     }
 
     /// The seed list checked against the mesh (a closed list may repeat its first seed at the end).
+    /// The most seeds one path (or snake) joins. Each pair of consecutive seeds is a shortest-path
+    /// search, and 10,000 Pick Points scattered over a scan ran for minutes: a bound on the work,
+    /// said up front, far above the tens of seeds a user places by hand.
+    static size_t MaxSeeds() { return 1000; }
+    static void CheckSeedCount(size_t n, const char *what)
+    {
+        if (n > MaxSeeds())
+            throw SnakeError(std::to_string(n) + " " + what + " are given: one path or snake joins at most " +
+                             std::to_string(MaxSeeds()) + " (each consecutive pair is a shortest-path search). "
+                             "Keep every k-th seed, or split the curve into several snakes.");
+    }
+
     static std::vector<int> CheckedSeeds(const MeshType &m, const std::vector<int> &seedList, bool closed)
     {
+        CheckSeedCount(seedList.size(), "seed vertices");
         MV::RequireSurface(m);
         // A closed list may end on its first seed ("0, 80, 98, 0"): the loop closes there anyway.
         std::vector<int> seeds(seedList);
@@ -213,6 +226,7 @@ public:
     /// Throws unless there are enough seed points, each on a usable face.
     static void CheckSeedPoints(const MeshType &m, const std::vector<SurfacePoint> &seeds, bool closed)
     {
+        CheckSeedCount(seeds.size(), "seed points");
         MV::RequireSurface(m);
         const size_t minSeeds = closed ? 3 : 2;
         if (seeds.size() < minSeeds)

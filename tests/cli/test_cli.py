@@ -499,6 +499,25 @@ class CliTests(mlhost.WorkDirTestCase):
         self.ok(["energy", self.cube, "-o", self.path("e.ply")])
         self.assertFalse(os.path.exists(stale))
 
+    def test_too_many_seeds_refused_at_once(self):
+        """10,000 Pick Points ran for minutes: more than SeedPath::MaxSeeds() (1000) seeds are refused
+        before any path search, with a message saying what to do (issue 36)."""
+        ply = mlhost.read_ply(ICO)
+        pts = [(v["x"], v["y"], v["z"]) for v in ply.vertices][:1500]
+        pp = self.path("many.pp")
+        with open(pp, "w") as f:
+            f.write("<!DOCTYPE PickedPoints>\n<PickedPoints>\n")
+            f.writelines('<point x="%r" y="%r" z="%r" active="1" name="%d"/>\n' % (p + (i,)) for i, p in enumerate(pts))
+            f.write("</PickedPoints>\n")
+        t0 = time.time()
+        for cmd in ("path", "snake"):
+            with self.subTest(cmd=cmd):
+                self.assert_error([cmd, ICO, "--pp", pp, "-o", self.path("never.ply")],
+                                  "1500 seed points are given: one path or snake joins at most 1000")
+                self.assert_error([cmd, ICO, "--seeds", ",".join(map(str, range(1001))), "-o", self.path("never.ply")],
+                                  "1001 seed vertices are given: one path or snake joins at most 1000")
+        self.assertLess(time.time() - t0, 20)
+
     def test_safe_writes(self):
         """Never the input mesh; a failed run leaves an existing output as it was."""
         size = os.path.getsize(self.cube)
