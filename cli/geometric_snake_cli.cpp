@@ -374,6 +374,17 @@ void HandleSoup(const Job &job, CMeshO &m)
                   "indices now refer to the merged mesh.", merged, vn, m.vn, m.fn));
 }
 
+/// What an output mesh keeps of the input's attributes (`mask`: what the file held), plus the
+/// vertex quality (the energy): every output mesh keeps everything the input had.
+int KeptAttributes(int mask)
+{
+    namespace io = vcg::tri::io;
+    const int keep = io::Mask::IOM_VERTCOLOR | io::Mask::IOM_FACECOLOR | io::Mask::IOM_VERTTEXCOORD |
+                     io::Mask::IOM_WEDGTEXCOORD | io::Mask::IOM_VERTRADIUS | io::Mask::IOM_FACEQUALITY |
+                     io::Mask::IOM_VERTNORMAL;
+    return (mask & keep) | io::Mask::IOM_VERTQUALITY;
+}
+
 json RunEnergy(Job &job, CMeshO &m, int mask, json r)
 {
     const ParamValues &v = *job.values;
@@ -384,10 +395,7 @@ json RunEnergy(Job &job, CMeshO &m, int mask, json r)
     HandleSoup(job, m);
     const auto st = FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType(type), steps, creaseAngle);
     if (colorize) UpdateColor<CMeshO>::PerVertexQualityRamp(m, 0.0f, 1.0f);
-    namespace io = vcg::tri::io;
-    const int keep = io::Mask::IOM_VERTCOLOR | io::Mask::IOM_FACECOLOR | io::Mask::IOM_VERTTEXCOORD |
-                     io::Mask::IOM_WEDGTEXCOORD | io::Mask::IOM_VERTRADIUS | io::Mask::IOM_FACEQUALITY;
-    SaveMeshPly(m, job.output, (mask & keep) | io::Mask::IOM_VERTQUALITY | (colorize ? io::Mask::IOM_VERTCOLOR : 0));
+    SaveMeshPly(m, job.output, KeptAttributes(mask) | (colorize ? vcg::tri::io::Mask::IOM_VERTCOLOR : 0));
     r["energy_type"] = SnakeParamDefs::EnergyChoices()[type].key;
     r["smoothing"] = steps;
     r["raw_min"] = st.rawMin;
@@ -524,10 +532,7 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
         std::vector<GeometricSnake<CMeshO> *> list{&snake};
         SnakeIO<CMeshO>::WriteCurves(job.output, list, Keep(job));
     }
-    if (!job.meshOut.empty()) {
-        namespace io = vcg::tri::io;
-        SaveMeshPly(m, job.meshOut, io::Mask::IOM_VERTQUALITY | (mask & io::Mask::IOM_VERTCOLOR));
-    }
+    if (!job.meshOut.empty()) SaveMeshPly(m, job.meshOut, KeptAttributes(mask));
 
     r["closed"] = closed;
     r["method"] = v.Def("Method").choices[int(p.method)].key;

@@ -164,6 +164,37 @@ class CliTests(mlhost.WorkDirTestCase):
         q = [v["quality"] for v in mlhost.read_ply(self.path("m.ply")).vertices]
         self.assertLess(min(q), 0.05)
 
+    def test_every_output_mesh_keeps_the_input_attributes(self):
+        """Colours, per-vertex and per-wedge texture coordinates and normals of the input survive
+        `energy -o` and `snake --mesh-out` alike (issue 36: --mesh-out dropped the texture coordinates)."""
+        v, f = self.cube_verts, self.cube_faces
+        src = self.path("colors_tex.ply")
+        with open(src, "w") as o:
+            o.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
+                    "property float nx\nproperty float ny\nproperty float nz\n"
+                    "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+                    "property float texture_u\nproperty float texture_v\nelement face %d\n"
+                    "property list uchar int vertex_indices\nproperty list uchar float texcoord\nend_header\n"
+                    % (len(v), len(f)))
+            for i, p in enumerate(v):
+                o.write("%r %r %r 0 0 1 %d 20 30 255 %r %r\n" % (p + (i % 256, p[0], p[1])))
+            for t in f:
+                o.write("3 %d %d %d 6 %s\n" % (t + (" ".join("%r %r" % (v[i][0], v[i][2]) for i in t),)))
+        a, b = self.cube_index((0.0, 0.0, 0.0)), self.cube_index((1.0, 0.0, 0.0))
+        self.ok(["energy", src, "-o", self.path("e.ply"), "--no-colorize"])
+        self.ok(["snake", src, "--seeds", "%d,%d" % (a, b), "-o", self.path("s.json"), "--mesh-out", self.path("m.ply")])
+        for out in ("e.ply", "m.ply"):
+            with self.subTest(output=out):
+                ply = mlhost.read_ply(self.path(out))
+                vk, fk = set(ply.vertices[0]), set(ply.faces[0])
+                for k in ("quality", "red", "texture_u", "texture_v", "nx"):
+                    self.assertIn(k, vk)
+                self.assertIn("texcoord", fk)
+                self.assertEqual(len(ply.vertices), len(v))
+                for i, row in enumerate(ply.vertices):
+                    self.assertAlmostEqual(row["texture_u"], v[i][0], places=5)
+                    self.assertEqual(row["red"], i % 256)
+
     def test_path_along_cube_edge(self):
         a, b = self.cube_index((0.0, 0.0, 0.0)), self.cube_index((1.0, 0.0, 0.0))
         out, err = self.ok(["path", self.cube, "--seeds", "%d, %d" % (a, b), "-o", self.path("p.ply"), "--json-log"])
