@@ -31,6 +31,7 @@
 
 #include <vcg_ext/input_file.h>
 #include <vcg_ext/safe_file_write.h>
+#include "mesh_header.h"
 #include "obj_faces.h"
 #include <vcg_ext/snake_error.h>
 
@@ -77,6 +78,7 @@ inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
     const char *fn = path.c_str();
     if (ext == "stl" && !HasNewlineOrBinaryStlSize(path, st.st_size)) // vcglib's ASCII reader loops forever on it
         throw SnakeError("Cannot read the mesh \"" + path + "\": not a readable STL file.");
+    MeshHeader::CheckCounts(path, ext, st.st_size);
     auto enable = [&m](int mk) { // MeshModel::Enable: the optional components the file fills
         if (mk & io::Mask::IOM_VERTTEXCOORD) m.vert.EnableTexCoord();
         if (mk & io::Mask::IOM_WEDGTEXCOORD) m.face.EnableWedgeTexCoord();
@@ -93,7 +95,7 @@ inline void LoadMesh(const std::string &path, CMeshO &m, int &mask)
         if (mask & io::Mask::IOM_WEDGCOLOR) mask |= io::Mask::IOM_FACECOLOR;
         enable(mask);
         const int r = io::ImporterPLY<CMeshO>::Open(m, fn, mask);
-        if (r != 0 && io::ImporterPLY<CMeshO>::ErrorCritical(r)) throw failed(io::ImporterPLY<CMeshO>::ErrorMsg(r));
+        if (r != 0 && io::ImporterPLY<CMeshO>::ErrorCritical(r)) throw failed(MeshHeader::PlyError(io::ImporterPLY<CMeshO>::ErrorMsg(r)).c_str());
     } else if (ext == "stl") {
         if (!io::ImporterSTL<CMeshO>::LoadMask(fn, mask)) throw failed("not a readable STL file");
         enable(mask);
@@ -148,6 +150,15 @@ inline void CheckWritable(const std::string &path, const std::vector<std::string
     SafeFileWrite::CheckTarget(path, keep);
 }
 
+/// A vcglib exporter's failure ("Output Stream Error") with the system's reason (errno: disk
+/// full, file too large...), which is what the user can act on.
+inline SnakeError WriteFailed(const std::string &path, const char *vcgMessage)
+{
+    const std::string why = errno != 0 ? std::string(std::strerror(errno)) : std::string(vcgMessage);
+    return SnakeError("Cannot write \"" + path + "\": " + why + " (" + vcgMessage +
+                      "); the existing file, if any, is unchanged.");
+}
+
 /// SafeFileWrite for vcglib's exporters, which write to a file name: `writer(tmp)` fills a
 /// temporary file in the target's folder (same extension, for writers that choose the format by
 /// it), which is flushed to disk and renamed over `path`: a failure leaves no partial file and
@@ -160,6 +171,7 @@ inline void AtomicWrite(const std::string &path, const std::function<void(const 
                             Extension(path);
     vcg::tri::TempFiles::Add(tmp);
     try {
+        errno = 0;
         writer(tmp);
         const int fd = ::open(tmp.c_str(), O_RDONLY);
         const bool synced = fd >= 0 && ::fsync(fd) == 0;
@@ -182,7 +194,7 @@ inline void SaveMeshPly(CMeshO &m, const std::string &path, int mask)
     AtomicWrite(path, [&](const std::string &tmp) {
         const int r = vcg::tri::io::ExporterPLY<CMeshO>::Save(m, tmp.c_str(), mask, true);
         if (r != 0)
-            throw SnakeError("Cannot write \"" + path + "\": " + vcg::tri::io::ExporterPLY<CMeshO>::ErrorMsg(r) + ".");
+            throw WriteFailed(path, vcg::tri::io::ExporterPLY<CMeshO>::ErrorMsg(r));
     });
 }
 
@@ -210,10 +222,10 @@ inline void SavePolylines(const std::vector<std::vector<vcg::Point3d>> &curves, 
         namespace io = vcg::tri::io;
         if (ext == "obj") {
             const int r = io::ExporterOBJ<CMeshO>::Save(pm, tmp.c_str(), io::Mask::IOM_EDGEINDEX);
-            if (r != 0) throw SnakeError("Cannot write \"" + path + "\": " + io::ExporterOBJ<CMeshO>::ErrorMsg(r) + ".");
+            if (r != 0) throw WriteFailed(path, io::ExporterOBJ<CMeshO>::ErrorMsg(r));
         } else {
             const int r = io::ExporterPLY<CMeshO>::Save(pm, tmp.c_str(), io::Mask::IOM_EDGEINDEX, false);
-            if (r != 0) throw SnakeError("Cannot write \"" + path + "\": " + io::ExporterPLY<CMeshO>::ErrorMsg(r) + ".");
+            if (r != 0) throw WriteFailed(path, io::ExporterPLY<CMeshO>::ErrorMsg(r));
         }
     });
 }

@@ -217,7 +217,7 @@ std::string MainHelp()
          "\nexit status: 0 success; 1 the run failed (bad mesh, seeds, parameters or files; in a batch: any "
          "case failed); 2 bad command line.\n"
          "Outputs are written to a temporary file (.NAME.gs-tmp-PID-...) and renamed into place: a failed,\n"
-         "interrupted (SIGINT, SIGTERM, SIGHUP), size-limited (SIGXFSZ) or timed-out run leaves no partial\n"
+         "interrupted (SIGINT, SIGTERM, SIGHUP), size-limited (ulimit -f) or timed-out run leaves no partial\n"
          "file, and a later write to the same output removes what a killed run left. The program never\n"
          "overwrites the input mesh, its Pick Points file, nor the edit tool's session files\n"
          "(MESH.snakes.json, its backup and recovered sessions).\n";
@@ -618,11 +618,12 @@ bool RunCaught(Job &job, json &result, std::string &error)
 }
 
 // ============================================================================ signals
-// A run stopped by SIGINT, SIGTERM, SIGHUP, SIGXFSZ (ulimit -f) or its --timeout (SIGALRM)
-// removes its temporary files (TempFiles) and says why, on stderr and with --json-log on stdout;
-// the messages are made before the run, so that the handler only calls write() and unlink().
+// A run stopped by SIGINT, SIGTERM, SIGHUP or its --timeout (SIGALRM) removes its temporary
+// files (TempFiles) and says why, on stderr and with --json-log on stdout; the messages are made
+// before the run, so that the handler only calls write() and unlink(). SIGXFSZ (ulimit -f) is
+// ignored: the write then fails with EFBIG ("File too large") and is reported as a write error.
 namespace stop {
-char errText[3][1024], jsonText[3][2048];
+char errText[2][1024], jsonText[2][2048];
 volatile sig_atomic_t silent = 0; // a batch case: its parent reports it
 
 void Write(int fd, const char *s)
@@ -638,12 +639,12 @@ void Write(int fd, const char *s)
 void Handler(int sig)
 {
     TempFiles::RemoveAll();
-    const int k = sig == SIGALRM ? 0 : sig == SIGXFSZ ? 1 : 2;
+    const int k = sig == SIGALRM ? 0 : 1;
     if (!silent) {
         Write(STDERR_FILENO, errText[k]);
         Write(STDOUT_FILENO, jsonText[k]);
     }
-    if (k == 2 || silent) { // as killed by the signal, for the caller (a batch's parent)
+    if (k == 1 || silent) { // as killed by the signal, for the caller (a batch's parent)
         ::signal(sig, SIG_DFL);
         sigset_t one;
         sigemptyset(&one);
@@ -657,11 +658,9 @@ void Handler(int sig)
 /// Installs the handler; `command`, `mesh` and `timeout` go into the messages.
 void Install(const std::string &command, const std::string &mesh, int timeout, bool jsonLog)
 {
-    const std::string why[3] = {
-        "stopped after --timeout " + std::to_string(timeout) + " s",
-        "stopped: a file reached the size limit (ulimit -f)",
-        "stopped by a signal (interrupt, terminate or hang-up)"};
-    for (int k = 0; k < 3; ++k) {
+    const std::string why[2] = {"stopped after --timeout " + std::to_string(timeout) + " s",
+                                "stopped by a signal (interrupt, terminate or hang-up)"};
+    for (int k = 0; k < 2; ++k) {
         const std::string e = why[k] + "; its temporary files are removed and no output is partly written.";
         std::snprintf(errText[k], sizeof errText[k], "%s: error: %s\n", kProgram, e.c_str());
         std::snprintf(jsonText[k], sizeof jsonText[k], "%s",
@@ -673,8 +672,9 @@ void Install(const std::string &command, const std::string &mesh, int timeout, b
     std::memset(&sa, 0, sizeof sa);
     sa.sa_handler = Handler;
     sigemptyset(&sa.sa_mask);
-    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGALRM}) sigaddset(&sa.sa_mask, s);
-    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGALRM}) ::sigaction(s, &sa, nullptr);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGALRM}) sigaddset(&sa.sa_mask, s);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGALRM}) ::sigaction(s, &sa, nullptr);
+    ::signal(SIGXFSZ, SIG_IGN);
 }
 } // namespace stop
 

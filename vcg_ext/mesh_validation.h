@@ -117,7 +117,9 @@ public:
         }
         if (bad > 0)
             throw SnakeError(std::to_string(bad) + " faces (the first is face " + std::to_string(first) +
-                             ") use the same vertex twice. Remove them first: Filters > Cleaning and Repairing > "
+                             ") use the same vertex twice. A snake walks from face to face across their edges, "
+                             "which such a face breaks (the feature energy and the seed path only skip it, so they "
+                             "accept the mesh). Remove them first: Filters > Cleaning and Repairing > "
                              "Remove Zero Area Faces (or Remove Duplicate Faces).");
     }
 

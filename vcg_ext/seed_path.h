@@ -102,6 +102,22 @@ public:
                              "Keep every k-th seed, or split the curve into several snakes.");
     }
 
+    /// The whole UTF-8 character at byte i of s (" " past the end), for messages.
+    static std::string Utf8Char(const std::string &s, size_t i)
+    {
+        if (i >= s.size()) return " ";
+        size_t j = i + 1;
+        while (j < s.size() && j < i + 4 && (static_cast<unsigned char>(s[j]) & 0xC0) == 0x80) ++j;
+        return s.substr(i, j - i);
+    }
+    /// The 1-based character (not byte) position of byte i of the UTF-8 text s.
+    static std::string CharPosition(const std::string &s, size_t i)
+    {
+        size_t k = 1;
+        for (size_t b = 0; b < i && b < s.size(); ++b) k += (static_cast<unsigned char>(s[b]) & 0xC0) != 0x80;
+        return std::to_string(k);
+    }
+
     static std::vector<int> CheckedSeeds(const MeshType &m, const std::vector<int> &seedList, bool closed)
     {
         CheckSeedCount(seedList.size(), "seed vertices");
@@ -230,7 +246,7 @@ public:
         MV::RequireSurface(m);
         const size_t minSeeds = closed ? 3 : 2;
         if (seeds.size() < minSeeds)
-            throw SnakeError(std::string("A ") + (closed ? "closed" : "open") + " snake needs at least " +
+            throw SnakeError(std::string(closed ? "A closed" : "An open") + " snake needs at least " +
                              std::to_string(minSeeds) + " seed points (got " + std::to_string(seeds.size()) + ").");
         for (size_t i = 0; i < seeds.size(); ++i) {
             const SurfacePoint &s = seeds[i];
@@ -258,8 +274,7 @@ public:
             if (text[i] == '-') throw junk("vertex indices cannot be negative");
             if (text[i] == '+') ++i;
             if (i >= n || !std::isdigit(static_cast<unsigned char>(text[i])))
-                throw junk(std::string("unexpected character '") + (i < n ? text[i] : ' ') + "' at position " +
-                           std::to_string(i + 1));
+                throw junk("unexpected character '" + Utf8Char(text, i) + "' at position " + CharPosition(text, i));
             long long v = 0;
             while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) {
                 v = v * 10 + (text[i] - '0');
@@ -273,7 +288,7 @@ public:
                 skipWs();
                 if (i < n && (text[i] == ',' || text[i] == ';')) throw junk("empty entry between separators");
             } else if (i < n && !std::isdigit(static_cast<unsigned char>(text[i])) && text[i] != '+' && text[i] != '-') {
-                throw junk(std::string("unexpected character '") + text[i] + "' at position " + std::to_string(i + 1));
+                throw junk("unexpected character '" + Utf8Char(text, i) + "' at position " + CharPosition(text, i));
             }
         }
         return out;

@@ -84,6 +84,10 @@ public:
     static std::vector<PickedPoint> ParsePickPoints(const std::string &xml)
     {
         if (xml.size() > MaxTextSize()) throw SnakeError("The Pick Points file is too large.");
+        // UTF-16/32 (a byte-order mark, or NUL bytes between ASCII characters): say so, not "root element is <"
+        if (xml.compare(0, 2, "\xFF\xFE") == 0 || xml.compare(0, 2, "\xFE\xFF") == 0 ||
+            xml.find('\0') < std::min<size_t>(xml.size(), 256))
+            throw PpJunk("it is UTF-16 or UTF-32 text; MeshLab writes Pick Points files in UTF-8 (save it as UTF-8)");
         std::vector<PickedPoint> out;
         bool sawRoot = false;
         size_t i = 0;
@@ -347,6 +351,10 @@ public:
             FaceType *f = boxDist <= maxD ? grid.GetClosest(fn, marker, q, searchMax, dist, closest) : nullptr;
             const std::string who = "Seed point " + std::to_string(i + 1) + " (" + Fmt(pts[i][0]) + " " +
                                     Fmt(pts[i][1]) + " " + Fmt(pts[i][2]) + ")";
+            if (f == nullptr && !std::isfinite(boxDist))
+                throw SnakeError(who + " is too far from the surface to measure (its distance overflows); the mesh's "
+                                 "bounding box diagonal is " + Fmt(r.bboxDiagonal) + ". Give points on or near the "
+                                 "mesh, in the mesh's own coordinates.");
             if (f == nullptr || !(double(dist) <= maxD))
                 throw SnakeError(who + " is " +
                                  (f == nullptr ? "more than " + Fmt(std::max(boxDist, 4 * maxD)) : Fmt(double(dist))) +

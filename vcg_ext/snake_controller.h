@@ -192,7 +192,7 @@ public:
     {
         const int need = closed ? 3 : 2;
         if (seedList.size() < need)
-            throw SnakeError(std::string("Geometric snake: a ") + (closed ? "closed" : "open") + " snake needs at least " +
+            throw SnakeError(std::string("Geometric snake: ") + (closed ? "a closed" : "an open") + " snake needs at least " +
                              std::to_string(need) + " seeds (" + std::to_string(seedList.size()) + " placed).");
         EnsureSurface();
         checkMesh();

@@ -10,6 +10,7 @@
 // value). Defaults of engine parameters are read from SnakeParams, so they stay in one place.
 
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <map>
 #include <sstream>
@@ -204,6 +205,9 @@ public:
             char *e = nullptr;
             const double x = std::strtod(b, &e);
             if (v.empty() || *e != '\0') throw bad("a number");
+            if (x != 0 && std::fabs(x) < double(std::numeric_limits<float>::min())) // would read as 0
+                throw SnakeError(who + " " + v + " is too close to 0: parameters are kept in single precision, as "
+                                 "MeshLab keeps them (0, or at least 1.2e-38 in magnitude).");
             SetNumber(d.name, x);
             return;
         }
