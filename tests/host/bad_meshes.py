@@ -153,7 +153,47 @@ def cases():
     v, f = cube(4)
     v += [(5, 5, 5)] * 3
     out["unreferenced_vertices"] = (v, f, [len(v) - 1, 0, 5], "a cube plus isolated vertices, seed on one")
+
+    v, f = cube(4)
+    v = [(x + 1e7, y + 1e7, z + 1e7) for x, y, z in v]
+    out["far_from_origin"] = (v, f, cube_seeds([(x - 1e7, y - 1e7, z - 1e7) for x, y, z in v]),
+                              "a unit cube at 1e7: its vertices merge in float")
+
+    # a 33-degree V-ridge on a 300 x 300 grid: one line of vertices, 0.3 % of the mesh
+    t = math.tan(math.radians(16.5))
+    v, f = grid(300, 300, lambda u, w: (u, w, t * (0.5 - abs(u - 0.5))))
+    out["thin_ridge_300"] = (v, f, [150, 150 + 301 * 150, 150 + 301 * 300], "a 33-degree ridge on a 300 x 300 grid")
     return out
+
+
+TET_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+PLY_HEAD = ("ply\nformat ascii 1.0\nelement vertex %s\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face %s\nproperty list uchar int vertex_indices\nend_header\n")
+
+# Files MeshLab 2020.09's own importers (vcglib) abort on while opening them, before any plugin
+# runs: the host test records it, the program must refuse them cleanly (issue 36).
+HOST_IMPORTER_ABORTS = {"obj_vertex_one", "obj_far_index", "ply_negative_count", "ply_count_past_int64",
+                        "off_negative_counts"}
+
+
+def raw_cases():
+    """name -> (extension, file text, seeds, what it is): files as hostile users write them (issue 36)."""
+    cube_v, cube_f = cube(4)
+    cube_obj = "".join("v %r %r %r\n" % p for p in cube_v) + "".join("f %d %d %d\n" % (a + 1, b + 1, c + 1)
+                                                                     for a, b, c in cube_f)
+    return {
+        "obj_vertex_one": ("obj", TET_OBJ + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", [0, 1, 2],
+                           "a tetrahedron OBJ: three faces use vertex 1 (vcglib drops them)"),
+        "obj_cube": ("obj", cube_obj, cube_seeds(cube_v), "a cube OBJ (vcglib drops the faces at vertex 1)"),
+        "obj_far_index": ("obj", TET_OBJ + "f 1 3 2\nf 1 2 100000\nf 2 3 4\n", [0, 1, 2],
+                          "an OBJ face with index 100000 (vcglib read past its vertices)"),
+        "ply_negative_count": ("ply", PLY_HEAD % ("-5", "1") + "3 0 1 2\n", [0, 1, 2], "element vertex -5"),
+        "ply_count_past_int64": ("ply", PLY_HEAD % ("3", "99999999999999999999999") + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                                 [0, 1, 2], "a face count past int64"),
+        "ply_truncated": ("ply", PLY_HEAD % ("30", "1") + "0 0 0\n1 0 0\n", [0, 1, 2], "30 vertices announced, 2 given"),
+        "off_negative_counts": ("off", "OFF\n-4 -2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", [0, 1, 2],
+                                "negative OFF counts"),
+    }
 
 
 def write_all(outdir):
@@ -162,6 +202,11 @@ def write_all(outdir):
     for name, (v, f, seeds, what) in cases().items():
         path = os.path.join(outdir, name + ".ply")
         mlhost.write_ply(path, v, f, binary=True)
+        made[name] = (path, seeds, what)
+    for name, (ext, text, seeds, what) in raw_cases().items():
+        path = os.path.join(outdir, name + "." + ext)
+        with open(path, "w") as f:
+            f.write(text)
         made[name] = (path, seeds, what)
     return made
 

@@ -5,7 +5,13 @@ the real meshlabserver. Each run must end in
     it, finite curve files (.json / .obj / .ply), finite coordinates in every saved mesh; or
   - a clear error: exit status 255 with "Geometric snake error: <message>", or MeshLab itself
     refusing to open the file;
-never a crash (signal, abort), a hang (RUN_TIMEOUT) or a NaN in an output file.
+never a crash (signal, abort), a hang (RUN_TIMEOUT) or a NaN in an output file. Files MeshLab's
+own importers abort on while opening them (bad_meshes.HOST_IMPORTER_ABORTS: outside the plugin)
+are recorded as such.
+
+The same corpus goes through the geometric-snake program (GS_CLI; energy, path, snake with
+--mesh-out, each with --timeout): exit status 0 with finite outputs, or 1 with a message, never
+a signal, a hang, an internal error or a temporary file left behind.
 
 CTest runs it as host_bad_meshes inside xvfb-run (so meshlabserver uses that display):
     xvfb-run -a python3 tests/host/test_bad_meshes.py WORKDIR [case ...]
@@ -146,8 +152,12 @@ def one_run(work, name, path, what, rid, filters, outputs, mesh_out):
     with open(mlx + ".log", "w") as f:
         f.write(out)
     problems = []
+    importer_abort = (rc is not None and rc < 0 and name in bad_meshes.HOST_IMPORTER_ABORTS
+                      and "loaded has" not in out and "Geometric snake" not in out)
     if rc is None:
         problems.append("HANG: no answer in %d s" % RUN_TIMEOUT)
+    elif importer_abort:
+        pass
     elif rc < 0:
         problems.append("CRASH: killed by signal %d" % -rc)
     else:
@@ -158,7 +168,9 @@ def one_run(work, name, path, what, rid, filters, outputs, mesh_out):
             problems.append("unclear message: " + next(l for l in out.splitlines()
                                                          if re.search(r"(?i)internal error|terminate called|Assertion|std::", l)))
     verdict = "?"
-    if not problems:
+    if importer_abort:
+        verdict = "MeshLab's own importer aborted while opening the file (outside the plugin)"
+    elif not problems:
         if rc == 0:
             verdict = "ok"
             if "Geometric snake error" in out:
@@ -182,6 +194,73 @@ def one_run(work, name, path, what, rid, filters, outputs, mesh_out):
     return name, rid, rc, secs, verdict, problems, mlx + ".log"
 
 
+# ------------------------------------------------------------------------- the program
+CLI = os.environ.get("GS_CLI", shutil.which("geometric-snake") or "")
+
+
+def cli_runs(work, name, seeds):
+    s = ",".join(str(i) for i in seeds)
+    d = os.path.join(work, name, "cli")
+    return [("cli_energy", ["energy", "-o", os.path.join(d, "energy.ply")], [os.path.join(d, "energy.ply")]),
+            ("cli_path", ["path", "--seeds", s, "-o", os.path.join(d, "path.ply")], [os.path.join(d, "path.ply")]),
+            ("cli_snake", ["snake", "--seeds", s, "--max-operations", "30", "-o", os.path.join(d, "snake.json"),
+                           "--mesh-out", os.path.join(d, "mesh.ply")],
+             [os.path.join(d, "snake.json"), os.path.join(d, "mesh.ply")])]
+
+
+def one_cli_run(work, name, path, rid, args, outputs):
+    d = os.path.join(work, name, "cli")
+    os.makedirs(d, exist_ok=True)
+    cmd = [CLI, args[0], path] + args[1:] + ["--json-log", "--timeout", str(RUN_TIMEOUT // 2)]
+    t0 = time.time()
+    problems = []
+    try:
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, stdin=subprocess.DEVNULL,
+                           timeout=RUN_TIMEOUT)
+        rc, out, err = p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+    except subprocess.TimeoutExpired:
+        rc, out, err = None, "", ""
+    secs = time.time() - t0
+    with open(os.path.join(d, rid + ".log"), "w") as f:
+        f.write(" ".join(cmd) + "\n" + out + err)
+    verdict = "?"
+    if rc is None:
+        problems.append("HANG: no answer in %d s" % RUN_TIMEOUT)
+    elif rc < 0:
+        problems.append("CRASH: killed by signal %d" % -rc)
+    elif rc == 0:
+        verdict = "ok"
+        for o in outputs:
+            if not os.path.exists(o):
+                problems.append("success but no %s written" % os.path.basename(o))
+            else:
+                problems += check_output_file(o, name in ("nan_coords", "inf_coords"))
+        log = json.loads(out.splitlines()[-1])
+        if name == "obj_vertex_one" and log.get("faces") != 4:
+            problems.append("the tetrahedron OBJ loaded with %r faces, not 4" % log.get("faces"))
+        if name == "thin_ridge_300" and rid == "cli_energy":
+            ply = mlhost.read_ply(outputs[0])
+            ridge = [v["quality"] for v in ply.vertices if abs(v["x"] - 0.5) < 1e-4]
+            flat = [v["quality"] for v in ply.vertices if abs(v["x"] - 0.5) > 0.1]
+            if not (max(ridge) < 0.05 and min(flat) > 0.95):
+                problems.append("the thin ridge is not found: ridge up to %.3f, flats down to %.3f"
+                                % (max(ridge), min(flat)))
+    elif rc == 1:
+        m = re.search(r"geometric-snake: error: (.*)", err)
+        if not m or len(m.group(1)) < 15 or re.search(r"(?i)internal error|std::|Unespected", err):
+            problems.append("failed (exit 1) without a clear message: %r" % err[:200])
+        else:
+            verdict = "error: " + m.group(1)[:110]
+        if name == "thin_ridge_300" or name == "obj_vertex_one" or name == "obj_cube":
+            problems.append("a mesh the program must read was refused: " + err[:200])
+    else:
+        problems.append("exit status %d: %r" % (rc, err[:200]))
+    left = [f for f in os.listdir(d) if ".gs-tmp-" in f]
+    if left:
+        problems.append("temporary files left: %s" % left)
+    return name, rid, rc, secs, verdict, problems, os.path.join(d, rid + ".log")
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
@@ -198,17 +277,24 @@ def main():
         os.makedirs(os.path.join(work, name), exist_ok=True)
         for rid, filters, outputs, mesh_out in runs_for(work, name, seeds):
             jobs.append((work, name, path, what, rid, filters, outputs, mesh_out))
+        if CLI:
+            for rid, args, outputs in cli_runs(work, name, seeds):
+                jobs.append((work, name, path, rid, args, outputs))
     t0 = time.time()
     failures = []
     with ThreadPoolExecutor(max_workers=WORKERS) as pool:
-        for name, rid, rc, secs, verdict, problems, log in pool.map(lambda j: one_run(*j), jobs):
+        for name, rid, rc, secs, verdict, problems, log in pool.map(
+                lambda j: one_run(*j) if len(j) == 8 else one_cli_run(*j), jobs):
             status = "FAIL" if problems else "pass"
             print("%-4s %-22s %-24s rc=%-4s %5.1fs  %s" % (status, name, rid, rc, secs, verdict), flush=True)
             for p in problems:
                 print("       " + p)
                 failures.append((name, rid, p, log))
-    print("\n%d runs (%d meshes x %d filter scripts) in %.0f s" % (
-        len(jobs), len({j[1] for j in jobs}), len(jobs) // max(1, len({j[1] for j in jobs})), time.time() - t0))
+    print("\n%d runs (%d meshes, %d filter scripts and %d program commands each) in %.0f s" % (
+        len(jobs), len({j[1] for j in jobs}), len(runs_for(work, "x", [0])), len(cli_runs(work, "x", [0])) if CLI else 0,
+        time.time() - t0))
+    if not CLI:
+        print("warning: geometric-snake not found (GS_CLI): the program's runs were skipped")
     if failures:
         print("\n%d FAILED:" % len(failures))
         for name, rid, p, log in failures:
