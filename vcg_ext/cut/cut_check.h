@@ -42,8 +42,9 @@ public:
         return false;
     }
 
+    /// After the embedding and the flood of the chosen side `chosen` (when the curves separate).
     static void Embedded(const CutWorkMesh &w, const std::vector<EmbeddedCurve> &curves, const CutSides::Result &s,
-                         double totalArea)
+                         unsigned char chosen, double totalArea)
     {
         for (const auto &c : curves) {
             const int n = int(c.chain.size()), ne = c.closed ? n : n - 1;
@@ -52,10 +53,14 @@ public:
                 if (k < 1 || k > 2) Fail("a curve edge is not an edge of one or two faces");
             }
         }
-        double sum = 0;
+        double sum = 0, sumChosen = 0;
         const double mean = totalArea / std::max(1, w.fn0);
         for (size_t f = 0; f < w.face.size(); ++f)
-            if (w.face[f].parent >= 0) sum += w.Area(int(f));
+            if (w.face[f].parent >= 0) {
+                const double a = w.Area(int(f));
+                sum += a;
+                if (s.label[f] == chosen) sumChosen += a;
+            }
         for (const auto &pk : w.SplitParents()) {
             const std::vector<int> faces = w.Children(pk.first);
             vcg::Point3d np(0, 0, 0); // the user's face's normal: its pieces' normals add up to it
@@ -67,14 +72,15 @@ public:
             }
         }
         if (!(std::abs(sum - totalArea) <= AreaTolerance() * totalArea)) Fail("the area changed");
-        if (!s.label.empty() && s.separated) {
-            for (int f : s.leftSeeds)
-                if (s.label[f] != CutSides::Left) Fail("a face left of the curve is not on its left side");
-            for (int f : s.rightSeeds)
-                if (s.label[f] != CutSides::Right) Fail("a face right of the curve is not on its right side");
-            if (!(std::abs(s.areaLeft + s.areaRight + s.areaOther - totalArea) <= AreaTolerance() * totalArea))
-                Fail("the sides' areas do not add up to the mesh's");
-        }
+        if (!s.separated) return;
+        const bool left = chosen == CutSides::Left;
+        if (!s.complete[left ? 0 : 1]) Fail("the chosen side was not flooded to its end");
+        for (int f : left ? s.leftSeeds : s.rightSeeds)
+            if (s.label[f] != chosen) Fail("a face beside the curve is not on its side");
+        for (int f : left ? s.rightSeeds : s.leftSeeds)
+            if (s.label[f] == chosen) Fail("a face beside the curve is on both sides");
+        if (!(std::abs(sumChosen - (left ? s.areaLeft : s.areaRight)) <= AreaTolerance() * totalArea))
+            Fail("the chosen side's area is not the flood's");
     }
 
     static void AfterOpen(const CutWorkMesh &w, const std::vector<EmbeddedCurve> &curves, double totalArea)
@@ -94,8 +100,13 @@ public:
     template <class MeshType>
     static void Parts(MeshType &inside, MeshType &outside, double areaIn, double areaOut, double total)
     {
-        const double ai = vcg::tri::Stat<MeshType>::ComputeMeshArea(inside);
-        const double ao = vcg::tri::Stat<MeshType>::ComputeMeshArea(outside);
+        auto area = [](const MeshType &m) { // in double: a float sum of a million faces drifts
+            double a = 0;
+            for (const auto &f : m.face)
+                if (!f.IsD()) a += double(vcg::DoubleArea(f)) / 2;
+            return a;
+        };
+        const double ai = area(inside), ao = area(outside);
         const double tol = 1e-6 * total; // the parts are in the mesh's precision (float)
         if (!(std::abs(ai - areaIn) <= tol && std::abs(ao - areaOut) <= tol))
             Fail("the parts' areas are not the sides'");

@@ -28,9 +28,14 @@ public:
     {
         std::vector<unsigned char> label; ///< per face of the work mesh
         std::vector<int> leftSeeds, rightSeeds;
-        double areaLeft = 0, areaRight = 0, areaOther = 0;
+        double areaLeft = 0, areaRight = 0; ///< flooded so far (final once the side is complete)
         int facesLeft = 0, facesRight = 0;
         bool separated = true;
+        bool complete[2] = {false, false}; ///< left, right flooded to their end
+        std::vector<int> stack[2];
+        std::vector<char> onCurve;
+        const std::unordered_set<long long> *curveEdges = nullptr;
+        double totalArea = 0;
         /// +1 when the first curve runs counter-clockwise seen from the front of its left side
         /// (its vector area agrees with the normals along it), as GeometricSnake::orientation
         /// decides the Balloon's outside: then its inside is on its left.
@@ -91,29 +96,44 @@ public:
         return count == int(fs.size());
     }
 
-    /// Floods both sides; `curveEdges` holds the curves' edges (CurveEmbedding::CurveEdges).
+    /// Floods the two sides in turn, the one of less area so far first, until one is complete:
+    /// that is the smaller side (up to one face's area), found in time linear in its size.
+    /// `curveEdges` holds the curves' edges (CurveEmbedding::CurveEdges). The other side is
+    /// complete only after Complete().
     static Result Compute(const CutWorkMesh &w, const std::vector<EmbeddedCurve> &curves,
-                          const std::unordered_set<long long> &curveEdges)
+                          const std::unordered_set<long long> &curveEdges, double totalArea)
     {
         Result r;
         Seeds(w, curves, r);
         r.label.assign(w.face.size(), None);
-        std::vector<char> onCurve(w.pos.size(), 0);
+        r.onCurve.assign(w.pos.size(), 0);
         for (const auto &c : curves)
-            for (int v : c.chain) onCurve[v] = 1;
-        flood(w, curveEdges, onCurve, r.leftSeeds, Left, r);
-        for (int f : r.rightSeeds)
-            if (r.label[f] == Left) r.separated = false;
-        if (r.separated) flood(w, curveEdges, onCurve, r.rightSeeds, Right, r);
-        for (size_t f = 0; f < w.face.size(); ++f) {
-            if (w.face[f].parent < 0) continue;
-            const double a = w.Area(int(f));
-            if (r.label[f] == Left) { r.areaLeft += a; ++r.facesLeft; }
-            else if (r.label[f] == Right) { r.areaRight += a; ++r.facesRight; }
-            else r.areaOther += a;
-        }
+            for (int v : c.chain) r.onCurve[v] = 1;
+        r.curveEdges = &curveEdges;
+        r.totalArea = totalArea;
+        for (int side = 0; side < 2; ++side)
+            for (int f : side == 0 ? r.leftSeeds : r.rightSeeds) {
+                const unsigned char lab = side == 0 ? Left : Right;
+                if (r.label[f] == lab) continue;
+                if (r.label[f] != None) r.separated = false;
+                r.label[f] = lab;
+                r.stack[side].push_back(f);
+                (side == 0 ? r.areaLeft : r.areaRight) += w.Area(f);
+                ++(side == 0 ? r.facesLeft : r.facesRight);
+            }
+        while (r.separated && !r.stack[0].empty() && !r.stack[1].empty())
+            expand(w, r, r.areaLeft <= r.areaRight ? 0 : 1);
+        if (r.separated) r.complete[r.stack[0].empty() ? 0 : 1] = true;
         r.orientation = Orientation(w, curves.empty() ? EmbeddedCurve() : curves[0], r);
         return r;
+    }
+
+    /// Floods side `lab` (Left or Right) to its end.
+    static void Complete(const CutWorkMesh &w, Result &r, unsigned char lab)
+    {
+        const int side = lab == Left ? 0 : 1;
+        while (r.separated && !r.stack[side].empty()) expand(w, r, side);
+        r.complete[side] = r.separated;
     }
 
     /// The first curve's vector area against the normals of the faces along it (see Result).
@@ -131,29 +151,26 @@ public:
     }
 
 private:
-    static void flood(const CutWorkMesh &w, const std::unordered_set<long long> &curveEdges,
-                      const std::vector<char> &onCurve, const std::vector<int> &seeds, Label lab, Result &r)
+    /// One face of side `side` off its stack: its neighbours across non-curve edges join it.
+    static void expand(const CutWorkMesh &w, Result &r, int side)
     {
-        std::vector<int> stack;
-        for (int f : seeds)
-            if (r.label[f] == None) {
-                r.label[f] = lab;
-                stack.push_back(f);
-            }
-        while (!stack.empty()) {
-            const int f = stack.back();
-            stack.pop_back();
-            for (int k = 0; k < 3; ++k) {
-                const int a = w.face[f].v[k], b = w.face[f].v[(k + 1) % 3];
-                if (onCurve[a] && onCurve[b] && curveEdges.count(Key(a, b))) continue;
-                w.ForFaces(a, [&](int g) {
-                    if (g != f && r.label[g] != lab && w.Has(g, b)) {
-                        if (r.label[g] != None) r.separated = false;
-                        r.label[g] = lab;
-                        stack.push_back(g);
-                    }
-                });
-            }
+        const unsigned char lab = side == 0 ? Left : Right;
+        const int f = r.stack[side].back();
+        r.stack[side].pop_back();
+        for (int k = 0; k < 3; ++k) {
+            const int a = w.face[f].v[k], b = w.face[f].v[(k + 1) % 3];
+            if (r.onCurve[a] && r.onCurve[b] && r.curveEdges->count(Key(a, b))) continue;
+            w.ForFaces(a, [&](int g) {
+                if (g == f || r.label[g] == lab || !w.Has(g, b)) return;
+                if (r.label[g] != None) {
+                    r.separated = false;
+                    return;
+                }
+                r.label[g] = lab;
+                r.stack[side].push_back(g);
+                (side == 0 ? r.areaLeft : r.areaRight) += w.Area(g);
+                ++(side == 0 ? r.facesLeft : r.facesRight);
+            });
         }
     }
 };

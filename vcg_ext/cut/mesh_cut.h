@@ -22,6 +22,7 @@
 #include <vcg_ext/cut/cut_sides.h>
 #include <vcg_ext/cut/cut_work_mesh.h>
 #include <vcg_ext/snake_error.h>
+#include <unordered_set>
 
 namespace vcg {
 namespace tri {
@@ -169,26 +170,27 @@ private:
                              std::string(p.mode == CutMode::Split ? "split into" : "select") +
                              " (only \"cut open\" makes a slit). Extend it to the mesh's boundary or close it. "
                              "The mesh was not changed.");
-        wk.sides = CutSides::Compute(wk.w, wk.curves, emb.CurveEdges());
+        wk.sides = CutSides::Compute(wk.w, wk.curves, wk.curveEdges, wk.totalArea);
         if (needSides && !wk.sides.separated)
             throw SnakeError(std::string("Cut: the curve does not separate the surface into two sides (") +
                              (open ? "its sides join around it" : "a loop around a handle or a tube, such as a "
                                                                   "torus's meridian") +
                              "). The mesh was not changed.");
-        const CutSides::Result &s = wk.sides;
+        CutSides::Result &s = wk.sides;
+        const bool smallerIsLeft = s.complete[0];
         bool left;
         switch (p.side) {
-        case CutSide::Smaller: left = s.areaLeft <= s.areaRight; break;
-        case CutSide::Larger: left = s.areaLeft > s.areaRight; break;
+        case CutSide::Smaller: left = smallerIsLeft; break;
+        case CutSide::Larger: left = !smallerIsLeft; break;
         case CutSide::Inside: left = s.orientation > 0 || open; break;
         default: left = !(s.orientation > 0 || open); break;
         }
         wk.chosen = left ? CutSides::Left : CutSides::Right;
         wk.r.chosenLeft = left;
+        if (s.separated) CutSides::Complete(wk.w, s, wk.chosen);
         wk.r.msSides = ms(t0);
         t0 = clock::now();
-        if (needSides) CutCheck::Embedded(wk.w, wk.curves, wk.sides, wk.totalArea);
-        else CutCheck::Embedded(wk.w, wk.curves, CutSides::Result(), wk.totalArea);
+        CutCheck::Embedded(wk.w, wk.curves, s, wk.chosen, wk.totalArea);
         wk.r.msCheck = ms(t0);
         wk.r.addedVertices = int(wk.w.pos.size()) - wk.w.vn0;
         wk.r.addedFaces = int(wk.w.face.size()) - wk.w.fn0;
