@@ -426,10 +426,11 @@ public:
     {
         static const std::vector<ParamDef> d = {
             D::MakeText("CurveFile", "curve", "Curve file", "",
-                "A snake curve file (.json, as the edit tool or <code>geometric-snake snake</code> writes it) "
-                "made on this mesh."),
-            D::MakeInt("SnakeIndex", "snake", "Snake", 0, 0, 100000,
-                "Which snake of a file holding several (0-based)."),
+                "A snake curve file (.json, as the edit tool, <i>Export Geometric Snake Curves</i> or "
+                "<code>geometric-snake snake</code> write it) made on this mesh. In MeshLab, empty: the snakes "
+                "kept on the mesh, else the edit tool's session file next to it."),
+            D::MakeInt("SnakeIndex", "snake", "Snake", -1, -1, 100000,
+                "Which snake of a session or file holding several (0-based); -1: the selected one."),
             D::MakeEnum("Mode", "mode", "Mode", 0,
                 {{"select", "Select"}, {"select-only", "Select only (mesh unchanged)"}, {"split", "Split in two"},
                  {"cut-open", "Cut open"}},

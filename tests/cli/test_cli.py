@@ -487,31 +487,8 @@ class CliTests(mlhost.WorkDirTestCase):
 
 
     # ------------------------------------------------------------------ cut (issue 34)
-    def write_plate_and_square(self, n=10):
-        """A flat n x n plate (OFF) and a closed snake file around [2.5, 7.5]^2 made on it."""
-        mesh = os.path.join(self.work, "plate.off")
-        with open(mesh, "w") as f:
-            f.write("OFF\n%d %d 0\n" % ((n + 1) ** 2, 2 * n * n))
-            for j in range(n + 1):
-                for i in range(n + 1):
-                    f.write("%d %d 0\n" % (i, j))
-            for j in range(n):
-                for i in range(n):
-                    a = j * (n + 1) + i
-                    f.write("3 %d %d %d\n3 %d %d %d\n" % (a, a + 1, a + n + 2, a, a + n + 2, a + n + 1))
-
-        def loc(x, y):
-            i, j = int(x), int(y)
-            fx, fy = x - i, y - j
-            if fx >= fy:
-                return {"face": 2 * (j * n + i), "bary": [1 - fx, fx - fy, fy], "position": [x, y, 0]}
-            return {"face": 2 * (j * n + i) + 1, "bary": [1 - fy, fx, fy - fx], "position": [x, y, 0]}
-
-        curve = {"closed": True, "samples": [loc(2.5, 2.5), loc(7.5, 2.5), loc(7.5, 7.5), loc(2.5, 7.5)]}
-        path = os.path.join(self.work, "square.json")
-        with open(path, "w") as f:
-            json.dump(curve, f)
-        return mesh, path, curve
+    def write_plate_and_square(self):
+        return mlhost.plate_and_square(self.work)
 
     def test_cut_selects_the_inside_and_splits(self):
         mesh, curve, _ = self.write_plate_and_square()
@@ -523,7 +500,7 @@ class CliTests(mlhost.WorkDirTestCase):
         self.assertGreater(r["added_vertices"], 0)
         with open(out, "rb") as f:
             header = f.read(2000).split(b"end_header")[0].decode("ascii", "replace")
-        self.assertRegex(header, r"element face %d" % (200 + r["added_faces"]))
+        self.assertRegex(header, r"element face %d" % (200 + r["added_faces"]))  # plate.ply's 200 faces and the split ones
         self.assertIn("property float quality", header.split("element face")[1])
         log, _ = self.ok(["cut", mesh, "--curve", curve, "--split", "-o", out, "--json-log"])
         r = json.loads(log)

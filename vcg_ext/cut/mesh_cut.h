@@ -98,6 +98,8 @@ public:
     static Result Split(MeshType &m, const std::vector<CutCurve> &curves, const Param &p, MeshType &inside,
                         MeshType &outside)
     {
+        if (m.vn != int(m.vert.size()) || m.fn != int(m.face.size()))
+            throw SnakeError("Cut: the mesh has deleted vertices or faces; compact it first. The mesh was not changed.");
         Work wk = prepare(m, curves, p);
         auto t0 = clock::now();
         MeshType cut;
