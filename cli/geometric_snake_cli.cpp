@@ -608,7 +608,9 @@ json RunCut(Job &job, CMeshO &m, int mask, json r)
         res = MeshCut<CMeshO>::Apply(m, {curve}, p);
         m.face.EnableQuality();
         for (size_t f = 0; f < m.face.size(); ++f) m.face[f].Q() = res.faceSide[f];
-        SaveMeshPly(m, job.output, (mask & keep) | io::Mask::IOM_FACEQUALITY);
+        // the side in the face quality and the selection in the flags (MeshLab shows it on load)
+        SaveMeshPly(m, job.output, (mask & keep) | io::Mask::IOM_FACEQUALITY | io::Mask::IOM_FACEFLAGS |
+                                       io::Mask::IOM_VERTFLAGS);
     }
     r["mode"] = v.Def("Mode").choices[size_t(split ? int(CutMode::Split) : mode)].key;
     r["side"] = v.Def("Side").choices[size_t(v.Enum("Side"))].key;
