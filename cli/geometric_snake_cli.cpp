@@ -5,6 +5,7 @@
 //   geometric-snake energy MESH [--type normal|curvature|quadric] [--smoothing K] -o OUT.ply
 //   geometric-snake snake MESH --seeds "i,j,k" [--closed] [--alpha A] ... -o OUT.json|.obj|.ply
 //   geometric-snake path MESH --seeds "i,j,k" [--closed] [--cost length|feature] -o OUT.ply
+//   geometric-snake cut MESH --curve CURVE.json [--mode M] [--side S] [--split] -o OUT.ply
 //   geometric-snake --batch CASES.jsonl [--jobs N]
 //
 // Each operation repeats the steps of its MeshLab filter (filter_geometric_snake.cpp) on a mesh
@@ -35,6 +36,8 @@
 
 #include <vcg/complex/algorithms/stat.h>
 #include <vcg/complex/algorithms/update/color.h>
+#include <vcg_ext/cut/cut_curve_io.h>
+#include <vcg_ext/cut/mesh_cut.h>
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/seed_path.h>
@@ -86,6 +89,11 @@ const std::vector<Command> &Commands()
          "Joins the seeds (vertex indices, 3D points or a Pick Points file) by shortest paths along mesh edges "
          "(the snake's initial curve) and writes the path as vertices and edges (filter \"Geometric Snake Seed "
          "Path\")."},
+        {"cut", &SnakeParamDefs::Cut(), {"ply"}, true,
+         "Cuts the mesh along a snake (a curve JSON file made on this mesh): embeds the curve exactly and writes "
+         "the mesh with each face's side in its quality (1 inside, 0 outside), selected; --split writes "
+         "OUT_inside.ply and OUT_outside.ply instead; --mode cut-open makes the curve's edges boundary edges "
+         "(filter \"Cut Mesh along Geometric Snake\")."},
     };
     return c;
 }
@@ -258,6 +266,8 @@ std::vector<ProtectedFile> Keep(const Job &job)
     std::vector<ProtectedFile> keep = SnakeSidecar::ProtectedFiles(job.mesh);
     if (const ParamDef *d = job.values->FindOption("pp"))
         if (!job.values->Text(d->name).empty()) keep.push_back({job.values->Text(d->name), "the seed file"});
+    if (const ParamDef *d = job.values->FindOption("curve"))
+        if (!job.values->Text(d->name).empty()) keep.push_back({job.values->Text(d->name), "the curve file"});
     return keep;
 }
 
@@ -562,6 +572,82 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     return r;
 }
 
+/// OUT.ply -> OUT_inside.ply (the parts of `cut --split`).
+std::string PartName(const std::string &out, const std::string &part)
+{
+    const size_t dot = out.find_last_of('.'), slash = out.find_last_of('/');
+    const std::string stem = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? out : out.substr(0, dot);
+    return stem + "_" + part + ".ply";
+}
+
+json RunCut(Job &job, CMeshO &m, int mask, json r)
+{
+    const ParamValues &v = *job.values;
+    const std::string curveFile = v.Text("CurveFile");
+    if (curveFile.find_first_not_of(" \t") == std::string::npos)
+        throw SnakeError("No curve given: give --curve CURVE.json (a snake file made on this mesh).");
+    const int mode = v.Enum("Mode");
+    const bool split = v.Bool("Split") || mode == int(CutMode::Split);
+    const std::string in = PartName(job.output, "inside"), out = PartName(job.output, "outside");
+    if (split) {
+        CheckWritable(in, {"ply"}, "the inside part", Keep(job));
+        CheckWritable(out, {"ply"}, "the outside part", Keep(job));
+    }
+    MeshValidation<CMeshO>::RequireSurface(m);
+    MeshValidation<CMeshO>::RequireAdjacencySafe(m);
+    m.face.EnableFFAdjacency();
+    m.vert.EnableVFAdjacency();
+    m.face.EnableVFAdjacency();
+    UpdateTopology<CMeshO>::FaceFace(m);
+    UpdateTopology<CMeshO>::VertexFace(m);
+    const auto t0 = Clock::now();
+    const CutCurve curve = CutCurveIO<CMeshO>::FromSnakeFile(m, curveFile, v.Int("SnakeIndex"));
+    MeshCut<CMeshO>::Param p;
+    p.side = CutSide(v.Enum("Side"));
+    p.mode = split ? CutMode::Split : CutMode(mode);
+    m.face.DisableFFAdjacency(); // the cut adds faces; adjacency is not written
+    m.vert.DisableVFAdjacency();
+    m.face.DisableVFAdjacency();
+    namespace io = vcg::tri::io;
+    const int keep = io::Mask::IOM_VERTCOLOR | io::Mask::IOM_FACECOLOR | io::Mask::IOM_VERTTEXCOORD |
+                     io::Mask::IOM_WEDGTEXCOORD | io::Mask::IOM_VERTQUALITY | io::Mask::IOM_VERTNORMAL;
+    MeshCut<CMeshO>::Result res;
+    if (split) {
+        CMeshO inside, outside;
+        res = MeshCut<CMeshO>::Split(m, {curve}, p, inside, outside);
+        SaveMeshPly(inside, in, mask & keep);
+        SaveMeshPly(outside, out, mask & keep);
+        r["inside"] = in;
+        r["outside"] = out;
+        r["inside_faces"] = inside.fn;
+        r["outside_faces"] = outside.fn;
+    } else {
+        res = MeshCut<CMeshO>::Apply(m, {curve}, p);
+        m.face.EnableQuality();
+        for (size_t f = 0; f < m.face.size(); ++f) m.face[f].Q() = res.faceSide[f];
+        // the side in the face quality and the selection in the flags (MeshLab shows it on load)
+        SaveMeshPly(m, job.output, (mask & keep) | io::Mask::IOM_FACEQUALITY | io::Mask::IOM_FACEFLAGS |
+                                       io::Mask::IOM_VERTFLAGS);
+    }
+    r["mode"] = v.Def("Mode").choices[size_t(split ? int(CutMode::Split) : mode)].key;
+    r["side"] = v.Def("Side").choices[size_t(v.Enum("Side"))].key;
+    r["curve_points"] = curve.points.size();
+    r["closed"] = curve.closed;
+    r["added_vertices"] = res.addedVertices;
+    r["added_faces"] = res.addedFaces;
+    r["curve_vertices"] = res.curveVertices;
+    r["faces_inside"] = res.facesInside;
+    r["area_inside"] = res.areaInside;
+    r["area_outside"] = res.areaOutside;
+    r["seconds_cut"] = Since(t0);
+    Info(job, Fmt("Cut (%s) along a %s curve of %d points: %d vertices and %d faces added, %d curve vertices; "
+                  "inside %d faces, area %g (outside %g). Wrote %s.",
+                  MeshCut<CMeshO>::ModeName(p.mode).c_str(), curve.closed ? "closed" : "open", int(curve.points.size()),
+                  res.addedVertices, res.addedFaces, res.curveVertices, res.facesInside, res.areaInside,
+                  res.areaOutside, split ? (in + " and " + out).c_str() : job.output.c_str()));
+    return r;
+}
+
 /// Runs a checked job; returns its statistics. Throws SnakeError.
 json Run(Job &job)
 {
@@ -594,6 +680,7 @@ json Run(Job &job)
     r["seconds_load"] = Since(t0);
     if (job.cmd->name == "energy") r = RunEnergy(job, m, mask, r);
     else if (job.cmd->name == "path") r = RunPath(job, m, mask, r);
+    else if (job.cmd->name == "cut") r = RunCut(job, m, mask, r);
     else r = RunSnake(job, m, mask, r);
     r["seconds_total"] = Since(t0);
     return r;
@@ -930,7 +1017,7 @@ int Main(int argc, char **argv)
         throw UsageError("no command given");
     }
     job.cmd = FindCommand(positional[0]);
-    if (!job.cmd) throw UsageError("unknown command \"" + positional[0] + "\" (energy, snake or path).");
+    if (!job.cmd) throw UsageError("unknown command \"" + positional[0] + "\" (energy, snake, path or cut).");
     if (help) {
         std::printf("%s", CommandHelp(*job.cmd).c_str());
         return 0;

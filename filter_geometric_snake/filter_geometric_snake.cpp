@@ -19,6 +19,8 @@
 #include <vcg/complex/algorithms/update/selection.h>
 #include <vcg/complex/algorithms/stat.h>
 
+#include <vcg_ext/cut/cut_curve_io.h>
+#include <vcg_ext/cut/mesh_cut.h>
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/mesh_validation.h>
 #include <vcg_ext/seed_path.h>
@@ -124,7 +126,7 @@ bool compactIfNeeded(CMeshO &m)
 
 FilterGeometricSnakePlugin::FilterGeometricSnakePlugin()
 {
-	for (ActionIDType id : {FP_FEATURE_ENERGY, FP_SEED_PATH, FP_SNAKE, FP_EXPORT})
+	for (ActionIDType id : {FP_FEATURE_ENERGY, FP_SEED_PATH, FP_SNAKE, FP_EXPORT, FP_CUT})
 		addFilterAction(id, new QAction(filterName(id), this));
 }
 
@@ -140,6 +142,7 @@ QString FilterGeometricSnakePlugin::filterName(ActionIDType filterId) const
 	case FP_SEED_PATH: return "Geometric Snake Seed Path";
 	case FP_SNAKE: return "Geometric Snake from Seed Vertices";
 	case FP_EXPORT: return "Export Geometric Snake Curves";
+	case FP_CUT: return "Cut Mesh along Geometric Snake";
 	default: assert(0); return "";
 	}
 }
@@ -153,6 +156,7 @@ QString FilterGeometricSnakePlugin::pythonFilterName(ActionIDType filterId) cons
 	case FP_SEED_PATH: return "compute_selection_by_geometric_snake_seed_path";
 	case FP_SNAKE: return "compute_geometric_snake_from_seed_vertices";
 	case FP_EXPORT: return "save_geometric_snake_curves";
+	case FP_CUT: return "meshing_cut_along_geometric_snake";
 	default: assert(0); return "";
 	}
 }
@@ -209,6 +213,19 @@ QString FilterGeometricSnakePlugin::filterInfo(ActionIDType filterId) const
 		       "the extension. If the mesh holds no snakes, the edit tool's sidecar file next to the "
 		       "mesh (<code>&lt;mesh&gt;.snakes.json</code>) is read instead." +
 		       paperReference();
+	case FP_CUT:
+		return "Cuts the mesh along a closed geometric snake, or an open one from boundary to boundary. The "
+		       "snake's curve is embedded exactly: a vertex at every crossing of a mesh edge and at its points "
+		       "inside faces (colour, quality, normals and texture coordinates interpolated), none closer to "
+		       "a vertex than a millionth of the edge. <b>Select</b>: the faces of the chosen side become the "
+		       "selection (and their vertices the vertex selection); each face's side is in its quality (1 "
+		       "inside, 0 outside). <b>Select only</b>: selects the faces whose centroid is on that side, "
+		       "without changing the mesh. <b>Split</b>: two new layers, inside and outside. <b>Cut open</b>: "
+		       "the curve's edges become boundary edges (an open snake ending inside makes a slit).<br>"
+		       "The snake comes from a curve file, or else the snakes kept on the mesh (the edit tool's "
+		       "session). A loop that does not separate the surface (around a handle), a curve that crosses "
+		       "itself or was made on another mesh, or a non-manifold cut is refused and the mesh is left as it "
+		       "was.";
 	default: assert(0); return "";
 	}
 }
@@ -220,6 +237,7 @@ FilterGeometricSnakePlugin::FilterClass FilterGeometricSnakePlugin::getClass(con
 	case FP_SEED_PATH: return Selection;
 	case FP_SNAKE: return Quality;
 	case FP_EXPORT: return Layer; // Generic has no menu: MeshLab refuses it
+	case FP_CUT: return FilterClass(Selection | Remeshing);
 	default: return Generic;
 	}
 }
@@ -249,6 +267,7 @@ int FilterGeometricSnakePlugin::postCondition(const QAction *a) const
 	case FP_SEED_PATH: return MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
 	case FP_SNAKE: return MeshModel::MM_VERTQUALITY;
 	case FP_EXPORT: return MeshModel::MM_NONE;
+	case FP_CUT: return MeshModel::MM_ALL;
 	default: return MeshModel::MM_ALL;
 	}
 }
@@ -261,6 +280,7 @@ RichParameterList FilterGeometricSnakePlugin::initParameterList(const QAction *a
 	case FP_SEED_PATH: addParams(par, tri::SnakeParamDefs::SeedPath()); break;
 	case FP_SNAKE: addParams(par, tri::SnakeParamDefs::Snake()); break;
 	case FP_EXPORT: addParams(par, tri::SnakeParamDefs::Export()); break;
+	case FP_CUT: addParams(par, tri::SnakeParamDefs::Cut()); break;
 	default: break;
 	}
 	return par;
@@ -283,6 +303,7 @@ bool FilterGeometricSnakePlugin::apply(const QAction *filter, const RichParamete
 		case FP_SEED_PATH: return applySeedPath(md, par);
 		case FP_SNAKE: return applySnake(md, par, cb);
 		case FP_EXPORT: return applyExport(md, par);
+		case FP_CUT: return applyCut(md, par);
 		default: return fail("Unknown filter.");
 		}
 	} catch (const vcg::tri::SnakeError &e) {
@@ -695,6 +716,76 @@ bool FilterGeometricSnakePlugin::applyExport(MeshDocument &md, const RichParamet
 	tri::SnakeIO<CMeshO>::WriteCurves(out, list, keep);
 	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake curves", curves, closed);
 	Log("Exported %d geometric snake(s) from %s to %s.", int(list.size()), qUtf8Printable(source), out.c_str());
+	return true;
+}
+
+bool FilterGeometricSnakePlugin::applyCut(MeshDocument &md, const RichParameterList &par)
+{
+	MeshModel &m = *md.mm();
+	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::Cut());
+	const std::string file = QString::fromStdString(v.Text("CurveFile")).trimmed().toStdString();
+	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
+	tri::MeshValidation<CMeshO>::RequireAdjacencySafe(m.cm);
+	m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO);
+	QElapsedTimer timer;
+	timer.start();
+	tri::CutCurve curve;
+	QString source;
+	if (!file.empty()) {
+		curve = tri::CutCurveIO<CMeshO>::FromSnakeFile(m.cm, file, v.Int("SnakeIndex"));
+		source = QString::fromStdString(file);
+	} else {
+		// the snakes kept on the mesh, else the edit tool's session file beside it (as the export)
+		const std::string stored = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+		nlohmann::json j;
+		if (!stored.empty()) {
+			j = nlohmann::json::parse(stored);
+			source = "the snakes kept on the mesh";
+		} else if (!m.fullName().isEmpty()) {
+			const std::string side = tri::SnakeSidecar::Path(QFileInfo(m.fullName()).absoluteFilePath().toStdString());
+			if (QFileInfo::exists(QString::fromStdString(side))) {
+				j = tri::SnakeIO<CMeshO>::ParseFileLean(side);
+				source = QString::fromStdString(side);
+			}
+		}
+		if (j.is_null())
+			return fail("No snake to cut along: give a CurveFile, or make a snake with the Geometric Snake edit tool "
+			            "or the \"Geometric Snake from Seed Vertices\" filter.");
+		curve = tri::CutCurveIO<CMeshO>::FromJson(m.cm, j, v.Int("SnakeIndex"), source.toStdString());
+	}
+	tri::MeshCut<CMeshO>::Param p;
+	const int mode = v.Enum("Mode");
+	p.mode = v.Bool("Split") ? tri::CutMode::Split : tri::CutMode(mode);
+	p.side = tri::CutSide(v.Enum("Side"));
+	tri::MeshCut<CMeshO>::Result r;
+	if (p.mode == tri::CutMode::Split) {
+		CMeshO inside, outside;
+		r = tri::MeshCut<CMeshO>::Split(m.cm, {curve}, p, inside, outside);
+		for (int part = 0; part < 2; ++part) {
+			MeshModel *layer = md.addNewMesh("", part == 0 ? "inside" : "outside", false);
+			layer->updateDataMask(&m);
+			tri::Append<CMeshO, CMeshO>::MeshCopy(layer->cm, part == 0 ? inside : outside);
+			layer->cm.Tr = m.cm.Tr;
+			tri::UpdateBounding<CMeshO>::Box(layer->cm);
+		}
+	} else {
+		r = tri::MeshCut<CMeshO>::Apply(m.cm, {curve}, p);
+		if (p.mode != tri::CutMode::SelectOnly) {
+			m.updateDataMask(MeshModel::MM_FACEQUALITY);
+			for (size_t f = 0; f < m.cm.face.size(); ++f) m.cm.face[f].Q() = r.faceSide[f];
+			tri::UpdateTopology<CMeshO>::FaceFace(m.cm);
+			tri::UpdateTopology<CMeshO>::VertexFace(m.cm);
+			tri::UpdateBounding<CMeshO>::Box(m.cm);
+		}
+	}
+	Log("Cut (%s) along a %s snake from %s: %d vertices and %d faces added, %d on the curve; inside %d faces, area "
+	    "%g (outside %g); %.1f ms (embedding %.1f, sides %.1f, check %.1f, commit %.1f).",
+	    tri::MeshCut<CMeshO>::ModeName(p.mode).c_str(), curve.closed ? "closed" : "open", qUtf8Printable(source),
+	    r.addedVertices, r.addedFaces, r.curveVertices, r.facesInside, r.areaInside, r.areaOutside,
+	    timer.nsecsElapsed() * 1e-6, r.msEmbed, r.msSides, r.msCheck, r.msCommit);
+	if (p.mode == tri::CutMode::Select || p.mode == tri::CutMode::CutOpen)
+		Log(GLLogStream::WARNING, "Geometric snake: the cut changed the mesh; the snakes kept on it refer to the "
+		    "mesh as it was.");
 	return true;
 }
 

@@ -27,7 +27,8 @@ public:
 		FP_FEATURE_ENERGY = 0,
 		FP_SEED_PATH = 1,
 		FP_SNAKE = 2,
-		FP_EXPORT = 3
+		FP_EXPORT = 3,
+		FP_CUT = 4
 	};
 
 	FilterGeometricSnakePlugin();
@@ -49,6 +50,7 @@ private:
 	bool applySeedPath(MeshDocument &md, const RichParameterList &par);
 	bool applySnake(MeshDocument &md, const RichParameterList &par, vcg::CallBackPos *cb);
 	bool applyExport(MeshDocument &md, const RichParameterList &par);
+	bool applyCut(MeshDocument &md, const RichParameterList &par); // filter_geometric_snake_cut.cpp
 	/// Adds a layer made of the curves' polylines as vertices and edges.
 	void addCurveLayer(MeshDocument &md, const MeshModel &src, const QString &name,
 	                   const std::vector<std::vector<vcg::Point3d>> &curves, const std::vector<bool> &closed);

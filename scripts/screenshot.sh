@@ -12,8 +12,12 @@ png=${2:-$here/docs/img/energy.png}
 mkdir -p "$(dirname "$png")"
 name=$(basename "$mesh" .ply)
 
-bash "$here/scripts/demo_headless.sh" "$mesh" >/dev/null
-colored="$here/build/demo/${name}_energy.ply"
+if [ -n "${GS_SCREENSHOT_AS_IS:-}" ]; then # the mesh as given (e.g. a cut with its selection)
+  colored=$mesh
+else
+  bash "$here/scripts/demo_headless.sh" "$mesh" >/dev/null
+  colored="$here/build/demo/${name}_energy.ply"
+fi
 [ -f "$colored" ] || { echo "[screenshot] $colored was not produced" >&2; exit 1; }
 
 inner=$(mktemp /tmp/gs-screenshot.XXXXXX.sh)

@@ -425,6 +425,33 @@ public:
         return d;
     }
 
+    /// Cut Mesh along Geometric Snake / `geometric-snake cut` (vcg_ext/cut/mesh_cut.h).
+    static const std::vector<ParamDef> &Cut()
+    {
+        static const std::vector<ParamDef> d = {
+            D::MakeText("CurveFile", "curve", "Curve file", "",
+                "A snake curve file (.json, as the edit tool, <i>Export Geometric Snake Curves</i> or "
+                "<code>geometric-snake snake</code> write it) made on this mesh. In MeshLab, empty: the snakes "
+                "kept on the mesh, else the edit tool's session file next to it."),
+            D::MakeInt("SnakeIndex", "snake", "Snake", -1, -1, 100000,
+                "Which snake of a session or file holding several (0-based); -1: the selected one."),
+            D::MakeEnum("Mode", "mode", "Mode", 0,
+                {{"select", "Select"}, {"select-only", "Select only (mesh unchanged)"}, {"split", "Split in two"},
+                 {"cut-open", "Cut open"}},
+                "<b>Select</b>: embed the curve and select the faces of one side. <b>Select only</b>: select "
+                "the faces whose centroid is on that side; the mesh is not changed. <b>Split</b>: two parts, "
+                "inside and outside. <b>Cut open</b>: the curve's edges become boundary edges."),
+            D::MakeEnum("Side", "side", "Side", 0,
+                {{"smaller", "Smaller part"}, {"larger", "Larger part"}, {"inside", "Inside"}, {"outside", "Outside"}},
+                "The side selected or split off as \"inside\": the smaller or larger part by area, or the "
+                "side the closed snake's normal points away from (where the Balloon inflates; for an open "
+                "snake its left)."),
+            D::MakeBool("Split", "split", "Split", false,
+                "Split in two (as mode split): writes OUT_inside.ply and OUT_outside.ply."),
+        };
+        return d;
+    }
+
     /// Export Geometric Snake Curves (no program subcommand: the program writes its curves itself).
     static const std::vector<ParamDef> &Export()
     {

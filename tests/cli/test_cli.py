@@ -691,5 +691,53 @@ class CliTests(mlhost.WorkDirTestCase):
         self.assertEqual([n for n in os.listdir(self.work) if n.startswith(".")], [], "temporary files left")
 
 
+    # ------------------------------------------------------------------ cut (issue 34)
+    def write_plate_and_square(self):
+        return mlhost.plate_and_square(self.work)
+
+    def test_cut_selects_the_inside_and_splits(self):
+        mesh, curve, _ = self.write_plate_and_square()
+        out = os.path.join(self.work, "cut.ply")
+        log, _ = self.ok(["cut", mesh, "--curve", curve, "-o", out, "--json-log"])
+        r = json.loads(log)
+        self.assertAlmostEqual(r["area_inside"], 25.0, places=9)  # the square's area, exactly
+        self.assertAlmostEqual(r["area_outside"], 75.0, places=9)
+        self.assertGreater(r["added_vertices"], 0)
+        with open(out, "rb") as f:
+            header = f.read(2000).split(b"end_header")[0].decode("ascii", "replace")
+        self.assertRegex(header, r"element face %d" % (200 + r["added_faces"]))  # plate.ply's 200 faces and the split ones
+        self.assertIn("property float quality", header.split("element face")[1])
+        log, _ = self.ok(["cut", mesh, "--curve", curve, "--split", "-o", out, "--json-log"])
+        r = json.loads(log)
+        self.assertEqual(r["inside_faces"] + r["outside_faces"], 200 + r["added_faces"])
+        for part in ("cut_inside.ply", "cut_outside.ply"):
+            self.assertTrue(os.path.exists(os.path.join(self.work, part)), part)
+        # the other side, and cut open
+        log, _ = self.ok(["cut", mesh, "--curve", curve, "--side", "larger", "--mode", "cut-open", "-o", out, "--json-log"])
+        self.assertAlmostEqual(json.loads(log)["area_inside"], 75.0, places=9)
+
+    def test_cut_refuses_a_curve_of_another_mesh(self):
+        mesh, _, curve = self.write_plate_and_square()
+        with open(mesh, "rb") as f:
+            before = f.read()
+        out = os.path.join(self.work, "cut.ply")
+        moved = json.loads(json.dumps(curve))
+        moved["samples"][1]["position"] = [9, 9, 9]
+        bad = os.path.join(self.work, "moved.json")
+        with open(bad, "w") as f:
+            json.dump(moved, f)
+        self.assert_error(["cut", mesh, "--curve", bad, "-o", out], "made on another mesh", outputs=[out])
+        far = json.loads(json.dumps(curve))
+        far["samples"][2]["face"] = 5000
+        with open(bad, "w") as f:
+            json.dump(far, f)
+        self.assert_error(["cut", mesh, "--curve", bad, "-o", out], "which this mesh does not have", outputs=[out])
+        self.assert_error(["cut", mesh, "-o", out], "No curve given", outputs=[out])
+        # never over the input mesh or the curve
+        self.assert_error(["cut", mesh, "--curve", bad, "-o", out, "--split"], "which this mesh does not have",
+                          outputs=[out.replace(".ply", "_inside.ply"), out.replace(".ply", "_outside.ply")])
+        with open(mesh, "rb") as f:
+            self.assertEqual(f.read(), before)
+
 if __name__ == "__main__":
     unittest.main()

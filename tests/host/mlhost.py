@@ -12,6 +12,7 @@ runner are all here.
 """
 
 import math
+import json
 import os
 import shutil
 import struct
@@ -24,16 +25,19 @@ from xml.sax.saxutils import quoteattr
 FILTER_ENERGY = "Compute Geometric Snake Feature Energy"
 FILTER_SEED_PATH = "Geometric Snake Seed Path"
 FILTER_SNAKE = "Geometric Snake from Seed Vertices"
+FILTER_CUT = "Cut Mesh along Geometric Snake"
 FILTER_EXPORT = "Export Geometric Snake Curves"
 SELECTED = 0x0020  # vcg vertex BitFlags::SELECTED, saved as the PLY "flags" property
 
 # ---------------------------------------------------------------------------- .mlx
-STRINGS = {"Seeds", "SeedPoints", "SeedFile", "OutputFile"}
+STRINGS = {"Seeds", "SeedPoints", "SeedFile", "OutputFile", "CurveFile"}
 ENUMS = {
     "EnergyType": ["Normal variation", "Curvature norm", "Quadric error", "Crease distance (CAD)"],
     "Cost": ["Length", "Feature"],
     "Method": ["Local embedding (paper)", "3D update + projection"],
     "Which": ["All snakes", "Selected snake"],
+    "Mode": ["Select", "Select only (mesh unchanged)", "Split in two", "Cut open"],
+    "Side": ["Smaller part", "Larger part", "Inside", "Outside"],
 }
 
 
@@ -62,6 +66,7 @@ DEFAULTS = {
     FILTER_SEED_PATH: {"SeedPoints": "", "SeedFile": "", "MergeDuplicateVertices": False},
     FILTER_SNAKE: {"SeedPoints": "", "SeedFile": "", "EnergyType": 0, "CreaseAngle": 30.0,
                    "MergeDuplicateVertices": False, "Balloon": 0.0},
+    FILTER_CUT: {"CurveFile": "", "SnakeIndex": -1, "Mode": 0, "Side": 0, "Split": False},
 }
 
 
@@ -228,6 +233,33 @@ def write_ply(path, verts, faces, binary=False):
             for t in faces or []:
                 f.write(("3 %d %d %d\n" % tuple(t)).encode())
 
+
+
+def plate_and_square(folder, n=10):
+    """A flat n x n plate of unit cells (plate.ply in `folder`) and a closed snake file made on
+    it around the square [2.5, 7.5]^2 (square.json, samples only: the cut traces the curve):
+    the square's inside has area 25 exactly. Returns (mesh, curve file, curve dict)."""
+    verts = [(i, j, 0) for j in range(n + 1) for i in range(n + 1)]
+    faces = []
+    for j in range(n):
+        for i in range(n):
+            a = j * (n + 1) + i
+            faces += [(a, a + 1, a + n + 2), (a, a + n + 2, a + n + 1)]
+    mesh = os.path.join(folder, "plate.ply")
+    write_ply(mesh, verts, faces)
+
+    def loc(x, y):
+        i, j = int(x), int(y)
+        fx, fy = x - i, y - j
+        if fx >= fy:
+            return {"face": 2 * (j * n + i), "bary": [1 - fx, fx - fy, fy], "position": [x, y, 0]}
+        return {"face": 2 * (j * n + i) + 1, "bary": [1 - fy, fx, fy - fx], "position": [x, y, 0]}
+
+    curve = {"closed": True, "samples": [loc(2.5, 2.5), loc(7.5, 2.5), loc(7.5, 7.5), loc(2.5, 7.5)]}
+    path = os.path.join(folder, "square.json")
+    with open(path, "w") as f:
+        json.dump(curve, f)
+    return mesh, path, curve
 
 def grid_cube(n):
     """Unit cube [0,1]^3 with an n x n grid of quads (two triangles each) per side,

@@ -17,7 +17,7 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mlhost  # noqa: E402
-from mlhost import FILTER_ENERGY, FILTER_EXPORT, FILTER_SEED_PATH, FILTER_SNAKE, SELECTED  # noqa: E402
+from mlhost import FILTER_CUT, FILTER_ENERGY, FILTER_EXPORT, FILTER_SEED_PATH, FILTER_SNAKE, SELECTED  # noqa: E402
 import json  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -75,7 +75,7 @@ class HostTests(mlhost.WorkDirTestCase):
         self.assertEqual(rc, 0, out)
         with open(dump, encoding="utf-8", errors="replace") as f:
             text = f.read()
-        for name in (FILTER_ENERGY, FILTER_SEED_PATH, FILTER_SNAKE, FILTER_EXPORT):
+        for name in (FILTER_ENERGY, FILTER_SEED_PATH, FILTER_SNAKE, FILTER_EXPORT, FILTER_CUT):
             self.assertIn("\\section", text)
             self.assertRegex(text, r"\\section f\d+ " + re.escape(name), "filter %r not loaded by MeshLab" % name)
         for label in ("Energy type", "Smoothing steps", "Colorize by energy", "Seed vertices", "Closed path",
@@ -520,6 +520,31 @@ class HostTests(mlhost.WorkDirTestCase):
                                                                           MergeDuplicateVertices=True))])
         self.assertRegex(out, r"The mesh was a triangle soup: merged %d duplicate vertices \(%d -> %d vertices"
                          % (len(verts) - len(pts), len(verts), len(pts)))
+
+    # ------------------------------------------------------------------ cut (issue 34)
+    def test_cut_filter_selects_the_inside_of_a_snake_file(self):
+        """The square snake on a flat plate: the selected faces (quality 1) cover area 25 exactly;
+        split makes two layers; a curve of another mesh is refused."""
+        mesh, curve, data = mlhost.plate_and_square(self.work)
+        out = self.path("cut.ply")
+        rc, log = self.run_script(mesh, [(FILTER_CUT, {"CurveFile": curve})], outputs=[["-o", out, "-m", "fq"]])
+        self.assertRegex(log, r"Cut \(select\) along a closed snake")
+        ply = mlhost.read_ply(out)
+        area = 0.0
+        for f in ply.faces:
+            if f["quality"] == 1:
+                a, b, c = (ply.vertices[i] for i in f["vertex_indices"])
+                area += abs((b["x"] - a["x"]) * (c["y"] - a["y"]) - (c["x"] - a["x"]) * (b["y"] - a["y"])) / 2
+        self.assertAlmostEqual(area, 25.0, places=5)
+        self.assertGreater(len(ply.faces), 200)
+        rc, log = self.run_script(mesh, [(FILTER_CUT, {"CurveFile": curve, "Split": True})])
+        self.assertRegex(log, r"Cut \(split\) along a closed snake")
+        data["samples"][1]["position"] = [9, 9, 9]
+        bad = self.path("moved.json")
+        with open(bad, "w") as f:
+            json.dump(data, f)
+        self.assert_filter_error(mesh, [(FILTER_CUT, {"CurveFile": bad})], "made on another mesh")
+        self.assert_filter_error(mesh, [(FILTER_CUT, {})], "No snake to cut along")
 
     def test_unknown_filter_is_detected(self):
         """The harness itself: a filter MeshLab does not know (e.g. its plugin failed to load)

@@ -1,0 +1,268 @@
+#ifndef VCG_EXT_CUT_MESH_CUT_H
+#define VCG_EXT_CUT_MESH_CUT_H
+
+// Cutting a mesh along curves on its surface (snakes): the curves are embedded exactly
+// (curve_embedding.h), the sides flooded (cut_sides.h), the result checked (cut_check.h), and
+// only then written into the user's mesh (cut_commit.h). Modes: select one side, select it by
+// the faces' centroids without changing the mesh, split into two meshes, or cut open (the
+// curves' edges become boundary edges). A refused or failed cut leaves the mesh as it was.
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include <vcg/complex/algorithms/update/selection.h>
+#include <vcg/complex/append.h>
+#include <vcg/complex/complex.h>
+
+#include <vcg_ext/cut/curve_embedding.h>
+#include <vcg_ext/cut/cut_check.h>
+#include <vcg_ext/cut/cut_commit.h>
+#include <vcg_ext/cut/cut_open.h>
+#include <vcg_ext/cut/cut_sides.h>
+#include <vcg_ext/cut/cut_work_mesh.h>
+#include <vcg_ext/snake_error.h>
+#include <unordered_set>
+
+namespace vcg {
+namespace tri {
+
+enum class CutMode {
+    Select = 0,     ///< embed the curves; the chosen side becomes the face (and vertex) selection
+    SelectOnly = 1, ///< select the user's faces whose centroid is on the chosen side; the mesh is unchanged
+    Split = 2,      ///< two meshes, the chosen side ("inside") and the rest ("outside")
+    CutOpen = 3     ///< the curves' edges become boundary edges (an open curve ending inside: a slit)
+};
+
+enum class CutSide {
+    Smaller = 0, ///< the side of smaller area
+    Larger = 1,  ///< the side of larger area
+    Inside = 2,  ///< the side the first curve's normal points away from (the side the Balloon inflates);
+                 ///< the left of an open curve
+    Outside = 3  ///< the other one; the right of an open curve
+};
+
+template <class MeshType>
+class MeshCut
+{
+public:
+    struct Param
+    {
+        CutMode mode = CutMode::Select;
+        CutSide side = CutSide::Smaller;
+        double snap = 1e-6; ///< CurveEmbedding::Param::snap
+    };
+
+    struct Result
+    {
+        /// Per face of the mesh after the cut (Split: of the embedded mesh, before it is split):
+        /// 1 on the chosen side, 0 elsewhere.
+        std::vector<int> faceSide;
+        int addedVertices = 0, addedFaces = 0, curveVertices = 0;
+        int facesInside = 0, facesOutside = 0;
+        double areaInside = 0, areaOutside = 0;
+        bool chosenLeft = true;
+        double msEmbed = 0, msSides = 0, msCheck = 0, msCommit = 0, msSplit = 0;
+    };
+
+    static std::string ModeName(CutMode m)
+    {
+        static const char *const n[] = {"select", "select only", "split", "cut open"};
+        return n[int(m)];
+    }
+
+    /// Select, SelectOnly and CutOpen: changes m (SelectOnly: only its selection).
+    static Result Apply(MeshType &m, const std::vector<CutCurve> &curves, const Param &p)
+    {
+        if (p.mode == CutMode::Split) throw SnakeError("Cut: use MeshCut::Split for the split mode.");
+        Work wk = prepare(m, curves, p);
+        Result &r = wk.r;
+        if (p.mode == CutMode::SelectOnly) {
+            selectByCentroid(m, wk);
+            return r;
+        }
+        auto t0 = clock::now();
+        if (p.mode == CutMode::CutOpen) {
+            CutOpen::Open(wk.w, wk.curves, wk.curveEdges);
+            CutCheck::AfterOpen(wk.w, wk.curves, wk.totalArea);
+        }
+        r.msCheck += ms(t0);
+        t0 = clock::now();
+        CutCommit<MeshType>::Commit(m, wk.w);
+        r.msCommit = ms(t0);
+        markSides(m, wk);
+        return r;
+    }
+
+    /// Split: `inside` gets the chosen side, `outside` the rest; m is not changed.
+    static Result Split(MeshType &m, const std::vector<CutCurve> &curves, const Param &p, MeshType &inside,
+                        MeshType &outside)
+    {
+        if (m.vn != int(m.vert.size()) || m.fn != int(m.face.size()))
+            throw SnakeError("Cut: the mesh has deleted vertices or faces; compact it first. The mesh was not changed.");
+        Work wk = prepare(m, curves, p);
+        auto t0 = clock::now();
+        MeshType cut;
+        vcg::tri::Append<MeshType, MeshType>::MeshCopy(cut, m);
+        CutCommit<MeshType>::Commit(cut, wk.w);
+        wk.r.msCommit = ms(t0);
+        t0 = clock::now();
+        markSides(cut, wk);
+        inside.Clear();
+        outside.Clear();
+        for (int part = 0; part < 2; ++part) {
+            MeshType &dst = part == 0 ? inside : outside;
+            for (size_t f = 0; f < cut.face.size(); ++f)
+                if (!cut.face[f].IsD()) {
+                    if ((wk.r.faceSide[f] == 1) == (part == 0)) cut.face[f].SetS();
+                    else cut.face[f].ClearS();
+                }
+            vcg::tri::UpdateSelection<MeshType>::VertexClear(cut);
+            vcg::tri::UpdateSelection<MeshType>::VertexFromFaceLoose(cut);
+            vcg::tri::Append<MeshType, MeshType>::Mesh(dst, cut, true);
+            vcg::tri::UpdateSelection<MeshType>::Clear(dst);
+            vcg::tri::UpdateBounding<MeshType>::Box(dst);
+        }
+        wk.r.msSplit = ms(t0);
+        CutCheck::Parts(inside, outside, wk.r.areaInside, wk.r.areaOutside, wk.totalArea);
+        return wk.r;
+    }
+
+private:
+    typedef std::chrono::steady_clock clock;
+    static double ms(clock::time_point t0) { return std::chrono::duration<double, std::milli>(clock::now() - t0).count(); }
+
+    struct Work
+    {
+        CutWorkMesh w;
+        std::vector<EmbeddedCurve> curves;
+        std::unordered_set<long long> curveEdges;
+        CutSides::Result sides;
+        unsigned char chosen = CutSides::Left;
+        double totalArea = 0;
+        Result r;
+    };
+
+    static Work prepare(const MeshType &m, const std::vector<CutCurve> &curves, const Param &p)
+    {
+        if (curves.empty()) throw SnakeError("Cut: no curve to cut along.");
+        if (m.fn == 0) throw SnakeError("Cut: the mesh has no faces.");
+        Work wk;
+        auto t0 = clock::now();
+        wk.w.Build(m);
+        for (size_t f = 0; f < wk.w.face.size(); ++f)
+            if (wk.w.face[f].parent >= 0) wk.totalArea += wk.w.Area(int(f));
+        typename CurveEmbedding<MeshType>::Param ep;
+        ep.snap = p.snap;
+        CurveEmbedding<MeshType> emb(m, wk.w, ep);
+        wk.curves = emb.Embed(curves);
+        wk.curveEdges = emb.CurveEdges();
+        wk.r.msEmbed = ms(t0);
+        t0 = clock::now();
+        bool open = false, endsInside = false;
+        for (const auto &c : wk.curves)
+            if (!c.closed) {
+                open = true;
+                for (int v : {c.chain.front(), c.chain.back()})
+                    if (!CutCheck::OnBoundary(wk.w, v)) endsInside = true;
+            }
+        const bool needSides = p.mode != CutMode::CutOpen;
+        if (needSides && endsInside)
+            throw SnakeError("Cut: the open curve ends inside the mesh, so it has no two sides to " +
+                             std::string(p.mode == CutMode::Split ? "split into" : "select") +
+                             " (only \"cut open\" makes a slit). Extend it to the mesh's boundary or close it. "
+                             "The mesh was not changed.");
+        wk.sides = CutSides::Compute(wk.w, wk.curves, wk.curveEdges, wk.totalArea);
+        if (needSides && !wk.sides.separated)
+            throw SnakeError(std::string("Cut: the curve does not separate the surface into two sides (") +
+                             (open ? "its sides join around it" : "a loop around a handle or a tube, such as a "
+                                                                  "torus's meridian") +
+                             "). The mesh was not changed.");
+        CutSides::Result &s = wk.sides;
+        const bool smallerIsLeft = s.complete[0];
+        bool left;
+        switch (p.side) {
+        case CutSide::Smaller: left = smallerIsLeft; break;
+        case CutSide::Larger: left = !smallerIsLeft; break;
+        case CutSide::Inside: left = s.orientation > 0 || open; break;
+        default: left = !(s.orientation > 0 || open); break;
+        }
+        wk.chosen = left ? CutSides::Left : CutSides::Right;
+        wk.r.chosenLeft = left;
+        if (s.separated) CutSides::Complete(wk.w, s, wk.chosen);
+        wk.r.msSides = ms(t0);
+        t0 = clock::now();
+        CutCheck::Embedded(wk.w, wk.curves, s, wk.chosen, wk.totalArea);
+        wk.r.msCheck = ms(t0);
+        wk.r.addedVertices = int(wk.w.pos.size()) - wk.w.vn0;
+        wk.r.addedFaces = int(wk.w.face.size()) - wk.w.fn0;
+        for (const auto &c : wk.curves) wk.r.curveVertices += int(c.chain.size());
+        wk.r.areaInside = left ? s.areaLeft : s.areaRight;
+        wk.r.areaOutside = wk.totalArea - wk.r.areaInside;
+        wk.r.facesInside = left ? s.facesLeft : s.facesRight;
+        return wk;
+    }
+
+    /// faceSide, the face selection and the vertex selection from the work mesh's labels.
+    static void markSides(MeshType &m, Work &wk)
+    {
+        Result &r = wk.r;
+        r.faceSide.assign(m.face.size(), 0);
+        vcg::tri::UpdateSelection<MeshType>::FaceClear(m);
+        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
+        r.facesInside = r.facesOutside = 0;
+        for (size_t f = 0; f < m.face.size() && f < wk.sides.label.size(); ++f) {
+            if (m.face[f].IsD()) continue;
+            const bool in = wk.sides.label[f] == wk.chosen && wk.sides.separated;
+            r.faceSide[f] = in ? 1 : 0;
+            if (in) {
+                m.face[f].SetS();
+                for (int k = 0; k < 3; ++k) m.face[f].V(k)->SetS();
+                ++r.facesInside;
+            } else ++r.facesOutside;
+        }
+    }
+
+    /// SelectOnly: each user's face takes the side of the sub-face holding its centroid.
+    static void selectByCentroid(MeshType &m, Work &wk)
+    {
+        Result &r = wk.r;
+        r.faceSide.assign(m.face.size(), 0);
+        vcg::tri::UpdateSelection<MeshType>::FaceClear(m);
+        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
+        r.facesInside = r.facesOutside = 0;
+        r.areaInside = 0;
+        for (size_t f = 0; f < m.face.size(); ++f) {
+            if (m.face[f].IsD()) continue;
+            int lab = wk.sides.label[f];
+            const std::vector<int> ch = wk.w.Children(int(f));
+            if (ch.size() > 1) {
+                const vcg::Point3d c = (vcg::Point3d::Construct(m.face[f].cV(0)->cP()) +
+                                        vcg::Point3d::Construct(m.face[f].cV(1)->cP()) +
+                                        vcg::Point3d::Construct(m.face[f].cV(2)->cP())) / 3.0;
+                double best = -1e300;
+                for (int g : ch) {
+                    const auto &G = wk.w.face[g];
+                    vcg::Point3d l = CutCommit<MeshType>::Bary(wk.w.pos[G.v[0]], wk.w.pos[G.v[1]], wk.w.pos[G.v[2]], c);
+                    const double mn = std::min(l[0], std::min(l[1], l[2]));
+                    if (mn > best) { best = mn; lab = wk.sides.label[g]; }
+                }
+            }
+            const bool in = lab == wk.chosen;
+            r.faceSide[f] = in ? 1 : 0;
+            if (in) {
+                m.face[f].SetS();
+                for (int k = 0; k < 3; ++k) m.face[f].V(k)->SetS();
+                ++r.facesInside;
+                r.areaInside += vcg::DoubleArea(m.face[f]) / 2;
+            } else ++r.facesOutside;
+        }
+        r.areaOutside = wk.totalArea - r.areaInside;
+        r.addedVertices = r.addedFaces = 0;
+    }
+};
+
+} // namespace tri
+} // namespace vcg
+
+#endif
