@@ -514,6 +514,8 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     b.seeds = seeds;
     b.closed = closed;
     b.maxOperations = maxOps;
+    b.timeLimit = v.Real("TimeLimit");
+    b.completeLoop = v.Bool("CompleteLoop");
     // What MeshLab's updateDataMask(MM_FACEFACETOPO | MM_VERTFACETOPO) does for the filter,
     // run as there while the energy is computed.
     b.adjacency = [&m] {
@@ -544,14 +546,16 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     }
     if (!job.meshOut.empty()) SaveMeshPly(m, job.meshOut, KeptAttributes(mask));
 
-    r["closed"] = closed;
+    r["closed"] = snake.Closed();
     r["method"] = v.Def("Method").choices[int(p.method)].key;
     r["energy"] = useQuality ? std::string("quality") : SnakeParamDefs::EnergyChoices()[size_t(energyType)].key;
     r["samples"] = snake.SampleCount();
     r["operations"] = st.operations;
     r["updates"] = st.updates;
     r["embeddings"] = st.embeddings;
-    r["converged"] = st.converged;
+    r["converged"] = res.stop == SnakeStop::Converged;
+    r["stop"] = SnakeStopKey(res.stop); // why the run ended (snake_stop.h); a problem is also in warnings
+    r["stop_message"] = res.stopMessage;
     r["seconds_snake"] = Since(t0);
     r["ms_per_operation"] = SnakeStats::Median(st.msOperation);
     r["ms_per_embedding"] = SnakeStats::Median(st.msEmbedding);
@@ -561,9 +565,9 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     r["length"] = res.length;
     r["warnings"] = warnings;
     Info(job, Fmt("Geometric snake (%s, %s): %d samples, %d operations, %s, curve of %d points and length %g, "
-                  "%.1f ms.", closed ? "closed" : "open", p.method == SnakeMethod::LocalEmbedding ? "local embedding"
+                  "%.1f ms.", snake.Closed() ? "closed" : "open", p.method == SnakeMethod::LocalEmbedding ? "local embedding"
                   : "3D update + projection", snake.SampleCount(), st.operations,
-                  st.converged ? "converged" : st.stopped ? "STOPPED (see the warning)" : "NOT converged (raise --max-operations?)",
+                  SnakeStopSummary(res.stop),
                   int(res.curve.size()), res.length,
                   Since(t0) * 1e3));
     for (const auto &w : warnings) Info(job, "warning: " + w.get<std::string>());

@@ -317,6 +317,8 @@ bool EditGeometricSnakePlugin::guarded(const QString &what, F f)
     return false;
 }
 
+bool EditGeometricSnakePlugin::guardedFn(const QString &what, const std::function<void()> &f) { return guarded(what, f); }
+
 void EditGeometricSnakePlugin::afterChange(bool forceSave)
 {
     if (!ctl) return;
@@ -377,7 +379,8 @@ void EditGeometricSnakePlugin::refreshDock()
         if (has && ctl->Selected() >= 0) dock->snakeList->setCurrentIndex(ctl->Selected());
     }
     if (s && currentSample >= s->SampleCount()) currentSample = -1;
-    dock->setConvergence(!s ? 0 : runTimer.isActive() ? 3 : s->Converged() ? 2 : 1);
+    dock->setConvergence(!s ? 0 : runTimer.isActive() ? 3 : s->Converged() ? 2
+                                 : vcg::tri::SnakeStopIsProblem(s->Stats().stop) ? 4 : 1);
     if (s && dock->status->styleSheet().isEmpty() && !running()) {
         const auto &st = s->Stats();
         int pins = 0;
@@ -419,9 +422,11 @@ void EditGeometricSnakePlugin::paramsToDock(const SnakeParams &p)
 void EditGeometricSnakePlugin::connectDock()
 {
     SnakeDock *d = dock;
+    runLimitsToDock();
     auto clicked = [this, d](QPushButton *b, std::function<void()> f) { connect(b, &QPushButton::clicked, this, f); };
     clicked(d->buildOpen, [this] { buildSnake(false); });
     clicked(d->buildClosed, [this] { buildSnake(true); });
+    clicked(d->completeLoop, [this] { completeLoop(); });
     clicked(d->removeLastSeed, [this] {
         if (guarded("remove seed", [&] { ctl->RemoveLastSeed(); })) afterChange();
     });
@@ -520,6 +525,7 @@ void EditGeometricSnakePlugin::setRunning(bool on)
         runClock.start();
         runCompute0 = ctl->ComputeMs();
         runOps0 = ctl->SelectedSnake()->Stats().operations;
+        runEnd = vcg::tri::SnakeStop::Running;
         sliceMs = 30;
         sliceEnd = -1;
         // a converged snake restarts (e.g. after new parameters, it may move again)
@@ -534,17 +540,11 @@ void EditGeometricSnakePlugin::setRunning(bool on)
         runTimer.stop();
         if (ctl) ctl->EndAction();
         if (ctl && modelAlive() && ctl->SelectedSnake()) {
-            const auto *s = ctl->SelectedSnake();
-            const double compute = (ctl->ComputeMs() - runCompute0) / 1000.0, wall = runClock.elapsed() / 1000.0;
-            // the Log line the wall-time GUI test reads: compute time vs wall time of the Run
-            Log(GLLogStream::FILTER,
-                "Geometric snake: Run %s after %d operations: compute %.3f s, wall %.3f s (median %.2f ms per operation)",
-                s->Converged() ? "converged" : "stopped", s->Stats().operations - runOps0, compute, wall,
-                vcg::tri::SnakeStats::Median(s->Stats().msOperation));
-            if (dock && dock->status->styleSheet().isEmpty()) // keep an error on show
-                runProgress(s->Converged() ? "Converged" : "Stopped (Ctrl+Z undoes the Run)");
+            // not ended by the engine or a limit: the user's Stop or Esc, or an error
+            reportRunEnd(runEnd != vcg::tri::SnakeStop::Running ? runEnd : vcg::tri::SnakeStop::Cancelled);
             afterChange(true);
         }
+        runEnd = vcg::tri::SnakeStop::Running;
     }
     if (dock) {
         QSignalBlocker b(dock->run);
@@ -580,12 +580,12 @@ void EditGeometricSnakePlugin::runTick()
     }
     const qint64 start = runClock.elapsed();
     if (sliceEnd >= 0) sliceMs = std::min(300.0, std::max(30.0, 2.0 * double(start - sliceEnd)));
-    bool ok = true, converged = false;
+    bool ok = true;
     do {
         ok = guarded("run", [&] { ctl->Step(); });
-        converged = ok && ctl->SelectedSnake()->Converged();
-    } while (ok && !converged && runClock.elapsed() - start < sliceMs);
-    if (!ok || converged) {
+        if (ok) runEnd = runCheck(); // converged, stopped by the engine, or a limit reached
+    } while (ok && runEnd == vcg::tri::SnakeStop::Running && runClock.elapsed() - start < sliceMs);
+    if (!ok || runEnd != vcg::tri::SnakeStop::Running) {
         setRunning(false);
         return;
     }
@@ -1018,6 +1018,7 @@ bool EditGeometricSnakePlugin::ownsKey(const QKeyEvent *e) const
     case Qt::Key_Delete: return true; // with any modifier: Ctrl+Del and Shift+Del delete mesh elements too
     case Qt::Key_Backspace:
     case Qt::Key_I:
+    case Qt::Key_L:
     case Qt::Key_P:
     case Qt::Key_R:
     case Qt::Key_Space:
@@ -1092,6 +1093,7 @@ bool EditGeometricSnakePlugin::handleKey(const QKeyEvent *e)
         });
         break;
     case Qt::Key_Space: stepOnce(); break;
+    case Qt::Key_L: completeLoop(); break;
     case Qt::Key_R: setRunning(!running()); break;
     case Qt::Key_Escape: setRunning(false); break;
     case Qt::Key_P: editCurrent("pin", [this] { ctl->TogglePin(currentSample); }); break;
@@ -1205,6 +1207,7 @@ void EditGeometricSnakePlugin::drawAll(MeshModel &m)
         glBegin(mode);
         for (auto &p : xyz) vertex(p);
         glEnd();
+        if (s.Closed()) drawInsideMarks(s, lift, dpr, sel ? kSelected : kOther);
         if (sel) {
             std::vector<vcg::Point3d> free, pinned, cur;
             const auto &smp = s.Samples();

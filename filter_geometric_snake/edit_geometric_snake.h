@@ -4,7 +4,7 @@
 // MeshLab edit tool "Geometric Snake": interactive geometric snakes (Lee & Lee 2002,
 // Sec. 5.5 and 7) on the current layer. Thin Qt/GL glue over vcg_ext/snake_controller.h.
 //
-// While active, the tool owns its keys (Delete, Backspace, I, P, R, Space, Enter, Ctrl+Z,
+// While active, the tool owns its keys (Delete, Backspace, I, L, P, R, Space, Enter, Ctrl+Z,
 // Ctrl+Y; Esc during a Run): an application event filter overrides MeshLab's shortcuts for
 // them (Delete is MeshLab's "Delete Selected Faces"), so they never reach the mesh.
 // A Run computes operations in time slices and redraws at most ~30 times per second.
@@ -108,6 +108,7 @@ private:
     void afterChange(bool forceSave = false);
     void report(const QString &msg, bool error);
     template <class F> bool guarded(const QString &what, F f);
+    bool guardedFn(const QString &what, const std::function<void()> &f); // guarded(), for the other files
 
     // picking
     bool pick(const QPointF &glPos, vcg::tri::SurfacePoint &sp, vcg::Point3d &xyz);
@@ -123,10 +124,17 @@ private:
 
     // actions
     void buildSnake(bool closed);
+    void completeLoop(); // the seeds, a stroke across a part, into a loop round it (edit_snake_stroke_loop.cpp)
     void stepOnce();
     void setRunning(bool on);
     bool running() const { return runTimer.isActive(); }
     void runProgress(const char *state);
+    // the end of a Run (edit_snake_run_end.cpp)
+    vcg::tri::SnakeStop runEnd = vcg::tri::SnakeStop::Running; // why the Run in progress ends, once known
+    vcg::tri::SnakeRunLimits runLimits() const;
+    void runLimitsToDock();
+    vcg::tri::SnakeStop runCheck() const;
+    void reportRunEnd(vcg::tri::SnakeStop why);
     void editCurrent(const QString &what, const std::function<void()> &f);
     void undoRedo(bool redo);
     void applyParams();
@@ -139,6 +147,8 @@ private:
 
     // drawing
     void drawAll(MeshModel &m);
+    // closed snakes: ticks on the inside (edit_snake_side_marks.cpp)
+    void drawInsideMarks(const Controller::Snake &s, double lift, float dpr, const unsigned char *colour);
 };
 
 #endif

@@ -584,6 +584,8 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	b.seeds = seeds;
 	b.closed = closed;
 	b.maxOperations = maxOps;
+	b.timeLimit = v.Real("TimeLimit");
+	b.completeLoop = v.Bool("CompleteLoop");
 	// MeshLab's adjacency build runs while the energy is computed (on large meshes, on two cores).
 	b.adjacency = [&m] { m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO); };
 	if (!seedPts.empty()) {
@@ -612,7 +614,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 		tri::SnakeIO<CMeshO>::WriteCurves(out, list, keep);
 		Log("Wrote the curve to %s.", out.c_str());
 	}
-	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {res.curve}, {closed});
+	if (v.Bool("NewLayer")) addCurveLayer(md, m, "Geometric snake", {res.curve}, {snake.Closed()});
 
 	// Keep the snake on the mesh with any the user already has there: curves are never lost.
 	nlohmann::json session = ctl.ToJson();
@@ -633,8 +635,8 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	tri::SnakeMeshStore<CMeshO>::Set(m.cm, session.dump());
 
 	Log("Geometric snake (%s, %s): %d samples, %d operations, %s, curve of %d points and length %g.",
-	    closed ? "closed" : "open", method == 0 ? "local embedding" : "3D update + projection", snake.SampleCount(),
-	    st.operations, st.converged ? "converged" : st.stopped ? "STOPPED (see the warning)" : "NOT converged (raise MaxOperations?)",
+	    snake.Closed() ? "closed" : "open", method == 0 ? "local embedding" : "3D update + projection", snake.SampleCount(),
+	    st.operations, tri::SnakeStopSummary(res.stop),
 	    int(res.curve.size()), res.length);
 	Log("Geometric snake length scale: %g (median edge length along the seed path; spacing, step caps and tolerances "
 	    "are measured in it; the mesh's mean edge length is %g).", snake.LengthScale(), ctl.EnsureSurface().MeanEdge());

@@ -98,7 +98,14 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     seedCost->addItem("Shortest path");
     seedCost->addItem("Feature-weighted path");
     seedCost->setToolTip("How consecutive seeds are joined: shortest edge path, or a path preferring low energy (features)");
-    ls->addWidget(seedLabel, 0, 0);
+    completeLoop = button("Loop", "The seeds are a stroke across a part (a limb, an ear), from one side of it to the "
+                                  "other as you see it: complete it into a closed snake round the part, by the way back "
+                                  "round the hidden side (L)");
+    QHBoxLayout *lsl = new QHBoxLayout;
+    lsl->setContentsMargins(0, 0, 0, 0);
+    lsl->addWidget(seedLabel, 1);
+    lsl->addWidget(completeLoop);
+    ls->addLayout(lsl, 0, 0);
     ls->addWidget(seedCost, 0, 1);
     ls->addWidget(buildOpen, 1, 0);
     ls->addWidget(buildClosed, 1, 1);
@@ -184,6 +191,13 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     lp->addRow("External weight", external);
     lp->addRow("Balloon (pressure)", balloon);
     lp->addRow("Spacing (edges)", spacing);
+    maxOperations = new QSpinBox;
+    maxOperations->setRange(1, 1000000);
+    maxOperations->setValue(500);
+    maxOperations->setToolTip("A Run ends after this many operations if the snake has not converged (Run again to go on)");
+    timeLimit = spin(0, 1e6, 1, 1, 60, "A Run ends after this many seconds if the snake has not converged (0: no limit)");
+    lp->addRow("Max operations", maxOperations);
+    lp->addRow("Time limit (s)", timeLimit);
 
     v->addStretch(1);
 
@@ -358,10 +372,11 @@ void StatusLine::relayout()
 
 void SnakeDock::setConvergence(int state)
 {
-    static const char *text[] = {"no snake", "moving", "converged", "running"};
+    static const char *text[] = {"no snake", "moving", "converged", "running", "stopped"};
     static const char *style[] = {"color: gray;", "color: #a06000; font-weight: bold;",
-                                  "color: #008000; font-weight: bold;", "color: #0050c0; font-weight: bold;"};
-    if (state < 0 || state > 3) state = 0;
+                                  "color: #008000; font-weight: bold;", "color: #0050c0; font-weight: bold;",
+                                  "color: #b00000; font-weight: bold;"};
+    if (state < 0 || state > 4) state = 0;
     convergence->setText(text[state]);
     convergence->setStyleSheet(style[state]);
 }

@@ -55,6 +55,7 @@ public:
     // seeds
     QLabel *seedLabel;
     QPushButton *buildOpen, *buildClosed, *removeLastSeed, *clearSeeds, *useSelection, *usePickPoints;
+    QPushButton *completeLoop; // the seeds, a stroke across a part, into a loop round it
     QComboBox *seedCost;
     // energy
     QComboBox *energyType;
@@ -62,6 +63,9 @@ public:
     QPushButton *computeEnergy, *showEnergy;
     // parameters
     QDoubleSpinBox *alpha, *beta, *gamma, *external, *balloon, *spacing;
+    // the limits of one Run (snake_stop.h): it ends when it reaches either
+    QSpinBox *maxOperations;
+    QDoubleSpinBox *timeLimit;
     // slithering
     QPushButton *step, *run; // run is checkable: Run / Stop
     QLabel *convergence;
@@ -77,7 +81,7 @@ public:
     StatusLine *status;
 
     void setStatus(const QString &text, bool error = false);
-    void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running
+    void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running, 4 stopped (snake_stop.h)
 
 protected:
     QWidget *section(QVBoxLayout *into, const QString &title, bool open);

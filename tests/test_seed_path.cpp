@@ -378,3 +378,23 @@ TEST(SeedPath, ShortPathOnLargeMeshIsLocal)
 }
 
 } // namespace
+
+// Seed points on two pieces of a mesh that no edge joins are refused with a message (issue 33:
+// before, with no path along the edges and the points in different faces, the "path" silently
+// became the straight segment between them, across the gap).
+TEST(SeedPath, PointsOnDisconnectedPiecesAreRefused)
+{
+    CMeshO m;
+    vcg::tri::Allocator<CMeshO>::AddVertices(m, 6);
+    const float xy[6][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}};
+    for (int i = 0; i < 6; ++i) m.vert[i].P() = vcg::Point3f(xy[i][0], xy[i][1], xy[i][2]);
+    vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[0], &m.vert[1], &m.vert[2]);
+    vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[3], &m.vert[4], &m.vert[5]);
+    const vcg::tri::SurfacePoint a(0, vcg::Point3d(1 / 3.0, 1 / 3.0, 1 / 3.0)), b(1, vcg::Point3d(1 / 3.0, 1 / 3.0, 1 / 3.0));
+    try {
+        vcg::tri::SeedPath<CMeshO>::ComputeFromPoints(m, {a, b}, false);
+        FAIL() << "a path across the gap";
+    } catch (const SnakeError &e) {
+        EXPECT_NE(std::string(e.what()).find("different connected components"), std::string::npos) << e.what();
+    }
+}

@@ -145,14 +145,46 @@ public:
     bool Run(int maxOperations, const std::function<bool(int)> &progress = nullptr)
     {
         if (maxOperations < 0 || maxOperations > 10000000) throw SnakeError("Geometric snake: absurd operation limit.");
+        SnakeRunLimits lim;
+        lim.maxOperations = maxOperations;
+        return Run(lim, progress) == SnakeStop::Converged;
+    }
+
+    /// Operations until the run ends (snake_stop.h): converged, stopped by the engine (a closed
+    /// snake collapsing or leaving its part), a limit reached, or `progress(op)` returned false.
+    /// The reason and its message are also in Stats().stop / stopMessage (EndRun).
+    SnakeStop Run(const SnakeRunLimits &lim, const std::function<bool(int)> &progress = nullptr)
+    {
+        lim.Validate();
         pushUndo();
         bool keep = history.Suspend(true); // one undo step for the whole run
-        for (int op = 0; op < maxOperations && !stats.converged && !stats.stopped; ++op) {
+        const auto t0 = SnakeClock::Now();
+        int ops = 0;
+        SnakeStop why;
+        // a snake that ended its last run on its own (converged, stopped) is not moved again
+        while ((why = lim.Check(stats.stop, ops, SnakeClock::MsSince(t0) / 1000)) == SnakeStop::Running) {
             Step();
-            if (progress && !progress(op)) break;
+            ++ops;
+            if (progress && !progress(ops - 1)) { // cancelled, unless the operation ended the run anyway
+                why = lim.Check(stats.stop, 0, 0);
+                if (why == SnakeStop::Running) why = SnakeStop::Cancelled;
+                break;
+            }
         }
         history.Suspend(keep);
-        return stats.converged;
+        EndRun(why, lim.Message(why, ops, SnakeClock::MsSince(t0) / 1000));
+        return why;
+    }
+
+    /// Records how a run driven from outside (the edit tool's time-sliced Run) ended: the
+    /// reason, and for a limit or a cancel its message (the engine's own reasons keep theirs).
+    /// A limit reached goes into the warnings too, as a collapse does.
+    void EndRun(SnakeStop why, const std::string &message = std::string())
+    {
+        if (why == SnakeStop::Running || why == stats.stop) return;
+        stats.stop = why;
+        stats.stopMessage = !message.empty() ? message : why == SnakeStop::Cancelled ? "stopped by the user" : "";
+        if (SnakeStopIsProblem(why) && stats.warnings.size() < 20) stats.warnings.push_back(stats.stopMessage);
     }
 
     // ----------------------------------------------------------------- editing (Sec. 5.5)
@@ -258,6 +290,25 @@ public:
     /// The traced gaps; their crossings are the shortest path through their faces only once
     /// Polyline() has been read since the last operation (the motion reads their faces).
     const std::vector<Gap> &Gaps() const { return st.gaps; }
+
+    /// Closed snakes: per sample, the unit direction on the surface towards the inside of the
+    /// loop (the side a negative Balloon deflates it to; a positive one pushes it away from it),
+    /// for the tool to show. The inside is the side the loop runs round counter-clockwise, seen
+    /// from the front of the faces under it (orientation()). Empty for open snakes.
+    std::vector<vcg::Point3d> InsideDirections() const
+    {
+        const int n = int(st.samples.size());
+        if (!st.closed || n < 3) return {};
+        const std::vector<vcg::Point3d> p = positions();
+        const double o = orientation();
+        std::vector<vcg::Point3d> in(n);
+        for (int i = 0; i < n; ++i) {
+            in[i] = (surf->FaceNormal(st.samples[i].p.face) ^ (p[(i + 1) % n] - p[(i - 1 + n) % n])) * o; // -(tangent x normal)
+            const double l = in[i].Norm();
+            in[i] = l > 0 ? in[i] / l : vcg::Point3d(0, 0, 0);
+        }
+        return in;
+    }
 
     std::vector<vcg::Point3d> positions() const
     {
@@ -403,6 +454,8 @@ private:
         run.Reset();
         stats.converged = false;
         stats.stopped = false;
+        stats.stop = SnakeStop::Running;
+        stats.stopMessage.clear();
     }
     // ----- partitioning (Sec. 5.1): snake_partition.h, checked before any sample moves
     std::vector<Segment> partition(std::vector<Segment> &overlaps) const

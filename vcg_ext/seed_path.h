@@ -215,7 +215,7 @@ public:
             double viaEdges = search.RunPoints(src, dst, b.Pd(m), seg);
             const double direct = a.face == b.face ? cost(a, b) : std::numeric_limits<double>::infinity();
             if (direct <= viaEdges) seg.clear();
-            else if (!std::isfinite(viaEdges))
+            if (!std::isfinite(direct) && !std::isfinite(viaEdges)) // (both infinite: no path at all)
                 throw SnakeError("Seed points " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
                                  " are on different connected components of the mesh: no path along its edges "
                                  "joins them.");

@@ -37,7 +37,11 @@ public:
         std::vector<int> seeds;
         std::vector<SurfacePoint> seedPoints;
         bool closed = false;
+        /// The seeds are an open stroke across a part: complete it into a loop round the part
+        /// (stroke_loop.h) and run a closed snake from there.
+        bool completeLoop = false;
         int maxOperations = 1000;
+        double timeLimit = 0; ///< seconds of the run (0: none)
         /// The caller's FF/VF adjacency build (MeshLab's updateDataMask), if it is still to do:
         /// run while the energy is computed (SnakeEnergySource::ComputeBeside).
         std::function<void()> adjacency;
@@ -51,6 +55,8 @@ public:
         /// The run's warnings, each once, with how often it was given (a frozen segment repeats
         /// its warning at every operation).
         std::vector<std::pair<std::string, int>> runWarnings;
+        SnakeStop stop = SnakeStop::Running; ///< why the run ended (snake_stop.h)
+        std::string stopMessage;
     };
 
     /// Configures `ctl` (energy, parameters, seeds), runs its snake and traces the curve.
@@ -65,7 +71,13 @@ public:
         }
         if (s.adjacency) ctl.ComputeEnergyBeside(s.adjacency);
         ctl.SetParams(s.params);
-        if (s.seedPoints.empty()) {
+        if (s.completeLoop) {
+            if (s.closed) throw SnakeError("Geometric snake: a stroke completed into a loop is an open set of seeds: leave Closed off.");
+            std::vector<SurfacePoint> stroke = s.seedPoints;
+            if (stroke.empty())
+                for (int v : s.seeds) stroke.push_back(ctl.EnsureSurface().VertexPoint(v));
+            ctl.CreateLoopFromStroke(stroke);
+        } else if (s.seedPoints.empty()) {
             ctl.SetSeeds(s.seeds);
             ctl.CloseSeeds(s.closed);
         } else {
@@ -74,12 +86,16 @@ public:
         Result r;
         r.energyWarnings = ctl.EnergyWarnings();
         GeometricSnake<MeshType> &snake = ctl.Get(0);
-        snake.Run(s.maxOperations, progress);
+        SnakeRunLimits lim;
+        lim.maxOperations = s.maxOperations;
+        lim.seconds = s.timeLimit;
+        r.stop = snake.Run(lim, progress);
+        r.stopMessage = snake.Stats().stopMessage;
         r.curve = snake.PolylinePositions();
         for (const auto &x : r.curve)
             if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
                 throw SnakeError("The snake produced invalid coordinates (please report this with the mesh).");
-        r.length = Length(r.curve, s.closed);
+        r.length = Length(r.curve, snake.Closed());
         for (const auto &w : snake.Stats().warnings) {
             auto it = std::find_if(r.runWarnings.begin(), r.runWarnings.end(),
                                    [&](const std::pair<std::string, int> &d) { return d.first == w; });

@@ -40,6 +40,7 @@
 #include <vcg_ext/snake_io.h>
 #include <vcg_ext/snake_seed_list.h>
 #include <vcg_ext/snake_session_history.h>
+#include <vcg_ext/stroke_loop.h>
 #include <vcg_ext/snake_session_file.h>
 #include <vcg_ext/snake_sidecar.h>
 #include <vcg_ext/snake_surface.h>
@@ -219,6 +220,26 @@ public:
         return selected;
     }
 
+    /// Contour completion (stroke_loop.h): the open stroke `stroke` across a part becomes a
+    /// closed snake round it, the stroke plus the way back round the hidden side. `view`:
+    /// towards the viewer (zero: the side the stroke lies on). Selects it.
+    int CreateLoopFromStroke(const std::vector<SurfacePoint> &stroke, const vcg::Point3d &view = vcg::Point3d(0, 0, 0))
+    {
+        addSnake(loopSnake(stroke, view), false);
+        return selected;
+    }
+
+    /// The seeds placed so far, an open stroke across a part, completed into a closed snake
+    /// round it (CreateLoopFromStroke); the seeds are used up. On error nothing changes.
+    int CompleteSeedsToLoop(const vcg::Point3d &view = vcg::Point3d(0, 0, 0))
+    {
+        if (seedList.size() < 2)
+            throw SnakeError("Geometric snake: completing a stroke into a loop needs at least 2 seeds across the part (" +
+                             std::to_string(seedList.size()) + " placed).");
+        addSnake(loopSnake(seedList.Points(EnsureSurface()), view), true);
+        return selected;
+    }
+
     // ================================================================ snakes
     int SnakeCount() const { return int(snakes.size()); }
     int Selected() const { return selected; }
@@ -280,16 +301,25 @@ public:
         touch("step");
         return mv;
     }
-    /// Operations of the selected snake until it converges or maxOps; returns operations done.
-    int Run(int maxOps)
+    /// Operations of the selected snake until the run ends (snake_stop.h: converged, stopped by
+    /// the engine, maxOps or `seconds` reached); returns operations done. The reason is in the
+    /// snake's Stats().stop.
+    int Run(int maxOps, double seconds = 0)
     {
         if (maxOps < 0 || maxOps > 1000000) throw SnakeError("Geometric snake: the operation limit must be in [0, 1000000].");
+        SnakeRunLimits lim;
+        lim.maxOperations = maxOps;
+        lim.seconds = seconds;
+        lim.Validate();
         Action run(*this, "run");
+        const auto t0 = SnakeClock::Now();
         int ops = 0;
-        while (ops < maxOps && !sel().Converged()) {
+        SnakeStop why;
+        while ((why = lim.Check(sel().Stats().stop, ops, SnakeClock::MsSince(t0) / 1000)) == SnakeStop::Running) {
             Step();
             ++ops;
         }
+        sel().EndRun(why, lim.Message(why, ops, SnakeClock::MsSince(t0) / 1000));
         return ops;
     }
     bool Converged() { return SelectedSnake() && SelectedSnake()->Converged(); }
@@ -554,6 +584,18 @@ private:
     auto makeSnake()
     {
         return [this](const SnakeParams &p) { return std::unique_ptr<Snake>(new Snake(energy.EnsureSurface(), p)); };
+    }
+    std::unique_ptr<Snake> loopSnake(const std::vector<SurfacePoint> &stroke, const vcg::Point3d &view)
+    {
+        EnsureSurface();
+        checkMesh();
+        typename StrokeLoop<MeshType>::Param lp;
+        lp.cost = seedCost;
+        lp.view = view;
+        const typename StrokeLoop<MeshType>::Result r = StrokeLoop<MeshType>::Complete(mesh, stroke, lp);
+        std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
+        sn->InitFromSurfacePath(r.loop, true, LengthScale());
+        return sn;
     }
     // a new snake, built from the seeds (`fromSeeds`: they are used up) or points: selected
     void addSnake(std::unique_ptr<Snake> sn, bool fromSeeds)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake_stop.h>
 #include <vcg_ext/surface_point.h>
 
 namespace vcg {
@@ -89,6 +90,10 @@ struct SnakeStats
     int reuses = 0; ///< segment moves served by an embedding kept from an earlier operation (Sec. 4.2)
     bool converged = false;
     bool stopped = false; ///< stopped without converging (a closed snake collapsing): see warnings
+    /// Why the last run ended (Running while it goes on): the engine's verdict after every
+    /// operation (Converged, Collapsed, LeftPart), or the run's limit (SnakeRunLimits), or Cancelled.
+    SnakeStop stop = SnakeStop::Running;
+    std::string stopMessage; ///< what the hosts show for `stop` (empty for Running)
     double secondsTotal = 0;
     double lastMaxMove = 0; ///< in local edge lengths (the snake's LengthScale)
     std::vector<double> msEmbedding, msUpdate, msOperation;

@@ -124,6 +124,8 @@ public:
                       {"updates", st.updates},
                       {"embeddings", st.embeddings},
                       {"converged", st.converged},
+                      {"stop", SnakeStopKey(st.stop)},
+                      {"stop_message", st.stopMessage},
                       {"seconds_total", st.secondsTotal},
                       {"ms_per_embedding", SnakeStats::Median(st.msEmbedding)},
                       {"ms_per_update", SnakeStats::Median(st.msUpdate)},

@@ -381,6 +381,11 @@ public:
             SeedFileDef(),
             D::MakeBool("Closed", "closed", "Closed snake", false,
                 "Join the last seed back to the first: a closed curve."),
+            D::MakeBool("CompleteLoop", "complete-loop", "Complete a stroke into a loop", false,
+                "The seeds are an open stroke across a part (a limb, a finger, an ear), from one side of it to "
+                "the other on one side: complete it into a closed snake round the part, the stroke plus the "
+                "shortest way back round the other side (contour completion, Lee et al. 2004). Leave "
+                "<i>Closed snake</i> off."),
             D::MakeEnum("EnergyType", "energy", "Energy type", 0, EnergyChoices(),
                 EnergyTypeHelp() + " Computed with 2 smoothing steps and stored in the vertex quality; "
                 "<i>Use vertex quality</i> overrides it."),
@@ -406,7 +411,10 @@ public:
                 "Distance between snake samples, in mean edge lengths of the mesh."),
             D::MakeInt("MaxOperations", "max-operations", "Max operations", 500, 0, 1000000,
                 "Upper limit on snake operations (one embedding + up to 5 updates each); the snake "
-                "usually converges much earlier."),
+                "usually converges much earlier. A run that reaches it ends and says so."),
+            D::MakeReal("TimeLimit", "time-limit", "Time limit (s)", 0, 0, 1e6,
+                "Upper limit on the run's wall time in seconds (0: none). A run that reaches it ends and "
+                "says so; the curve is kept as it is."),
             D::MakeEnum("Method", "method", "Method", int(p.method),
                 {{"embedding", "Local embedding (paper)"}, {"projection", "3D update + projection"}},
                 "<b>Local embedding</b>: the paper's method, updates in the plane of a local "

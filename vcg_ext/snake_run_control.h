@@ -7,6 +7,7 @@
 // it. Its State is part of what undo restores (GeometricSnake::Memento).
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <deque>
 #include <numeric>
@@ -31,6 +32,7 @@ public:
         int stage = -1;              ///< energy level (-1: chosen by startLevel() at the next operation)
         bool settledOutside = false; ///< settled on a coarse level outside its wells once already
         double runLength = -1, lastLength = -1; ///< closed snakes: length at the run's start, after the last operation
+        vcg::Point3d runCentre{0, 0, 0};          ///< closed snakes: centroid of the samples at the run's start
         std::deque<double> moves, travels;
         std::deque<Positions> positions;
 
@@ -67,16 +69,31 @@ public:
     /// Before an operation, with the samples where they are.
     void Begin(const SnakeCurve &st, const Positions &pos)
     {
-        if (state.runLength < 0 && st.closed) state.runLength = state.lastLength = LoopLength(pos, true);
+        if (state.runLength < 0 && st.closed) {
+            state.runLength = state.lastLength = LoopLength(pos, true);
+            state.runCentre = Centroid(pos);
+        }
         if (state.stage < 0) state.stage = startLevel(st, pos);
     }
 
     /// After an operation that moved the curve by `maxMove` length units: convergence, the
-    /// switch to a finer level (it resets the samples' step control), the collapse watch.
+    /// switch to a finer level (it resets the samples' step control), the collapse and the
+    /// left-part watches; then the engine's verdict in stats.stop (snake_stop.h).
     void End(SnakeCurve &st, SnakeStats &stats, double maxMove, const Positions &pos)
     {
         updateConvergence(st, stats, maxMove, pos);
         checkCollapse(st, stats, pos);
+        checkLeftPart(st, stats, pos);
+        if (stats.stopped) return; // stop and stopMessage were set by the watch that stopped it
+        stats.stop = stats.converged ? SnakeStop::Converged : SnakeStop::Running;
+        stats.stopMessage = stats.converged ? "converged" : "";
+    }
+
+    static vcg::Point3d Centroid(const Positions &p)
+    {
+        vcg::Point3d c(0, 0, 0);
+        for (const auto &x : p) c += x;
+        return p.empty() ? c : c / double(p.size());
     }
 
     /// How far the curve moved: each new sample's distance to the old curve near it. Sliding
@@ -272,14 +289,43 @@ private:
         e /= double(st.samples.size());
         const bool tiny = L < 2 * st.unit;
         if (!(tiny || ((shrinking || stats.converged) && L < 0.25 * state.runLength))) return;
-        stats.stopped = true;
-        stats.converged = false;
         char msg[300];
         std::snprintf(msg, sizeof msg,
                       "the closed snake is collapsing where no feature holds it (length %.3g, %.0f %% of its length "
                       "at the start, mean energy %.2f): stopped. Seed it closer to the feature, or inflate it with "
                       "a positive Balloon.", L, 100.0 * L / std::max(state.runLength, 1e-300), e);
-        if (stats.warnings.size() < 20) stats.warnings.push_back(msg);
+        stopRun(stats, SnakeStop::Collapsed, msg);
+    }
+
+    /// A closed snake that slides along a part (a loop round a finger drifting to the palm or
+    /// to the tip) is no longer round the part it was seeded around: stop it instead of letting
+    /// it settle somewhere else. Left: its centroid is farther from where it started than twice
+    /// the sum of the two radii (length / 2 pi), and at least 8 length units -- a loop that
+    /// settles on a boundary a few rings away, or inflates round its start, never moves so far.
+    void checkLeftPart(const SnakeCurve &st, SnakeStats &stats, const Positions &pos)
+    {
+        if (!st.closed || pos.size() < 3 || stats.stopped || state.runLength <= 0) return;
+        const double r0 = state.runLength / (2 * M_PI), r = LoopLength(pos, true) / (2 * M_PI);
+        const double d = (Centroid(pos) - state.runCentre).Norm();
+        if (!(d > 2 * (r0 + r) && d > 8 * st.unit)) return;
+        char msg[300];
+        std::snprintf(msg, sizeof msg,
+                      "the closed snake left the part it surrounded (its centre moved %.3g length units, its radius "
+                      "%.3g at the start, %.3g now): stopped. Seed it closer to the part's boundary, or pin a "
+                      "sample there.", d / st.unit, r0 / st.unit, r / st.unit);
+        stopRun(stats, SnakeStop::LeftPart, msg);
+    }
+
+    /// The engine's stop: once per run in the warnings (a Run again repeats it only if it
+    /// stops again after moving on).
+    static void stopRun(SnakeStats &stats, SnakeStop why, const std::string &msg)
+    {
+        const bool again = stats.stopped && stats.stop == why;
+        stats.stopped = true;
+        stats.converged = false;
+        stats.stop = why;
+        stats.stopMessage = msg;
+        if (!again && stats.warnings.size() < 20) stats.warnings.push_back(msg);
     }
 };
 
