@@ -10,6 +10,7 @@
 // cut) and coverage >= 90 % (share of that cut within 1 h of the loop); h = mean edge length.
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -50,7 +51,8 @@ int main(int argc, char **argv)
     std::vector<std::string> energies = {"normal", "part"};
     std::vector<int> rings = {2, 3};
     int seedCount = 8, maxOps = 400;
-    double balloon = 0;
+    double balloon = 0, alpha = -1, beta = -1, ext = -1;
+    int smoothing = 2;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
@@ -61,6 +63,10 @@ int main(int argc, char **argv)
         else if (a == "--max-ops") maxOps = std::stoi(next());
         else if (a == "--balloon") balloon = std::stod(next());
         else if (a == "--out") out = next();
+        else if (a == "--alpha") alpha = std::stod(next());
+        else if (a == "--beta") beta = std::stod(next());
+        else if (a == "--ext") ext = std::stod(next());
+        else if (a == "--smoothing") smoothing = std::stoi(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
@@ -94,8 +100,31 @@ int main(int argc, char **argv)
                 std::fprintf(stderr, "unknown energy %s\n", en.c_str());
                 return 2;
             }
-            FeatureEnergy<CMeshO>::Compute(md.mesh, ty->second, 2);
+            FeatureEnergy<CMeshO>::Compute(md.mesh, ty->second, smoothing);
             auto surf = std::make_shared<Surface>(md.mesh);
+            if (std::getenv("GS_PARTS_DIAG"))
+                for (const gs_parts::Part &p : md.parts) {
+                    std::vector<int> dist, side;
+                    gs_parts::Rings(md.mesh, p, dist, side);
+                    double e[2][6] = {{0}}, n[2][6] = {{0}};
+                    for (size_t v = 0; v < dist.size(); ++v)
+                        if (dist[v] >= 0 && dist[v] < 6 && side[v] != 0 || dist[v] == 0) {
+                            const int si = side[v] >= 0 ? 0 : 1;
+                            e[si][dist[v]] += md.mesh.vert[v].Q(), n[si][dist[v]] += 1;
+                        }
+                    std::fprintf(stderr, "%s %d part %d: in", en.c_str(), id, p.index);
+                    for (int d = 0; d < 6; ++d) std::fprintf(stderr, " %.2f", e[0][d] / std::max(1.0, n[0][d]));
+                    std::fprintf(stderr, " out");
+                    for (int d = 1; d < 6; ++d) std::fprintf(stderr, " %.2f", e[1][d] / std::max(1.0, n[1][d]));
+                    // people against each other: each cut scored against the others
+                    int ok = 0;
+                    for (size_t a = 0; a < p.cuts.size(); ++a) {
+                        gs_parts::Part q = p;
+                        q.cuts.erase(q.cuts.begin() + a);
+                        ok += gs_parts::Measure(p.cuts[a], q, md.h, md.h).Success();
+                    }
+                    std::fprintf(stderr, " people agreeing %d/%zu\n", ok, p.cuts.size());
+                }
             for (const gs_parts::Part &p : md.parts)
                 for (int side : {1, -1})
                     for (int ring : rings) {
@@ -103,6 +132,9 @@ int main(int argc, char **argv)
                         if (seeds.empty()) continue;
                         SnakeParams sp;
                         sp.balloon = balloon;
+                        if (alpha >= 0) sp.alpha = alpha;
+                        if (beta >= 0) sp.beta = beta;
+                        if (ext >= 0) sp.externalWeight = ext;
                         Snake s(surf, sp);
                         s.InitFromSeeds(seeds, true);
                         const double L0 = gs_parts::LoopLength(s.PolylinePositions());
