@@ -4,7 +4,10 @@
 // the people's cuts. One CSV row per (energy, part, side, ring); a summary per category on stderr.
 //
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
-//            [--balloon B] [--max-ops N] [--out FILE.csv]
+//            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
+//            [--max-ops N] [--out FILE.csv]
+//   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
+//   people's cuts pass the success criterion against the other people's.)
 //
 // Success (the criterion): capture >= 90 % (share of the loop within 1 h of a person's
 // cut) and coverage >= 90 % (share of that cut within 1 h of the loop); h = mean edge length.
@@ -21,6 +24,7 @@
 #include <part_cases.h>
 #include <vcg_ext/feature_energy.h>
 #include <vcg_ext/geometric_snake.h>
+#include <vcg_ext/snake_energy_source.h>
 
 using namespace vcg::tri;
 typedef GeometricSnake<CMeshO> Snake;
@@ -52,7 +56,7 @@ int main(int argc, char **argv)
     std::vector<int> rings = {2, 3};
     int seedCount = 8, maxOps = 400;
     double balloon = 0, alpha = -1, beta = -1, ext = -1;
-    int smoothing = 2;
+    int smoothing = 2, capture = -1; // -1: the tool's choice for the energy
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
@@ -67,6 +71,7 @@ int main(int argc, char **argv)
         else if (a == "--beta") beta = std::stod(next());
         else if (a == "--ext") ext = std::stod(next());
         else if (a == "--smoothing") smoothing = std::stoi(next());
+        else if (a == "--capture") capture = std::stoi(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
@@ -101,7 +106,8 @@ int main(int argc, char **argv)
                 return 2;
             }
             FeatureEnergy<CMeshO>::Compute(md.mesh, ty->second, smoothing);
-            auto surf = std::make_shared<Surface>(md.mesh);
+            auto surf = std::make_shared<Surface>(
+                md.mesh, capture >= 0 ? capture : SnakeEnergySource<CMeshO>::CaptureSmoothingFor(false, ty->second));
             if (std::getenv("GS_PARTS_DIAG"))
                 for (const gs_parts::Part &p : md.parts) {
                     std::vector<int> dist, side;
