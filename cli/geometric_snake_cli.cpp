@@ -2,7 +2,7 @@
 // vcg_ext engine, with the same parameters (vcg_ext/snake_param_defs.h) and outputs (JSON
 // contract, OBJ `l` records, PLY edges, the mesh with the energy in its quality).
 //
-//   geometric-snake energy MESH [--type normal|curvature|quadric] [--smoothing K] -o OUT.ply
+//   geometric-snake energy MESH [--type normal|curvature|quadric|crease|part] [--smoothing K] -o OUT.ply
 //   geometric-snake snake MESH --seeds "i,j,k" [--closed] [--alpha A] ... -o OUT.json|.obj|.ply
 //   geometric-snake path MESH --seeds "i,j,k" [--closed] [--cost length|feature] -o OUT.ply
 //   geometric-snake cut MESH --curve CURVE.json [--mode M] [--side S] [--split] -o OUT.ply

@@ -161,7 +161,9 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     energyType->addItem("Curvature norm");
     energyType->addItem("Quadric error");
     energyType->addItem("Crease distance (CAD)");
-    energyType->setToolTip("The feature energy the snakes minimize (low = feature)");
+    energyType->addItem("Part boundary (concave)");
+    energyType->setToolTip("The feature energy the snakes minimize (low = feature). Normal variation for creases and "
+                           "ridges; Part boundary (concave) for a loop around a finger, a leg, an ear or an eye");
     smoothing = new QSpinBox;
     smoothing->setRange(0, 100);
     smoothing->setValue(2);

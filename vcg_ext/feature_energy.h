@@ -28,18 +28,20 @@
 #include "crease_energy.h"
 #include "energy_range.h"
 #include "mesh_validation.h"
+#include "part_boundary_energy.h"
 #include "snake_error.h"
 
 namespace vcg {
 namespace tri {
 
-enum class FeatureEnergyType { NormalVariation = 0, CurvatureNorm = 1, QuadricError = 2, Crease = 3 };
+enum class FeatureEnergyType { NormalVariation = 0, CurvatureNorm = 1, QuadricError = 2, Crease = 3, PartBoundary = 4 };
 /// Number of FeatureEnergyType values (valid types are 0 .. count-1).
-inline int FeatureEnergyTypeCount() { return 4; }
+inline int FeatureEnergyTypeCount() { return 5; }
 /// Lower-case names, indexed by type, for messages and the Log.
 inline const char *FeatureEnergyName(FeatureEnergyType t)
 {
-    static const char *const n[] = {"normal variation", "curvature norm", "quadric error", "crease distance"};
+    static const char *const n[] = {"normal variation", "curvature norm", "quadric error", "crease distance",
+                                    "part boundary"};
     return (int(t) >= 0 && int(t) < FeatureEnergyTypeCount()) ? n[int(t)] : "unknown";
 }
 
@@ -106,7 +108,7 @@ public:
         };
 
         std::vector<ScalarType> oldQuality; // put back if the smoothing is cancelled
-        if (progress && smoothingSteps > 0 && type != FeatureEnergyType::Crease) {
+        if (progress && smoothingSteps > 0 && type != FeatureEnergyType::Crease && type != FeatureEnergyType::PartBoundary) {
             oldQuality.reserve(m.vert.size());
             for (const VertexType &v : m.vert) oldQuality.push_back(v.cQ());
         }
@@ -124,6 +126,16 @@ public:
             for (size_t i = 0; i < m.vert.size(); ++i)
                 if (!m.vert[i].IsD()) m.vert[i].Q() = ScalarType(e[i]);
             st.creases = ce.CreaseCount();
+            st.rawMin = 0;
+            st.rawMax = 1;
+            takeInspection();
+            st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            return st;
+        }
+        case FeatureEnergyType::PartBoundary: { // in [0,1] already; smoothing widens its fit (issue 33)
+            const std::vector<double> e = PartBoundaryEnergy<MeshType>::VertexValues(m, smoothingSteps);
+            for (size_t i = 0; i < m.vert.size(); ++i)
+                if (!m.vert[i].IsD()) m.vert[i].Q() = ScalarType(e[i]);
             st.rawMin = 0;
             st.rawMax = 1;
             takeInspection();

@@ -68,6 +68,7 @@ public:
         fromQuality = true;
         computed = true;
         if (surface) surface->SetEnergyFromQuality();
+        applyField();
     }
     /// Dihedral angle (degrees) above which an edge is a crease; recomputes a crease energy.
     bool SetCreaseAngle(double deg)
@@ -151,6 +152,16 @@ public:
         return (h > 0 && std::isfinite(h)) ? h : 1.0;
     }
 
+    /// The coarse-to-fine pyramid the snakes slither on (SnakeSurface::SetCaptureSmoothing).
+    /// None for the part-boundary energy (issue 33): its curvature fit over a few edge lengths
+    /// is its capture range already, and the pyramid's smoothing of it lets a loop shrink past
+    /// the valley (bench/eval/gs_parts, 220 loops: 20 collapsed with the pyramid, 2 without;
+    /// 45 and 43 % captured).
+    static int CaptureSmoothingFor(bool quality, FeatureEnergyType t)
+    {
+        return !quality && t == FeatureEnergyType::PartBoundary ? 0 : Surface::DefaultCaptureSmoothing();
+    }
+
     bool FromQuality() const { return fromQuality; }
     bool Computed() const { return computed; }
     FeatureEnergyType Type() const { return type; }
@@ -175,7 +186,10 @@ private:
     /// interpolated from the vertex values the quality holds (those are for display).
     void applyField()
     {
-        if (!surface || fromQuality || type != FeatureEnergyType::Crease) return;
+        if (!surface) return;
+        const int capture = CaptureSmoothingFor(fromQuality, type);
+        if (surface->CaptureSmoothing() != capture) surface->SetCaptureSmoothing(capture);
+        if (fromQuality || type != FeatureEnergyType::Crease) return;
         surface->SetEnergyField(std::make_shared<CreaseEnergyField<MeshType>>(
             mesh, angle, CreaseEnergyField<MeshType>::Widths(mesh, smooth)));
     }

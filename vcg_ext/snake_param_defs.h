@@ -278,7 +278,7 @@ public:
     {
         static const std::vector<ParamChoice> c = {
             {"normal", "Normal variation"}, {"curvature", "Curvature norm"}, {"quadric", "Quadric error"},
-            {"crease", "Crease distance (CAD)"}};
+            {"crease", "Crease distance (CAD)"}, {"part", "Part boundary (concave)"}};
         return c;
     }
 
@@ -291,7 +291,13 @@ public:
                "tessellations (flat faces made of long slivers, every vertex on a crease): the sharp edges are "
                "found from dihedral angles (<i>Crease angle</i>) and the energy at any surface point grows with "
                "its distance d to the nearest crease of its face, 1 - exp(-(d/w)^2), with w = (1 + smoothing "
-               "steps) % of the bounding box diagonal; the vertex quality gets its values at the vertices.";
+               "steps) % of the bounding box diagonal; the vertex quality gets its values at the vertices. "
+               "<b>Part boundary (concave)</b>, for closed loops around parts of organic meshes and scans (a "
+               "finger, a leg, an ear's base, an eye's rim, a bottle's neck): low only on concave valleys (the "
+               "minima rule: parts meet along lines of negative minimum curvature), 1 on flat, convex and "
+               "ridge-like ground, with the curvature fitted over (1 + smoothing steps) local edge lengths so "
+               "scan noise makes no wells. Pick it to snake around a part; keep normal variation for creases "
+               "and ridges, which it ignores when they are convex.";
     }
     static ParamDef CreaseAngleDef()
     {

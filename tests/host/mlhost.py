@@ -32,7 +32,8 @@ SELECTED = 0x0020  # vcg vertex BitFlags::SELECTED, saved as the PLY "flags" pro
 # ---------------------------------------------------------------------------- .mlx
 STRINGS = {"Seeds", "SeedPoints", "SeedFile", "OutputFile", "CurveFile"}
 ENUMS = {
-    "EnergyType": ["Normal variation", "Curvature norm", "Quadric error", "Crease distance (CAD)"],
+    "EnergyType": ["Normal variation", "Curvature norm", "Quadric error", "Crease distance (CAD)",
+                   "Part boundary (concave)"],
     "Cost": ["Length", "Feature"],
     "Method": ["Local embedding (paper)", "3D update + projection"],
     "Which": ["All snakes", "Selected snake"],
