@@ -21,12 +21,13 @@ build=${1:-$here/build}
 [ $# -gt 0 ] && shift
 
 # Runtime libraries MeshLab's own plugins link to (Debian only recommends them, and without them
-# MeshLab refuses those plugins at start), per release.
+# MeshLab refuses those plugins at start), per release; forky's GUI test also takes screenshots
+# (xwd, in x11-apps).
 case "$release" in
   trixie) name=debian13
           libs=(lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 libxerces-c3.2t64) ;;
   forky)  name=forky
-          libs=(lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0) ;;
+          libs=(lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 x11-apps) ;;
   *) echo "usage: $0 trixie|forky [BUILD_DIR] [--run CMD... | --prepare-only]" >&2; exit 2 ;;
 esac
 # The packages of the root: MeshLab and those libraries, the plugins' build dependencies, and
@@ -82,7 +83,7 @@ mirror=$(grep -h -E '^(URIs:|deb )' /etc/apt/sources.list.d/*.sources /etc/apt/s
           | grep -v security | head -n1 | sed -E 's/^URIs: *//; s/^deb +(\[[^]]*\] +)?([^ ]+).*/\2/' || true)
 [ -n "$mirror" ] || mirror="http://deb.debian.org/debian"
 
-if [ ! -f "$root/.gs-debootstrapped" ]; then
+if [ ! -f "$root/.gs-debootstrapped" ] && [ ! -f "$root/.gs-ready" ]; then # (.gs-ready: an older script's root)
   if [ -e "$root" ]; then # a broken earlier attempt: never delete through a mount
     umount_all
     if grep -q " $root/" /proc/mounts; then echo "$tag $root still has mounts" >&2; exit 1; fi

@@ -9,6 +9,7 @@ lines go to stdout (MeshSet.set_verbosity), after a "CASE name" line.
 PLAN: {"mesh": PATH, "cases": [{"name": ..., "filters": [[PYTHON_NAME, {param: value}], ...]}]}.
 A filter whose name starts with "!" must fail (PyMeshLabException): its message is kept.
 """
+import ctypes
 import json
 import sys
 
@@ -16,7 +17,7 @@ import pymeshlab
 
 plugin, plan_path, result_path = sys.argv[1:4]
 plan = json.load(open(plan_path))
-result = {"version": None, "load": None, "filters": [], "cases": {}}
+result = {"load": None, "filters": [], "cases": {}}
 try:
     pymeshlab.load_plugin(plugin)
     result["load"] = "ok"
@@ -27,7 +28,9 @@ except pymeshlab.PyMeshLabException as e:  # the loader's own message (version, 
 # filter_list() names every filter the loaded plugins have (PyMeshLab's names)
 result["filters"] = [f for f in pymeshlab.filter_list() if "geometric_snake" in f]
 
+libc = ctypes.CDLL(None)  # PyMeshLab logs through C stdio: flushed before each marker, in order
 for case in plan["cases"]:
+    libc.fflush(None)
     print("CASE " + case["name"], flush=True)
     ms = pymeshlab.MeshSet()
     ms.load_new_mesh(plan["mesh"])
@@ -51,4 +54,5 @@ for case in plan["cases"]:
                       "vertices": ms.mesh(i).vertex_matrix().tolist(),
                       "edges": ms.mesh(i).edge_number()} for i in range(1, ms.mesh_number())]
     result["cases"][case["name"]] = out
+libc.fflush(None)
 json.dump(result, open(result_path, "w"))

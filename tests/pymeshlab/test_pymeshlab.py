@@ -30,10 +30,15 @@ PY = os.path.join(TOP, "venv", "bin", "python")
 PLUGIN = os.path.join(TOP, "build", "plugins", "libfilter_geometric_snake.so")
 WORK = os.path.join(TOP, "work")
 MESH = os.path.join(SRC, "data", "icocube.ply")
-# PyMeshLab 2025.07 is built in double, meshlabserver 2020.09 in float: the same float input, the
-# plugin's algorithms in double either way (vcg_ext), MeshLab's own per-vertex data (normals,
-# quality) in the host's scalar type.
+# PyMeshLab's MeshLab is built in double, meshlabserver 2020.09 (like Debian's 2022.02 and 2025.07)
+# in float: the same float input, but the mesh, its normals and the vertex quality in the host's
+# scalar type. The per-vertex energy agrees to float rounding (TOL). A snake stops once no sample
+# moves by more than its convergence tolerance (params.convergence_tol, in length units) for a few
+# operations, so from energies 1e-7 apart two runs reach the same faces after the same number of
+# operations but settle a small fraction of that tolerance apart: SNAKE_TOL of it. (Float against
+# float, the forky and debian13 tests ask 1e-6 and get 0.)
 TOL = 1e-6
+SNAKE_TOL = 0.25
 failures = []
 
 PY_NAMES = {mlhost.FILTER_ENERGY: "compute_scalar_by_geometric_snake_feature_energy",
@@ -105,14 +110,14 @@ def run_pymeshlab():
     json.dump(plan, open(plan_path, "w"), indent=1)
     env = dict(os.environ, QT_QPA_PLATFORM="offscreen")
     r = subprocess.run([PY, os.path.join(HERE, "pyml_filters.py"), PLUGIN, plan_path, result_path],
-                       capture_output=True, text=True, timeout=600, env=env)
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=600, env=env)
     logs = {}
     for block in ("\n" + r.stdout).split("\nCASE ")[1:]:
         name, _, text = block.partition("\n")
         logs[name] = text
     result = json.load(open(result_path)) if os.path.exists(result_path) else {}
     if r.returncode != 0:
-        print(r.stdout[-3000:], r.stderr[-3000:])
+        print(r.stdout[-3000:])
     check(result.get("load") == "ok", "pymeshlab.load_plugin(%s) loads the plugin: %s" % (PLUGIN, result.get("load")))
     check(r.returncode == 0, "PyMeshLab ran every case (exit %d)" % r.returncode)
     return result, logs
@@ -138,19 +143,28 @@ def read_json(path):
     return json.load(open(path)) if os.path.exists(path) else None
 
 
-def same_snake(a, b, what):
+def same_snake(a, b, what, run=True):
+    """The same curve; with `run`, the same run too (length unit, initial curve, operations)."""
     if not check(a is not None and b is not None, "%s: both wrote the snake's JSON" % what):
         return
+    unit = b["length_scale"]
+    tol = SNAKE_TOL * b["params"]["convergence_tol"] * unit
+    if run:
+        check(a["length_scale"] == unit and a["initial"] == b["initial"],
+              "%s: the same length unit (%g) and the same initial curve" % (what, unit))
     for key in ("samples", "polyline"):
         pa = [c for s in a[key] for c in (s["position"] if isinstance(s, dict) else s)]
         pb = [c for s in b[key] for c in (s["position"] if isinstance(s, dict) else s)]
-        check(len(pa) == len(pb) and max_diff(pa, pb) <= TOL,
-              "%s: same %s: %d vs %d points, max |coordinate difference| %.3g (<= %g)"
-              % (what, key, len(pa) // 3, len(pb) // 3, max_diff(pa, pb) if len(pa) == len(pb) else float("nan"), TOL))
+        check(len(pa) == len(pb) and max_diff(pa, pb) <= tol,
+              "%s: same %s: %d vs %d points, max |coordinate difference| %.3g = %.2g units (<= %.2g = %g of the "
+              "convergence tolerance)" % (what, key, len(pa) // 3, len(pb) // 3,
+                                          max_diff(pa, pb) if len(pa) == len(pb) else float("nan"),
+                                          max_diff(pa, pb) / unit if len(pa) == len(pb) else float("nan"), tol, SNAKE_TOL))
     check([s["face"] for s in a["samples"]] == [s["face"] for s in b["samples"]], "%s: same faces under the samples" % what)
-    check(a["stats"].get("operations") == b["stats"].get("operations") and a["stats"].get("converged"),
-          "%s: converged after the same number of operations: %s vs %s"
-          % (what, a["stats"].get("operations"), b["stats"].get("operations")))
+    if run:
+        check(a["stats"].get("operations") == b["stats"].get("operations") and a["stats"].get("converged"),
+              "%s: converged after the same number of operations: %s vs %s"
+              % (what, a["stats"].get("operations"), b["stats"].get("operations")))
 
 
 def filters():
@@ -198,10 +212,11 @@ def filters():
     for name, f in (("snake_vertices", "vertices.json"), ("snake_points", "points.json"), ("snake_pp", "pp.json")):
         same_snake(read_json(os.path.join(WORK, "pymeshlab", f)), read_json(os.path.join(WORK, "meshlabserver", f)), name)
     a, b = read_json(os.path.join(WORK, "pymeshlab", "export.json")), read_json(os.path.join(WORK, "meshlabserver", "export.json"))
-    check(a is not None and b is not None and len(a.get("snakes", [])) == 1 and len(b.get("snakes", [])) == 1,
-          "export: both wrote the session with the snake kept on the mesh")
-    if a and b and a.get("snakes") and b.get("snakes"):
-        same_snake(a["snakes"][0], b["snakes"][0], "export")
+    snakes = lambda j: (j["snakes"] if "snakes" in j else [j]) if j else []
+    if check(len(snakes(a)) == 1 and len(snakes(b)) == 1, "export: both wrote the snake kept on the mesh"):
+        same_snake(snakes(a)[0], snakes(b)[0], "export", run=False)  # the curve kept, not its run
+    check(bool(re.search(r"Exported 1 geometric snake\(s\)", pylog.get("export", ""))),
+          "export: PyMeshLab's Log says it exported 1 snake")
     v = read_json(os.path.join(WORK, "pymeshlab", "vertices.json"))
     if v:
         h = mlhost.cube_edge_seeds(MESH, 2.5)[1]
