@@ -73,7 +73,7 @@ if [ "${1:-}" = "--run" ]; then
   shift
   [ -f "$root/.gs-ready" ] || { echo "$tag no root yet: run scripts/debian_root.sh $release first" >&2; exit 1; }
   mount_all
-  in_root "$@"
+  in_root "$@" 9>&- # the lock is not the command's: a server it leaves behind must not keep it
   exit $?
 fi
 

@@ -64,7 +64,9 @@ def xvfb_run(screen):
     abstract sockets, shared with the host, while the root's xvfb-run -a only sees its own /tmp."""
     for n in random.sample(range(200, 1000), 800):
         if not os.path.exists("/tmp/.X%d-lock" % n) and not os.path.exists("/tmp/.X11-unix/X%d" % n):
-            return ["xvfb-run", "-n", str(n), "-s", "-screen 0 " + screen]
+            # Our own auth file (-f): when xvfb-run fails to remove its own temporary folder it
+            # exits before stopping its Xvfb (as mlhost.meshlabserver_cmd notes).
+            return ["xvfb-run", "-n", str(n), "-f", "/tmp/gs-xauth-%d" % n, "-s", "-screen 0 " + screen]
     raise RuntimeError("no free X display number")
 
 
@@ -100,7 +102,11 @@ def run_root(seeds):
     os.makedirs(ROOT + out)
     args = cli_args([ENERGY, snake(seeds, out + "/snake.json"),
                      ("!" + mlhost.FILTER_SNAKE, {"Seeds": "0, 99999999"})])
-    rc, text = in_root(*xvfb_run("640x480x24"), "/opt/gs/build/tests/meshlab2022/gs_meshlab_check",
+    # MeshLab's own libraries on the library path, as the meshlab program's RUNPATH has them: since
+    # 2023 some of MeshLab's plugins (edit_align, edit_pickpoints) need libmeshlab-common-gui.so
+    # and have no RUNPATH of their own, they count on the program having loaded it.
+    rc, text = in_root(*xvfb_run("640x480x24"), "env", "LD_LIBRARY_PATH=" + os.path.dirname(PLUGIN_DIR),
+                       "/opt/gs/build/tests/meshlab2022/gs_meshlab_check",
                        PLUGIN_DIR, "/opt/gs/src/data/" + ICOCUBE, out, *args)
     print(text)
     check(rc == 0, "gs_meshlab_check (MeshLab %s's PluginManager, I/O plugins and applyFilter) passed" % VERSION)

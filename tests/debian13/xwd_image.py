@@ -21,16 +21,18 @@ class XwdImage(gui.Image):
         header_size, fmt, depth, w, ht = h[0], h[2], h[3], h[4], h[5]
         byte_order, bpp, bpl = h[7], h[11], h[12]
         rmask, gmask, bmask, ncolors = h[14], h[15], h[16], h[19]
-        if fmt != 2 or bpp != 32:
+        if fmt != 2 or bpp not in (24, 32):
             raise ValueError("unsupported XWD: format %d, %d bits per pixel" % (fmt, bpp))
         off = header_size + 12 * ncolors
-        end = "<" if byte_order == 0 else ">"
+        order = "little" if byte_order == 0 else "big"
         rs, gs, bs = _shift(rmask), _shift(gmask), _shift(bmask)
+        n = bpp // 8
         out = bytearray(3 * w * ht)
         for y in range(ht):
-            row = struct.unpack_from("%s%dI" % (end, w), raw, off + y * bpl)
+            row = raw[off + y * bpl:off + y * bpl + n * w]
             o = 3 * w * y
-            for x, p in enumerate(row):
+            for x in range(w):
+                p = int.from_bytes(row[n * x:n * x + n], order)
                 out[o + 3 * x] = (p & rmask) >> rs
                 out[o + 3 * x + 1] = (p & gmask) >> gs
                 out[o + 3 * x + 2] = (p & bmask) >> bs
