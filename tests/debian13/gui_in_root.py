@@ -11,6 +11,7 @@ onto the cube's edge (screenshots with xwd, tests/debian13/xwd_image.py).
     (VERSION: MeshLab's, e.g. 2022.02 (default) or 2025.07; its main window's title starts with it)
 """
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -19,7 +20,8 @@ args = [a for a in sys.argv[1:] if not a.startswith("--")]
 mesh, work = args[0], args[1]
 version = args[2] if len(args) > 2 else "2022.02"
 clicks = "--clicks" in sys.argv
-os.makedirs(work, exist_ok=True)
+shutil.rmtree(work, ignore_errors=True)  # no sidecar, auto-export or settings of an earlier run
+os.makedirs(work)
 failures = []
 
 
