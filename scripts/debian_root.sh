@@ -94,7 +94,9 @@ if [ ! -f "$root/.gs-debootstrapped" ] && [ ! -f "$root/.gs-ready" ]; then # (.g
   script=/usr/share/debootstrap/scripts/$release
   [ -e "$script" ] || script=/usr/share/debootstrap/scripts/sid
   echo "$tag debootstrap $release from $mirror into $root (package cache $cache)"
-  debootstrap --variant=minbase --cache-dir="$cache" "$release" "$root" "$mirror" "$script" > "$top/debootstrap.log" 2>&1 ||
+  # one debootstrap at a time writes the shared cache (the other root's waits: ~1 min)
+  flock "$cache/.debootstrap.lock" \
+    debootstrap --variant=minbase --cache-dir="$cache" "$release" "$root" "$mirror" "$script" > "$top/debootstrap.log" 2>&1 ||
     { tail -n 30 "$top/debootstrap.log" >&2; exit 1; }
   touch "$root/.gs-debootstrapped"
   echo "$tag debootstrap done in $(( $(date +%s) - t0 )) s"
