@@ -22,16 +22,8 @@ version = args[2] if len(args) > 2 else "2022.02"
 clicks = "--clicks" in sys.argv
 shutil.rmtree(work, ignore_errors=True)  # no sidecar, auto-export or settings of an earlier run
 os.makedirs(work)
-failures = []
-
-
-def check(cond, what):
-    print(("PASS " if cond else "FAIL ") + what, flush=True)
-    if not cond:
-        failures.append(what)
-    return cond
-
-
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "host"))
+from checks import check, failures  # noqa: E402
 def windows(name):
     out = subprocess.run(["xdotool", "search", "--name", name], capture_output=True, text=True).stdout
     return out.split()
@@ -79,7 +71,6 @@ def with_clicks():
     import xwd_image  # puts tests/host (gui.py) on the path
     import gui
     gui.WORK = work
-    gui.check = check
     os.environ["GS_SNAKE_AUTOSTART"] = "1"
     local = os.path.join(work, os.path.basename(mesh))
     with open(mesh, "rb") as s, open(local, "wb") as d:  # the tool autosaves beside the mesh

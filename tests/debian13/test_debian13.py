@@ -28,6 +28,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SRC = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(SRC, "tests", "host"))
 import mlhost  # noqa: E402
+from checks import check, max_diff, verdict  # noqa: E402
 
 BUILD = os.path.abspath(sys.argv[1])
 MODE = sys.argv[2]
@@ -41,7 +42,6 @@ PLUGIN_DIR = "/usr/lib/x86_64-linux-gnu/meshlab/plugins"  # Debian's MeshLab plu
 WORK = os.path.join(BUILD, NAME, "work")
 ICOCUBE = "icocube.ply"
 TOL = 1e-6
-failures = []
 
 ENERGY = (mlhost.FILTER_ENERGY, {"EnergyType": 0, "SmoothingSteps": 2, "Colorize": True})
 
@@ -50,13 +50,6 @@ def snake(seeds, out):
     return (mlhost.FILTER_SNAKE, {"Seeds": seeds, "Closed": False, "Alpha": 0.05, "Beta": 0.5, "Gamma": 1.0,
                                   "ExternalWeight": 1.0, "Spacing": 1.0, "MaxOperations": 500, "Method": 0,
                                   "UseQuality": False, "OutputFile": out, "NewLayer": True})
-
-
-def check(cond, what):
-    print(("PASS " if cond else "FAIL ") + what, flush=True)
-    if not cond:
-        failures.append(what)
-    return cond
 
 
 def xvfb_run(screen):
@@ -85,10 +78,6 @@ def cli_args(filters):
         for k, v in params.items():
             args.append("%s=%s" % (k, ("true" if v else "false") if isinstance(v, bool) else v))
     return args
-
-
-def max_diff(a, b):
-    return max((abs(x - y) for x, y in zip(a, b)), default=0.0)
 
 
 def points(j, key):
@@ -201,8 +190,7 @@ def main():
         gui()
     else:
         raise SystemExit("unknown mode " + MODE)
-    print("%d check(s) failed" % len(failures))
-    return 1 if failures else 0
+    return verdict()
 
 
 if __name__ == "__main__":

@@ -22,6 +22,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SRC = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(SRC, "tests", "host"))
 import mlhost  # noqa: E402
+from checks import check, max_diff, verdict  # noqa: E402
 
 BUILD = os.path.abspath(sys.argv[1])
 MODE = sys.argv[2]
@@ -39,23 +40,11 @@ MESH = os.path.join(SRC, "data", "icocube.ply")
 # float, the forky and debian13 tests ask 1e-6 and get 0.)
 TOL = 1e-6
 SNAKE_TOL = 0.25
-failures = []
 
 PY_NAMES = {mlhost.FILTER_ENERGY: "compute_scalar_by_geometric_snake_feature_energy",
             mlhost.FILTER_SEED_PATH: "compute_selection_by_geometric_snake_seed_path",
             mlhost.FILTER_SNAKE: "compute_geometric_snake_from_seed_vertices",
             mlhost.FILTER_EXPORT: "save_geometric_snake_curves"}
-
-
-def check(cond, what):
-    print(("PASS " if cond else "FAIL ") + what, flush=True)
-    if not cond:
-        failures.append(what)
-    return cond
-
-
-def max_diff(a, b):
-    return max((abs(x - y) for x, y in zip(a, b)), default=0.0)
 
 
 def snake(out, seeds="", points="", pp="", new_layer=True):
@@ -248,8 +237,7 @@ def main():
         filters()
     else:
         raise SystemExit("unknown mode " + MODE)
-    print("%d check(s) failed" % len(failures))
-    return 1 if failures else 0
+    return verdict()
 
 
 if __name__ == "__main__":
