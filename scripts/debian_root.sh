@@ -53,7 +53,7 @@ flock 9
 
 mounted() { grep -q " $root/$1 " /proc/mounts; }
 umount_all() {
-  for m in var/cache/apt/archives dev sys proc; do
+  for m in dev sys proc; do
     if mounted "$m"; then umount -R "$root/$m" 2>/dev/null || umount -R -l "$root/$m" || true; fi
   done
 }
@@ -109,12 +109,14 @@ echo 'Acquire::Check-Valid-Until "false";' > "$root/etc/apt/apt.conf.d/99gs-vali
 if [ "$(cat "$root/.gs-ready" 2>/dev/null)" != "${pkgs[*]}" ]; then
   t1=$(date +%s)
   echo "$tag installing in the root: ${pkgs[*]}"
-  # The shared package cache as the root's apt archive (apt's own lock serialises two roots).
-  mounted var/cache/apt/archives || mount --bind "$cache" "$root/var/cache/apt/archives"
+  # The shared package cache, hard-linked into the root's own apt archive and back: the .debs
+  # either root fetched are not fetched again, and two roots' apt runs do not wait on one lock.
+  find "$cache" -maxdepth 1 -name '*.deb' -exec cp -l -n -t "$root/var/cache/apt/archives/" {} + 2>/dev/null || true
   in_root apt-get update -qq
   in_root apt-get install -y -qq --no-install-recommends "${pkgs[@]}" > "$top/install.log" 2>&1 ||
     { tail -n 30 "$top/install.log" >&2; exit 1; }
-  umount "$root/var/cache/apt/archives"
+  find "$root/var/cache/apt/archives" -maxdepth 1 -name '*.deb' -exec cp -l -n -t "$cache/" {} + 2>/dev/null || true
+  in_root apt-get clean
   echo "${pkgs[*]}" > "$root/.gs-ready"
   echo "$tag packages installed in $(( $(date +%s) - t1 )) s"
 fi
