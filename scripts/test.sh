@@ -12,11 +12,22 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
 bash scripts/setup.sh "$here/build"
+# The Debian roots' system (debootstrap + apt: ~4 min each on a fresh machine, mostly downloads
+# and unpacking) is made in the background while the host build compiles; ctest's
+# debian13_prepare and forky_prepare then only build the plugins in them.
+roots=()
+if [ "$(id -u)" -eq 0 ] && [ $# -eq 0 ]; then
+  for r in trixie forky; do
+    bash scripts/debian_root.sh "$r" "$here/build" --prepare-only > "$here/build/root-$r.log" 2>&1 &
+    roots+=($!)
+  done
+fi
 echo "[test] configure + build (build/)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
 echo "[test] install plugins"
 $SUDO cmake --install build
+for p in "${roots[@]}"; do wait "$p" || true; done # a failure shows in *_prepare (its log: build/root-*.log)
 echo "[test] ctest"
 cd build
 ctest --output-on-failure -j2 "$@"

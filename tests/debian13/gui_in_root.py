@@ -1,62 +1,128 @@
 #!/usr/bin/env python3
-"""Inside the Debian 13 root, under Xvfb: MeshLab 2022.02's GUI starts with the installed
+"""Inside a Debian root, under Xvfb: that release's MeshLab GUI starts with the installed
 plugins, shows no plugin-loading error, and the Geometric Snake edit tool starts on a mesh
 (GS_SNAKE_AUTOSTART=1 triggers its action as soon as MeshLab has the mesh; MeshLab logs
-"Started Mode Geometric Snake" only when the tool's startEdit succeeded).
+"Started Mode Geometric Snake" only when the tool's startEdit succeeded). With --clicks, the
+user's first steps too, as tests/host/test_edit_gui.py does them in MeshLab 2020.09: the panel
+docks in the main window, four clicks on the cube's front face and Enter build a snake, R runs it
+onto the cube's edge (screenshots with xwd, tests/debian13/xwd_image.py).
 
-    xvfb-run -a -s "-screen 0 1280x1024x24" python3 gui_in_root.py MESH WORK_DIR
+    xvfb-run -n N -s "-screen 0 1280x1024x24" python3 gui_in_root.py MESH WORK_DIR [VERSION] [--clicks]
+    (VERSION: MeshLab's, e.g. 2022.02 (default) or 2025.07; its main window's title starts with it)
 """
 import os
+import shutil
 import subprocess
 import sys
 import time
 
-mesh, work = sys.argv[1], sys.argv[2]
-os.makedirs(work, exist_ok=True)
-failures = []
-
-
-def check(cond, what):
-    print(("PASS " if cond else "FAIL ") + what, flush=True)
-    if not cond:
-        failures.append(what)
-
-
+args = [a for a in sys.argv[1:] if not a.startswith("--")]
+mesh, work = args[0], args[1]
+version = args[2] if len(args) > 2 else "2022.02"
+clicks = "--clicks" in sys.argv
+shutil.rmtree(work, ignore_errors=True)  # no sidecar, auto-export or settings of an earlier run
+os.makedirs(work)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "host"))
+from checks import check, failures  # noqa: E402
 def windows(name):
     out = subprocess.run(["xdotool", "search", "--name", name], capture_output=True, text=True).stdout
     return out.split()
 
 
-env = dict(os.environ, LIBGL_ALWAYS_SOFTWARE="1", GS_SNAKE_AUTOSTART="1",
-           XDG_CONFIG_HOME=os.path.join(work, "config"), XDG_RUNTIME_DIR=os.path.join(work, "runtime"))
-os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
-logpath = os.path.join(work, "meshlab.log")
-with open(logpath, "w") as logf:
-    p = subprocess.Popen(["meshlab", mesh], stdout=logf, stderr=subprocess.STDOUT, env=env, start_new_session=True)
-    started = False
-    main_window = []
-    for _ in range(180):
-        time.sleep(0.5)
-        main_window = main_window or windows("MeshLab 2022")
+def started_only():
+    env = dict(os.environ, LIBGL_ALWAYS_SOFTWARE="1", GS_SNAKE_AUTOSTART="1",
+               XDG_CONFIG_HOME=os.path.join(work, "config"), XDG_RUNTIME_DIR=os.path.join(work, "runtime"))
+    os.makedirs(env["XDG_RUNTIME_DIR"], mode=0o700, exist_ok=True)
+    logpath = os.path.join(work, "meshlab.log")
+    with open(logpath, "w") as logf:
+        p = subprocess.Popen(["meshlab", mesh], stdout=logf, stderr=subprocess.STDOUT, env=env, start_new_session=True)
+        started = False
+        main_window = []
+        for _ in range(180):
+            time.sleep(0.5)
+            main_window = main_window or windows("MeshLab " + version[:4])
+            text = open(logpath, errors="replace").read()
+            if "Started Mode Geometric Snake" in text or p.poll() is not None:
+                started = "Started Mode Geometric Snake" in text
+                break
+        time.sleep(1)
+        check(p.poll() is None, "MeshLab %s is running" % version)
+        check(bool(main_window), "MeshLab's main window appeared (title 'MeshLab %s...')" % version)
+        check(not windows("Error while loading plugins"), "no 'Error while loading plugins' dialog (every plugin loaded)")
+        check(started, "the Geometric Snake edit tool started on %s ('Started Mode Geometric Snake')" % os.path.basename(mesh))
+        # the panel docks in MeshLab's main window (and says where in the Log), or floats on its own
         text = open(logpath, errors="replace").read()
-        if "Started Mode Geometric Snake" in text or p.poll() is not None:
-            started = "Started Mode Geometric Snake" in text
-            break
-    time.sleep(1)
-    check(p.poll() is None, "MeshLab 2022.02 is running")
-    check(bool(main_window), "MeshLab's main window appeared (title 'MeshLab 2022.02...')")
-    check(not windows("Error while loading plugins"), "no 'Error while loading plugins' dialog (every plugin loaded)")
-    check(started, "the Geometric Snake edit tool started on %s ('Started Mode Geometric Snake')" % os.path.basename(mesh))
-    # the panel docks in MeshLab's main window (and says where in the Log), or floats on its own
-    text = open(logpath, errors="replace").read()
-    check("Geometric snake: panel" in text or bool(windows("^Geometric Snake$")), "the tool's panel is shown")
-    p.terminate()
+        check("Geometric snake: panel" in text or bool(windows("^Geometric Snake$")), "the tool's panel is shown")
+        p.terminate()
+        try:
+            p.wait(10)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            p.wait()
+    if failures:
+        print("--- MeshLab output (%s)" % logpath)
+        print(open(logpath, errors="replace").read()[-4000:])
+
+
+def with_clicks():
+    """tests/host/gui.py's MeshLab (window at 0,0, 1280x1000, fresh settings, the tool's JSON
+    auto-exported after every change), the tool started by GS_SNAKE_AUTOSTART, not by the menu."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import xwd_image  # puts tests/host (gui.py) on the path
+    import gui
+    gui.WORK = work
+    os.environ["GS_SNAKE_AUTOSTART"] = "1"
+    local = os.path.join(work, os.path.basename(mesh))
+    with open(mesh, "rb") as s, open(local, "wb") as d:  # the tool autosaves beside the mesh
+        d.write(s.read())
+    V, F = gui.mesh_ply(local)
+    h = gui.mean_edge(V, F)
+    auto = os.path.join(work, "auto.json")
+    ml = gui.MeshLab(local, "clicks")
     try:
-        p.wait(10)
-    except subprocess.TimeoutExpired:
-        p.kill()
-        p.wait()
-if failures:
-    print("--- MeshLab output (%s)" % logpath)
-    print(open(logpath, errors="replace").read()[-4000:])
+        text = gui.wait_for(lambda: (lambda t: t if "Started Mode Geometric Snake" in t else None)(ml.log_text()), 60)
+        check(bool(text), "the Geometric Snake edit tool started on %s" % os.path.basename(mesh))
+        check(not windows("Error while loading plugins"), "no 'Error while loading plugins' dialog (every plugin loaded)")
+        check(ml.win is not None and bool(windows("MeshLab " + version[:4])),
+              "MeshLab's main window is MeshLab %s's" % version)
+        time.sleep(2)  # the tool logs where its panel is once the main window has laid it out
+        panel = gui.panel_geometry(ml.log_text())
+        check(panel is not None and panel[0], "the tool's panel docks in MeshLab's main window (%s)" % (panel,))
+        img = xwd_image.screenshot("01_started.xwd")
+        left, right, top, bottom = gui.front_face_extent(img)
+        hpx = (right - left) / 2.0 * h  # the front face spans 2 units
+        print("front face px: x %d..%d y %d..%d, h = %.4f = %.1f px" % (left, right, top, bottom, h, hpx), flush=True)
+        if not check(right - left > 100 and bottom - top > 100, "the cube's front face is on screen"):
+            return
+        j = gui.build_from_clicks(auto, left, right, int(top + 2.2 * hpx), min_samples=5)
+        if not check(j is not None and len(gui.samples(j)) == 1, "four clicks and Enter build a snake"):
+            return
+        s = gui.samples(j)[0]
+        d0 = [gui.dist_cube_edges(x["position"]) for x in s["samples"][1:-1]]
+        check(sum(d0) / len(d0) > 1.0 * h, "the snake starts away from the edge (mean %.2f h)" % (sum(d0) / len(d0) / h))
+        gui.xdo("key", "r")
+        j = gui.wait_for(lambda: (lambda j: j if j and gui.samples(j)[0]["stats"]["converged"] else None)(
+            gui.snakes_of(auto)), 90)
+        if not check(j is not None, "R runs the snake to convergence"):
+            return
+        s = gui.samples(j)[0]
+        pos = [x["position"] for x in s["samples"][1:-1]]
+        onmesh = gui.edge_on_mesh(V, F, h, *gui.nearest_cube_edge(pos[len(pos) // 2]))
+        dm = [gui.dist_polyline(p, onmesh) for p in pos]
+        check(sum(dm) / len(dm) < 0.25 * h, "the snake converged onto the cube's edge (%d operations; mean %.3f h, max %.3f h)"
+              % (s["stats"]["operations"], sum(dm) / len(dm) / h, max(dm) / h))
+        runs = gui.run_lines(ml.log_text())
+        check(bool(runs) and runs[-1][0] == "converged", "the Log says the Run converged: %s" % (runs[-1:],))
+        xwd_image.screenshot("02_converged.xwd")
+    finally:
+        ml.kill()
+        if failures:
+            print("--- MeshLab output (%s)" % ml.logpath)
+            print(ml.log_text()[-4000:])
+
+
+if clicks:
+    with_clicks()
+else:
+    started_only()
 sys.exit(1 if failures else 0)

@@ -1,13 +1,17 @@
 #!/usr/bin/env python3
-"""The plugins built from this source tree in a real Debian 13 system (MeshLab 2022.02),
-compared with the same plugins in this machine's MeshLab 2020.09.
+"""The plugins built from this source tree in a real Debian system of another release,
+compared with the same plugins in this machine's MeshLab 2020.09. RELEASE (default trixie):
+trixie = Debian 13, MeshLab 2022.02 (build/debian13/root); forky = Debian 14, MeshLab 2025.07
+(build/forky/root).
 
-    test_debian13.py BUILD_DIR prepare   # scripts/debian13.sh: the cached Debian 13 root, the
-                                         # plugins built and installed in it
-    test_debian13.py BUILD_DIR filters   # MeshLab 2022.02's library (gs_meshlab_check) loads and
-                                         # lists the plugins and applies the filters; the results
-                                         # equal MeshLab 2020.09's (meshlabserver) on the same input
-    test_debian13.py BUILD_DIR gui       # MeshLab 2022.02's GUI loads every plugin, the edit tool starts
+    test_debian13.py BUILD_DIR prepare [RELEASE]  # scripts/debian_root.sh: the cached root, the
+                                                  # plugins built and installed in it
+    test_debian13.py BUILD_DIR filters [RELEASE]  # that MeshLab's library (gs_meshlab_check) loads
+                                                  # and lists the plugins and applies the filters; the
+                                                  # results equal MeshLab 2020.09's (meshlabserver)
+    test_debian13.py BUILD_DIR gui [RELEASE]      # that MeshLab's GUI loads every plugin, the edit
+                                                  # tool starts (forky: and docks, and builds and runs
+                                                  # a snake from clicks)
 
 Exit status 0 = pass, 77 = skipped (not root: chroot needs it).
 """
@@ -24,16 +28,20 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SRC = os.path.abspath(os.path.join(HERE, "..", ".."))
 sys.path.insert(0, os.path.join(SRC, "tests", "host"))
 import mlhost  # noqa: E402
+from checks import check, max_diff, verdict  # noqa: E402
 
 BUILD = os.path.abspath(sys.argv[1])
 MODE = sys.argv[2]
-ROOT = os.path.join(BUILD, "debian13", "root")
-SCRIPT = os.path.join(SRC, "scripts", "debian13.sh")
-PLUGIN_DIR = "/usr/lib/x86_64-linux-gnu/meshlab/plugins"  # Debian 13's MeshLab plugin folder
-WORK = os.path.join(BUILD, "debian13", "work")
+RELEASE = sys.argv[3] if len(sys.argv) > 3 else "trixie"
+# release: (folder in the build tree, Debian, MeshLab, the GUI test clicks a snake)
+NAME, DEBIAN, VERSION, CLICKS = {"trixie": ("debian13", "Debian 13", "2022.02", False),
+                                 "forky": ("forky", "Debian forky", "2025.07", True)}[RELEASE]
+ROOT = os.path.join(BUILD, NAME, "root")
+SCRIPT = os.path.join(SRC, "scripts", "debian_root.sh")
+PLUGIN_DIR = "/usr/lib/x86_64-linux-gnu/meshlab/plugins"  # Debian's MeshLab plugin folder
+WORK = os.path.join(BUILD, NAME, "work")
 ICOCUBE = "icocube.ply"
 TOL = 1e-6
-failures = []
 
 ENERGY = (mlhost.FILTER_ENERGY, {"EnergyType": 0, "SmoothingSteps": 2, "Colorize": True})
 
@@ -44,24 +52,19 @@ def snake(seeds, out):
                                   "UseQuality": False, "OutputFile": out, "NewLayer": True})
 
 
-def check(cond, what):
-    print(("PASS " if cond else "FAIL ") + what, flush=True)
-    if not cond:
-        failures.append(what)
-    return cond
-
-
 def xvfb_run(screen):
     """xvfb-run inside the root on a display number free on the host: X servers listen on
     abstract sockets, shared with the host, while the root's xvfb-run -a only sees its own /tmp."""
     for n in random.sample(range(200, 1000), 800):
         if not os.path.exists("/tmp/.X%d-lock" % n) and not os.path.exists("/tmp/.X11-unix/X%d" % n):
-            return ["xvfb-run", "-n", str(n), "-s", "-screen 0 " + screen]
+            # Our own auth file (-f): when xvfb-run fails to remove its own temporary folder it
+            # exits before stopping its Xvfb (as mlhost.meshlabserver_cmd notes).
+            return ["xvfb-run", "-n", str(n), "-f", "/tmp/gs-xauth-%d" % n, "-s", "-screen 0 " + screen]
     raise RuntimeError("no free X display number")
 
 
 def in_root(*cmd, timeout=900):
-    r = subprocess.run(["bash", SCRIPT, BUILD, "--run"] + list(cmd), capture_output=True, text=True, timeout=timeout)
+    r = subprocess.run(["bash", SCRIPT, RELEASE, BUILD, "--run"] + list(cmd), capture_output=True, text=True, timeout=timeout)
     return r.returncode, r.stdout + r.stderr
 
 
@@ -77,28 +80,29 @@ def cli_args(filters):
     return args
 
 
-def max_diff(a, b):
-    return max((abs(x - y) for x, y in zip(a, b)), default=0.0)
-
-
 def points(j, key):
     return [c for s in j[key] for c in (s["position"] if isinstance(s, dict) else s)]
 
 
-def run_2022(seeds):
-    """The filters through MeshLab 2022.02's library in the root; returns (log, quality, snake json)."""
+def run_root(seeds):
+    """The filters through the root's MeshLab library; returns (log, quality, snake json)."""
     out = "/opt/gs/out"
     shutil.rmtree(ROOT + out, ignore_errors=True)
     os.makedirs(ROOT + out)
     args = cli_args([ENERGY, snake(seeds, out + "/snake.json"),
                      ("!" + mlhost.FILTER_SNAKE, {"Seeds": "0, 99999999"})])
-    rc, text = in_root(*xvfb_run("640x480x24"), "/opt/gs/build/tests/meshlab2022/gs_meshlab_check",
+    # MeshLab's own libraries on the library path, as the meshlab program's RUNPATH has them: since
+    # 2023 some of MeshLab's plugins (edit_align, edit_pickpoints) need libmeshlab-common-gui.so
+    # and have no RUNPATH of their own, they count on the program having loaded it.
+    rc, text = in_root(*xvfb_run("640x480x24"), "env", "LD_LIBRARY_PATH=" + os.path.dirname(PLUGIN_DIR),
+                       "/opt/gs/build/tests/meshlab2022/gs_meshlab_check",
                        PLUGIN_DIR, "/opt/gs/src/data/" + ICOCUBE, out, *args)
     print(text)
-    check(rc == 0, "gs_meshlab_check (MeshLab 2022.02's PluginManager, I/O plugins and applyFilter) passed")
+    check(rc == 0, "gs_meshlab_check (MeshLab %s's PluginManager, I/O plugins and applyFilter) passed" % VERSION)
+    check(("MeshLab %s (single precision)" % VERSION) in text, "the root's MeshLab library is %s, float" % VERSION)
     for name in (mlhost.FILTER_ENERGY, mlhost.FILTER_SEED_PATH, mlhost.FILTER_SNAKE, mlhost.FILTER_EXPORT):
         check(re.search(r'^FILTER "%s" python=\w+ ' % re.escape(name), text, re.M) is not None,
-              "MeshLab 2022.02 lists the filter '%s' with a PyMeshLab name" % name)
+              "MeshLab %s lists the filter '%s' with a PyMeshLab name" % (VERSION, name))
     quality = [float(x) for x in open(ROOT + out + "/quality_1.txt").read().split()] \
         if os.path.exists(ROOT + out + "/quality_1.txt") else []
     j = json.load(open(ROOT + out + "/snake.json")) if os.path.exists(ROOT + out + "/snake.json") else None
@@ -132,61 +136,61 @@ def raw_range(log):
 def filters():
     seeds, h = mlhost.cube_edge_seeds(os.path.join(SRC, "data", ICOCUBE), 2.5)
     seeds = ",".join(map(str, seeds))
-    log22, q22, j22 = run_2022(seeds)
+    log_root, q_root, j_root = run_root(seeds)
     log20, q20, j20 = run_2020(seeds)
 
     # The energy filter writes the vertex quality, over [0,1], in both.
-    check(len(q22) > 0 and min(q22) == 0.0 and max(q22) == 1.0,
-          "2022.02: the energy filter wrote the vertex quality, range [%s, %s]" % (min(q22, default=None), max(q22, default=None)))
-    r22, r20 = raw_range(log22), raw_range(log20)
-    check(r22 is not None and r22 == r20, "same raw energy range: 2022.02 %s, 2020.09 %s" % (r22, r20))
-    check(len(q22) == len(q20) and max_diff(q22, q20) <= TOL,
+    check(len(q_root) > 0 and min(q_root) == 0.0 and max(q_root) == 1.0,
+          VERSION + ": the energy filter wrote the vertex quality, range [%s, %s]" % (min(q_root, default=None), max(q_root, default=None)))
+    r_root, r20 = raw_range(log_root), raw_range(log20)
+    check(r_root is not None and r_root == r20, "same raw energy range: %s %s, 2020.09 %s" % (VERSION, r_root, r20))
+    check(len(q_root) == len(q20) and max_diff(q_root, q20) <= TOL,
           "same per-vertex energy: %d vs %d vertices, max |difference| %.3g (<= %g)"
-          % (len(q22), len(q20), max_diff(q22, q20) if len(q22) == len(q20) else float("nan"), TOL))
+          % (len(q_root), len(q20), max_diff(q_root, q20) if len(q_root) == len(q20) else float("nan"), TOL))
 
     # The snake captures the cube edge x = y = 1, writes the JSON contract, same curve as 2020.09.
-    if not check(j22 is not None and j20 is not None, "both wrote the snake's JSON"):
+    if not check(j_root is not None and j20 is not None, "both wrote the snake's JSON"):
         return
     for key in ("closed", "initial", "samples", "polyline", "stats"):
-        check(key in j22, "2022.02 JSON has '%s'" % key)
-    check(all(set(s) == {"face", "bary", "position", "fixed"} for s in j22["samples"]), "2022.02 JSON samples: face, bary, position, fixed")
-    check(j22["stats"].get("converged") is True, "2022.02: the snake converged")
-    d = sorted(math.hypot(1.0 - s["position"][0], 1.0 - s["position"][1]) / h for s in j22["samples"])
+        check(key in j_root, "%s JSON has '%s'" % (VERSION, key))
+    check(all(set(s) == {"face", "bary", "position", "fixed"} for s in j_root["samples"]), VERSION + " JSON samples: face, bary, position, fixed")
+    check(j_root["stats"].get("converged") is True, VERSION + ": the snake converged")
+    d = sorted(math.hypot(1.0 - s["position"][0], 1.0 - s["position"][1]) / h for s in j_root["samples"])
     check(d and d[int(0.95 * (len(d) - 1))] < 0.6,
-          "2022.02: the snake captured the cube edge (95%% of the samples within %.3f h, < 0.6 h)" % (d[int(0.95 * (len(d) - 1))] if d else -1))
+          VERSION + ": the snake captured the cube edge (95%% of the samples within %.3f h, < 0.6 h)" % (d[int(0.95 * (len(d) - 1))] if d else -1))
     for key in ("samples", "polyline"):
-        a, b = points(j22, key), points(j20, key)
+        a, b = points(j_root, key), points(j20, key)
         check(len(a) == len(b) and max_diff(a, b) <= TOL,
               "same snake %s: %d vs %d, max |coordinate difference| %.3g (<= %g)"
               % (key, len(a) // 3, len(b) // 3, max_diff(a, b) if len(a) == len(b) else float("nan"), TOL))
-    check([s["face"] for s in j22["samples"]] == [s["face"] for s in j20["samples"]], "same faces under the samples")
-    check(j22["stats"].get("operations") == j20["stats"].get("operations"),
-          "same number of operations: %s vs %s" % (j22["stats"].get("operations"), j20["stats"].get("operations")))
+    check([s["face"] for s in j_root["samples"]] == [s["face"] for s in j20["samples"]], "same faces under the samples")
+    check(j_root["stats"].get("operations") == j20["stats"].get("operations"),
+          "same number of operations: %s vs %s" % (j_root["stats"].get("operations"), j20["stats"].get("operations")))
 
 
 def gui():
     rc, text = in_root(*xvfb_run("1280x1024x24"), "python3", "/opt/gs/src/tests/debian13/gui_in_root.py",
-                       "/opt/gs/src/data/" + ICOCUBE, "/opt/gs/gui")
+                       "/opt/gs/src/data/" + ICOCUBE, "/opt/gs/gui", VERSION, *(["--clicks"] if CLICKS else []))
     print(text)
-    check(rc == 0, "MeshLab 2022.02's GUI loaded the plugins and started the edit tool")
+    check(rc == 0, "MeshLab %s's GUI loaded the plugins and started the edit tool%s"
+          % (VERSION, ", which built and ran a snake from clicks" if CLICKS else ""))
 
 
 def main():
     if os.geteuid() != 0:
-        print("skipped: the Debian 13 root needs root (debootstrap, chroot)")
+        print("skipped: the %s root needs root (debootstrap, chroot)" % DEBIAN)
         return 77
     if MODE == "prepare":
-        return subprocess.run(["bash", SCRIPT, BUILD]).returncode
+        return subprocess.run(["bash", SCRIPT, RELEASE, BUILD]).returncode
     if not os.path.exists(os.path.join(ROOT, ".gs-ready")):
-        check(False, "the Debian 13 root exists (run the prepare step)")
+        check(False, "the %s root exists (run the prepare step)" % DEBIAN)
     elif MODE == "filters":
         filters()
     elif MODE == "gui":
         gui()
     else:
         raise SystemExit("unknown mode " + MODE)
-    print("%d check(s) failed" % len(failures))
-    return 1 if failures else 0
+    return verdict()
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 // Geometric Snakes for MeshLab: the host adapter for MeshLab 2022.02's plugin API (Debian 13,
-// Ubuntu 25.10 and 26.04; 2023.12 and 2025.07 kept these interfaces). Twin of
+// Ubuntu 25.10 and 26.04; 2023.12 and 2025.07 kept these interfaces: tested with 2025.07 in
+// Debian forky, float, and in PyMeshLab 2025.7, double). Twin of
 // host/meshlab_2020.09/meshlab_host.h, which documents the host-neutral API; here it is
 // MeshLab's own (FilterPlugin, EditPlugin, EditTool) plus:
 //   - apply() is the filter body; applyFilter turns filterError(msg) into the MLException
