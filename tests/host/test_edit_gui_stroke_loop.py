@@ -39,16 +39,9 @@ def main():
     try:
         if not check(ml.start_tool(), "the tool starts with the five restored seeds"):
             return g.finish()
-        time.sleep(1.0)
-        xdo("mousemove", 400, 950, "click", 1)  # focus the 3D view, away from the mesh
-        time.sleep(0.3)
-        xdo("key", "Escape")
-        time.sleep(0.3)
-        xdo("key", "Escape")
-        time.sleep(0.3)
+        g.focus_view()
         xdo("key", "l")
-        built = wait_for(lambda: (lambda j: j if j and samples(j) and samples(j)[0]["closed"] else None)(
-            snakes_of(auto)), 30)
+        built = wait_for(lambda: g.closed_snake(auto), 30)
         g.screenshot("01_loop.png")
         if not check(bool(built), "L completes the stroke into a closed snake"):
             return g.finish()
