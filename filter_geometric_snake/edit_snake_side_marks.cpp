@@ -15,8 +15,8 @@ void EditGeometricSnakePlugin::drawInsideMarks(const Controller::Snake &s, doubl
     if (in.empty()) return;
     const CMeshO &cm = s.SurfacePtr()->Mesh();
     const auto &smp = s.Samples();
-    const int n = int(smp.size()), every = std::max(1, n / 24); // about 24 ticks round the loop
-    const double len = 1.5 * s.LengthScale();
+    const int n = int(smp.size()), every = std::max(1, (n + 23) / 24); // at most 24 ticks round the loop
+    const double len = 1.2 * s.LengthScale();
     std::vector<std::pair<vcg::Point3d, vcg::Point3d>> ticks;
     for (int i = 0; i < n; i += every) {
         if (in[i].Norm() == 0) continue;

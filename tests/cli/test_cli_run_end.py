@@ -23,9 +23,10 @@ LION = os.path.join(DATA, "..", "..", "shared", "data", "meshes", "lion-head.off
 LION_EYE = "8111,1644,6377,1581,8187,8109"  # round lion-head's right eye seen from the front
 
 
-def limb_on_body(path, around=48, radius=1.0, height=4.0):
+def limb_on_body(path, around=48, radius=1.0, height=4.0, up_y=False):
     """A flat annulus (radii 1 to 3.5, z = 0) with a tube of radius 1 standing on it (z 0 to 4, flat
-    cap): the limb's base is the circle of radius 1 in z = 0 (as tests/test_stroke_loop.cpp)."""
+    cap): the limb's base is the circle of radius 1 in z = 0 (as tests/test_stroke_loop.cpp).
+    up_y: turned about x so that the limb stands along +y (MeshLab's default view sees its side)."""
     h = 2 * math.pi * radius / around
     rb, rl = round(2.5 / h), round(height / h)
     V = []
@@ -56,6 +57,8 @@ def limb_on_body(path, around=48, radius=1.0, height=4.0):
         out = (0, 0, 1) if c[2] < 1e-6 or c[2] > height - 1e-6 else (c[0], c[1], 0)
         return f if sum(n[i] * out[i] for i in range(3)) >= 0 else (f[0], f[2], f[1])
     F = [orient(f) for f in F]
+    if up_y:
+        V = [(x, z, -y) for x, y, z in V]
     with open(path, "w") as o:
         o.write("OFF\n%d %d 0\n" % (len(V), len(F)))
         o.writelines("%.9g %.9g %.9g\n" % v for v in V)

@@ -411,6 +411,23 @@ def curve_state(j):
             for x in samples(j)]
 
 
+def focus_view():
+    """Focuses the 3D view with a click away from the mesh (bottom of the view); Esc twice
+    suspends and resumes the tool in case the click started something."""
+    time.sleep(1.0)
+    xdo("mousemove", 400, 950, "click", 1)
+    for _ in range(2):
+        time.sleep(0.3)
+        xdo("key", "Escape")
+    time.sleep(0.3)
+
+
+def closed_snake(path):
+    """The tool's JSON at `path` once it holds a closed snake, else None."""
+    j = snakes_of(path)
+    return j if j and samples(j) and samples(j)[0]["closed"] else None
+
+
 def run_lines(text):
     """The tool's Log lines of finished Runs: (state, operations, compute s, wall s)."""
     return [(m.group(1), int(m.group(2)), float(m.group(3)), float(m.group(4))) for m in re.finditer(

@@ -66,7 +66,7 @@ DEFAULTS = {
     FILTER_ENERGY: {"CreaseAngle": 30.0, "MergeDuplicateVertices": False},
     FILTER_SEED_PATH: {"SeedPoints": "", "SeedFile": "", "MergeDuplicateVertices": False},
     FILTER_SNAKE: {"SeedPoints": "", "SeedFile": "", "EnergyType": 0, "CreaseAngle": 30.0,
-                   "MergeDuplicateVertices": False, "Balloon": 0.0},
+                   "MergeDuplicateVertices": False, "Balloon": 0.0, "TimeLimit": 0.0, "CompleteLoop": False},
     FILTER_CUT: {"CurveFile": "", "SnakeIndex": -1, "Mode": 0, "Side": 0, "Split": False},
 }
 

@@ -54,16 +54,9 @@ def run_case(name, mesh_name, seeds, expect):
     try:
         if not check(ml.start_tool(), "%s: the tool starts with the restored seeds" % name):
             return
-        time.sleep(1.0)
-        xdo("mousemove", 400, 950, "click", 1)  # focus the 3D view, away from the mesh
-        time.sleep(0.3)
-        xdo("key", "Escape")
-        time.sleep(0.3)
-        xdo("key", "Escape")
-        time.sleep(0.3)
+        g.focus_view()
         xdo("key", "shift+Return")
-        built = wait_for(lambda: (lambda j: j if j and samples(j) and samples(j)[0]["closed"] else None)(
-            snakes_of(auto)), 30)
+        built = wait_for(lambda: g.closed_snake(auto), 30)
         if not check(bool(built), "%s: Shift+Enter builds a closed snake" % name):
             return
         n = len(samples(built)[0]["samples"])
