@@ -170,14 +170,26 @@ std::string Snapshot(const DMesh &m)
     return s;
 }
 
+/// Edges with more than two faces (vcglib's CountNonManifoldEdgeFF takes a new bit flag per call
+/// and runs out of them in a long test).
+int NonManifoldEdges(const DMesh &m)
+{
+    std::map<std::pair<size_t, size_t>, int> n;
+    for (const auto &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            const size_t a = Index(m, f.cV(k)), b = Index(m, f.cV((k + 1) % 3));
+            ++n[{std::min(a, b), std::max(a, b)}];
+        }
+    int bad = 0;
+    for (const auto &e : n) bad += e.second > 2;
+    return bad;
+}
+
 /// Validity of a cut mesh: manifold edges, no face below 1e-12 of the mean area, none turned
 /// over (normal against +z on a plate), the area preserved to 1e-9 relative.
 void ExpectValid(DMesh &m, double areaBefore, bool flat = true)
 {
-    DMesh c;
-    Append<DMesh, DMesh>::MeshCopy(c, m);
-    UpdateTopology<DMesh>::FaceFace(c);
-    EXPECT_EQ(Clean<DMesh>::CountNonManifoldEdgeFF(c), 0);
+    EXPECT_EQ(NonManifoldEdges(m), 0);
     const double mean = Area(m) / m.fn;
     double minA = 1e300;
     for (const auto &f : m.face) {
@@ -339,7 +351,7 @@ TEST(MeshCutTest, TubeRingSplitsIntoTwoPartsWithTheRingAsBoundary)
     const double diag = m.bbox.Diag();
     for (DMesh *part : {&in, &out}) {
         UpdateTopology<DMesh>::FaceFace(*part);
-        EXPECT_EQ(Clean<DMesh>::CountNonManifoldEdgeFF(*part), 0);
+        EXPECT_EQ(NonManifoldEdges(*part), 0);
         std::vector<vcg::Point3d> bnd;
         for (auto &f : part->face)
             for (int k = 0; k < 3; ++k)
