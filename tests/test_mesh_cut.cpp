@@ -668,3 +668,51 @@ TEST(MeshCutTest, PersonsPartBoundarySelectsExactlyThatPart)
     }
     EXPECT_GE(tested, 4);
 }
+
+TEST(MeshCutTest, InsideIsTheEnclosedSideWhateverTheDirection)
+{
+    // a loop enclosing 70% of the plate: "smaller" is outside it, "inside" is the enclosed side,
+    // whichever way the loop runs (as the Balloon decides its outside)
+    std::vector<vcg::Point2d> poly = {{0.7, 0.6}, {9.4, 0.8}, {9.2, 9.3}, {0.5, 9.1}};
+    const double enclosed = PolygonArea(poly);
+    for (int dir = 0; dir < 2; ++dir) {
+        DMesh m;
+        Plate(m, 10, 1.0, 0.3, 21);
+        if (dir) std::reverse(poly.begin(), poly.end());
+        const CutCurve c = PolygonCurve(m, poly);
+        Cut::Param prm;
+        prm.side = CutSide::Inside;
+        Cut::Apply(m, {c}, prm);
+        EXPECT_NEAR(Area(m, true), enclosed, 1e-9 * 100) << "direction " << dir;
+        prm.side = CutSide::Smaller;
+        DMesh s;
+        Plate(s, 10, 1.0, 0.3, 21);
+        Cut::Apply(s, {PolygonCurve(s, poly)}, prm);
+        EXPECT_NEAR(Area(s, true), 100 - enclosed, 1e-9 * 100);
+    }
+}
+
+TEST(MeshCutTest, NonManifoldEdgeAlongTheCutIsRefused)
+{
+    DMesh m;
+    Plate(m, 6, 1.0, 0.0, 1);
+    // a fin on the interior edge between vertices (2,3) and (3,3): three faces on that edge
+    std::vector<vcg::Point3d> p;
+    std::vector<std::array<int, 3>> t;
+    for (const auto &v : m.vert) p.push_back(v.cP());
+    for (const auto &f : m.face) t.push_back({int(Index(m, f.cV(0))), int(Index(m, f.cV(1))), int(Index(m, f.cV(2)))});
+    const int a = 3 * 7 + 2, b = 3 * 7 + 3;
+    p.push_back(vcg::Point3d(2.5, 3.0, 1.0));
+    t.push_back({a, b, int(p.size()) - 1});
+    Build(m, p, t);
+    const std::string before = Snapshot(m);
+    // an open curve crossing that edge
+    const CutCurve across = PolygonCurve(m, {{2.5, 2.5}, {2.7, 3.5}, {1.5, 3.6}});
+    try {
+        Cut::Apply(m, {across}, Cut::Param());
+        ADD_FAILURE() << "a cut across a non-manifold edge";
+    } catch (const SnakeError &e) {
+        EXPECT_NE(std::string(e.what()).find("not manifold"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(Snapshot(m), before);
+}
