@@ -716,3 +716,34 @@ TEST(MeshCutTest, NonManifoldEdgeAlongTheCutIsRefused)
     }
     EXPECT_EQ(Snapshot(m), before);
 }
+
+TEST(MeshCutTest, MeshLabMeshSplitKeepsItsOptionalTextureCoordinates)
+{
+    // CMeshO keeps wedge texture coordinates and face quality optional: the parts have them too
+    DMesh d;
+    Plate(d, 6, 1.0, 0.2, 5);
+    CMeshO m;
+    Allocator<CMeshO>::AddVertices(m, d.vert.size());
+    for (size_t i = 0; i < d.vert.size(); ++i) m.vert[i].P() = CMeshO::CoordType::Construct(d.vert[i].P());
+    Allocator<CMeshO>::AddFaces(m, d.face.size());
+    m.face.EnableWedgeTexCoord();
+    m.face.EnableQuality();
+    for (size_t f = 0; f < d.face.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            m.face[f].V(k) = &m.vert[Index(d, d.face[f].V(k))];
+            m.face[f].WT(k).U() = 0.1f * m.face[f].V(k)->P()[0];
+            m.face[f].WT(k).V() = 0.1f * m.face[f].V(k)->P()[1];
+        }
+    CutCurve c = PolygonCurve(d, {{1.3, 1.7}, {4.6, 2.1}, {3.2, 4.4}});
+    CMeshO in, out;
+    MeshCut<CMeshO>::Split(m, {c}, MeshCut<CMeshO>::Param(), in, out);
+    for (CMeshO *part : {&in, &out}) {
+        ASSERT_TRUE(part->face.IsWedgeTexCoordEnabled());
+        EXPECT_TRUE(part->face.IsQualityEnabled());
+        for (const auto &f : part->face)
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_NEAR(f.cWT(k).U(), 0.1 * f.cV(k)->cP()[0], 1e-6);
+                EXPECT_NEAR(f.cWT(k).V(), 0.1 * f.cV(k)->cP()[1], 1e-6);
+            }
+    }
+}

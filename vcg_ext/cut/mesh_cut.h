@@ -103,13 +103,16 @@ public:
         Work wk = prepare(m, curves, p);
         auto t0 = clock::now();
         MeshType cut;
+        inside.Clear();
+        outside.Clear();
+        // the optional components MeshLab's meshes hold (texture coordinates, face colour and
+        // quality) come along into the copy and the parts
+        for (MeshType *d : {&cut, &inside, &outside}) EnableLike(*d, m);
         vcg::tri::Append<MeshType, MeshType>::MeshCopy(cut, m);
         CutCommit<MeshType>::Commit(cut, wk.w);
         wk.r.msCommit = ms(t0);
         t0 = clock::now();
         markSides(cut, wk);
-        inside.Clear();
-        outside.Clear();
         for (int part = 0; part < 2; ++part) {
             MeshType &dst = part == 0 ? inside : outside;
             for (size_t f = 0; f < cut.face.size(); ++f)
@@ -128,7 +131,30 @@ public:
         return wk.r;
     }
 
+    /// Enables on dst the optional (ocf) per-wedge texture coordinate, per-vertex texture
+    /// coordinate, per-face colour and quality that src has enabled; nothing for other meshes.
+    static void EnableLike(MeshType &dst, const MeshType &src)
+    {
+        enableWT(dst.face, src.face, 0);
+        enableFC(dst.face, src.face, 0);
+        enableFQ(dst.face, src.face, 0);
+        enableVT(dst.vert, src.vert, 0);
+    }
+
 private:
+    template <class C> static auto enableWT(C &d, const C &s, int) -> decltype(d.EnableWedgeTexCoord(), void())
+    { if (s.IsWedgeTexCoordEnabled() && !d.IsWedgeTexCoordEnabled()) d.EnableWedgeTexCoord(); }
+    template <class C> static void enableWT(C &, const C &, long) {}
+    template <class C> static auto enableFC(C &d, const C &s, int) -> decltype(d.EnableColor(), void())
+    { if (s.IsColorEnabled() && !d.IsColorEnabled()) d.EnableColor(); }
+    template <class C> static void enableFC(C &, const C &, long) {}
+    template <class C> static auto enableFQ(C &d, const C &s, int) -> decltype(d.EnableQuality(), void())
+    { if (s.IsQualityEnabled() && !d.IsQualityEnabled()) d.EnableQuality(); }
+    template <class C> static void enableFQ(C &, const C &, long) {}
+    template <class C> static auto enableVT(C &d, const C &s, int) -> decltype(d.EnableTexCoord(), void())
+    { if (s.IsTexCoordEnabled() && !d.IsTexCoordEnabled()) d.EnableTexCoord(); }
+    template <class C> static void enableVT(C &, const C &, long) {}
+
     typedef std::chrono::steady_clock clock;
     static double ms(clock::time_point t0) { return std::chrono::duration<double, std::milli>(clock::now() - t0).count(); }
 
