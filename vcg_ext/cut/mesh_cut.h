@@ -198,7 +198,7 @@ private:
                              std::string(p.mode == CutMode::Split ? "split into" : "select") +
                              " (only \"cut open\" makes a slit). Extend it to the mesh's boundary or close it. "
                              "The mesh was not changed.");
-        wk.sides = CutSides::Compute(wk.w, wk.curves, wk.curveEdges, wk.totalArea);
+        wk.sides = CutSides::Compute(wk.w, wk.curves, wk.curveEdges);
         if (needSides && !wk.sides.separated)
             throw SnakeError(std::string("Cut: the curve does not separate the surface into two sides (") +
                              (open ? "its sides join around it" : "a loop around a handle or a tube, such as a "
