@@ -478,6 +478,7 @@ void EditGeometricSnakePlugin::connectDock()
     clicked(d->exportSelected, [this] { exportCurves(false); });
     clicked(d->exportAll, [this] { exportCurves(true); });
     clicked(d->addLayer, [this] { addAsLayer(); });
+    connectCutButtons();
     clicked(d->saveSession, [this] {
         if (ctl && ctl->AutosavePath().empty()) {
             report("Geometric snake: this layer has no file name, so there is no sidecar file; use Export all.", true);

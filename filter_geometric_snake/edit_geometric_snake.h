@@ -141,6 +141,10 @@ private:
     void computeEnergy(bool show);
     void exportCurves(bool all);
     void addAsLayer();
+    /// Cut along the selected snake (edit_geometric_snake_cut.cpp): select one side, or split.
+    void cutSelect(bool inside);
+    void cutSplit();
+    void connectCutButtons();
     void usePickPoints();
     vcg::tri::SnakeParams paramsFromDock() const;
     void paramsToDock(const vcg::tri::SnakeParams &p);

@@ -201,6 +201,15 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     lp->addRow("Max operations", maxOperations);
     lp->addRow("Time limit (s)", timeLimit);
 
+    // --- cut (issue 34; last and closed, so it moves nothing above it)
+    QWidget *gc = section(v, "Cut", false);
+    QGridLayout *lc = new QGridLayout(gc);
+    cutSelectInside = button("Select inside", "Select the faces inside the selected closed snake (the side its Balloon inflates), whole faces by their centroid; the mesh is not changed");
+    cutSelectOutside = button("Select outside", "Select the faces on the other side of the selected snake (the inverse selection)");
+    cutSplit = button("Split into layers", "Add two layers, \"inside\" and \"outside\", cut exactly along the selected snake; this layer is not changed");
+    lc->addWidget(cutSelectInside, 0, 0);
+    lc->addWidget(cutSelectOutside, 0, 1);
+    lc->addWidget(cutSplit, 1, 0);
     v->addStretch(1);
 
     // the wheel edits a spin or combo box only when it has the focus (clicked or tabbed to);

@@ -77,6 +77,8 @@ public:
     QPushButton *newSnake, *deleteSnake;
     // output
     QPushButton *exportSelected, *exportAll, *addLayer, *saveSession;
+    // cut (edit_geometric_snake_cut.cpp)
+    QPushButton *cutSelectInside, *cutSelectOutside, *cutSplit;
     // status
     StatusLine *status;
 

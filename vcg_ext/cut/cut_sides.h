@@ -35,7 +35,6 @@ public:
         std::vector<int> stack[2];
         std::vector<char> onCurve;
         const std::unordered_set<long long> *curveEdges = nullptr;
-        double totalArea = 0;
         /// +1 when the first curve runs counter-clockwise seen from the front of its left side
         /// (its vector area agrees with the normals along it), as GeometricSnake::orientation
         /// decides the Balloon's outside: then its inside is on its left.
@@ -101,7 +100,7 @@ public:
     /// `curveEdges` holds the curves' edges (CurveEmbedding::CurveEdges). The other side is
     /// complete only after Complete().
     static Result Compute(const CutWorkMesh &w, const std::vector<EmbeddedCurve> &curves,
-                          const std::unordered_set<long long> &curveEdges, double totalArea)
+                          const std::unordered_set<long long> &curveEdges)
     {
         Result r;
         Seeds(w, curves, r);
@@ -110,7 +109,6 @@ public:
         for (const auto &c : curves)
             for (int v : c.chain) r.onCurve[v] = 1;
         r.curveEdges = &curveEdges;
-        r.totalArea = totalArea;
         for (int side = 0; side < 2; ++side)
             for (int f : side == 0 ? r.leftSeeds : r.rightSeeds) {
                 const unsigned char lab = side == 0 ? Left : Right;

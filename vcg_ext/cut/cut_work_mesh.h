@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -142,7 +143,7 @@ public:
             while (!((face[f].v[k] == a && face[f].v[(k + 1) % 3] == b) ||
                      (face[f].v[k] == b && face[f].v[(k + 1) % 3] == a)))
                 ++k;
-            const int p = face[f].v[k], q = face[f].v[(k + 1) % 3], r = face[f].v[(k + 2) % 3];
+            const int q = face[f].v[(k + 1) % 3], r = face[f].v[(k + 2) % 3];
             Face g;
             g.v[0] = x;
             g.v[1] = q;
@@ -152,7 +153,6 @@ public:
             addFace(g);
             detach(q, f);
             attach(x, f);
-            (void)p;
         }
         return x;
     }

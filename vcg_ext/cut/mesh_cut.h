@@ -103,13 +103,16 @@ public:
         Work wk = prepare(m, curves, p);
         auto t0 = clock::now();
         MeshType cut;
+        inside.Clear();
+        outside.Clear();
+        // the optional components MeshLab's meshes hold (texture coordinates, face colour and
+        // quality) come along into the copy and the parts
+        for (MeshType *d : {&cut, &inside, &outside}) EnableLike(*d, m);
         vcg::tri::Append<MeshType, MeshType>::MeshCopy(cut, m);
         CutCommit<MeshType>::Commit(cut, wk.w);
         wk.r.msCommit = ms(t0);
         t0 = clock::now();
         markSides(cut, wk);
-        inside.Clear();
-        outside.Clear();
         for (int part = 0; part < 2; ++part) {
             MeshType &dst = part == 0 ? inside : outside;
             for (size_t f = 0; f < cut.face.size(); ++f)
@@ -128,7 +131,30 @@ public:
         return wk.r;
     }
 
+    /// Enables on dst the optional (ocf) per-wedge texture coordinate, per-vertex texture
+    /// coordinate, per-face colour and quality that src has enabled; nothing for other meshes.
+    static void EnableLike(MeshType &dst, const MeshType &src)
+    {
+        enableWT(dst.face, src.face, 0);
+        enableFC(dst.face, src.face, 0);
+        enableFQ(dst.face, src.face, 0);
+        enableVT(dst.vert, src.vert, 0);
+    }
+
 private:
+    template <class C> static auto enableWT(C &d, const C &s, int) -> decltype(d.EnableWedgeTexCoord(), void())
+    { if (s.IsWedgeTexCoordEnabled() && !d.IsWedgeTexCoordEnabled()) d.EnableWedgeTexCoord(); }
+    template <class C> static void enableWT(C &, const C &, long) {}
+    template <class C> static auto enableFC(C &d, const C &s, int) -> decltype(d.EnableColor(), void())
+    { if (s.IsColorEnabled() && !d.IsColorEnabled()) d.EnableColor(); }
+    template <class C> static void enableFC(C &, const C &, long) {}
+    template <class C> static auto enableFQ(C &d, const C &s, int) -> decltype(d.EnableQuality(), void())
+    { if (s.IsQualityEnabled() && !d.IsQualityEnabled()) d.EnableQuality(); }
+    template <class C> static void enableFQ(C &, const C &, long) {}
+    template <class C> static auto enableVT(C &d, const C &s, int) -> decltype(d.EnableTexCoord(), void())
+    { if (s.IsTexCoordEnabled() && !d.IsTexCoordEnabled()) d.EnableTexCoord(); }
+    template <class C> static void enableVT(C &, const C &, long) {}
+
     typedef std::chrono::steady_clock clock;
     static double ms(clock::time_point t0) { return std::chrono::duration<double, std::milli>(clock::now() - t0).count(); }
 
@@ -172,7 +198,7 @@ private:
                              std::string(p.mode == CutMode::Split ? "split into" : "select") +
                              " (only \"cut open\" makes a slit). Extend it to the mesh's boundary or close it. "
                              "The mesh was not changed.");
-        wk.sides = CutSides::Compute(wk.w, wk.curves, wk.curveEdges, wk.totalArea);
+        wk.sides = CutSides::Compute(wk.w, wk.curves, wk.curveEdges);
         if (needSides && !wk.sides.separated)
             throw SnakeError(std::string("Cut: the curve does not separate the surface into two sides (") +
                              (open ? "its sides join around it" : "a loop around a handle or a tube, such as a "
@@ -203,60 +229,59 @@ private:
         return wk;
     }
 
-    /// faceSide, the face selection and the vertex selection from the work mesh's labels.
-    static void markSides(MeshType &m, Work &wk)
+    /// faceSide, the face selection and the vertex selection: the faces f with in(f).
+    template <class InFn>
+    static void select(MeshType &m, Result &r, InFn in)
     {
-        Result &r = wk.r;
         r.faceSide.assign(m.face.size(), 0);
         vcg::tri::UpdateSelection<MeshType>::FaceClear(m);
         vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
         r.facesInside = r.facesOutside = 0;
-        for (size_t f = 0; f < m.face.size() && f < wk.sides.label.size(); ++f) {
+        for (size_t f = 0; f < m.face.size(); ++f) {
             if (m.face[f].IsD()) continue;
-            const bool in = wk.sides.label[f] == wk.chosen && wk.sides.separated;
-            r.faceSide[f] = in ? 1 : 0;
-            if (in) {
-                m.face[f].SetS();
-                for (int k = 0; k < 3; ++k) m.face[f].V(k)->SetS();
-                ++r.facesInside;
-            } else ++r.facesOutside;
+            if (!in(int(f))) {
+                ++r.facesOutside;
+                continue;
+            }
+            r.faceSide[f] = 1;
+            m.face[f].SetS();
+            for (int k = 0; k < 3; ++k) m.face[f].V(k)->SetS();
+            ++r.facesInside;
         }
     }
 
-    /// SelectOnly: each user's face takes the side of the sub-face holding its centroid.
+    /// The selection from the work mesh's labels (its faces are the mesh's after the commit).
+    static void markSides(MeshType &m, Work &wk)
+    {
+        const auto &lab = wk.sides.label;
+        select(m, wk.r, [&](int f) { return wk.sides.separated && f < int(lab.size()) && lab[f] == wk.chosen; });
+    }
+
+    /// SelectOnly: each user's face takes the side of its sub-face holding its centroid.
     static void selectByCentroid(MeshType &m, Work &wk)
     {
         Result &r = wk.r;
-        r.faceSide.assign(m.face.size(), 0);
-        vcg::tri::UpdateSelection<MeshType>::FaceClear(m);
-        vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
-        r.facesInside = r.facesOutside = 0;
-        r.areaInside = 0;
-        for (size_t f = 0; f < m.face.size(); ++f) {
-            if (m.face[f].IsD()) continue;
+        const auto &split = wk.w.SplitParents();
+        select(m, r, [&](int f) {
             int lab = wk.sides.label[f];
-            const std::vector<int> ch = wk.w.Children(int(f));
-            if (ch.size() > 1) {
+            auto it = split.find(f);
+            if (it != split.end()) {
                 const vcg::Point3d c = (vcg::Point3d::Construct(m.face[f].cV(0)->cP()) +
                                         vcg::Point3d::Construct(m.face[f].cV(1)->cP()) +
                                         vcg::Point3d::Construct(m.face[f].cV(2)->cP())) / 3.0;
                 double best = -1e300;
-                for (int g : ch) {
+                for (int g : wk.w.Children(f)) {
                     const auto &G = wk.w.face[g];
                     vcg::Point3d l = CutCommit<MeshType>::Bary(wk.w.pos[G.v[0]], wk.w.pos[G.v[1]], wk.w.pos[G.v[2]], c);
                     const double mn = std::min(l[0], std::min(l[1], l[2]));
                     if (mn > best) { best = mn; lab = wk.sides.label[g]; }
                 }
             }
-            const bool in = lab == wk.chosen;
-            r.faceSide[f] = in ? 1 : 0;
-            if (in) {
-                m.face[f].SetS();
-                for (int k = 0; k < 3; ++k) m.face[f].V(k)->SetS();
-                ++r.facesInside;
-                r.areaInside += vcg::DoubleArea(m.face[f]) / 2;
-            } else ++r.facesOutside;
-        }
+            return lab == wk.chosen;
+        });
+        r.areaInside = 0;
+        for (size_t f = 0; f < m.face.size(); ++f)
+            if (r.faceSide[f]) r.areaInside += vcg::DoubleArea(m.face[f]) / 2;
         r.areaOutside = wk.totalArea - r.areaInside;
         r.addedVertices = r.addedFaces = 0;
     }
