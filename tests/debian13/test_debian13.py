@@ -100,7 +100,7 @@ def run_root(seeds):
     print(text)
     check(rc == 0, "gs_meshlab_check (MeshLab %s's PluginManager, I/O plugins and applyFilter) passed" % VERSION)
     check(("MeshLab %s (single precision)" % VERSION) in text, "the root's MeshLab library is %s, float" % VERSION)
-    for name in (mlhost.FILTER_ENERGY, mlhost.FILTER_SEED_PATH, mlhost.FILTER_SNAKE, mlhost.FILTER_EXPORT):
+    for name in (mlhost.FILTER_ENERGY, mlhost.FILTER_SEED_PATH, mlhost.FILTER_SNAKE, mlhost.FILTER_EXPORT, mlhost.FILTER_CUT):
         check(re.search(r'^FILTER "%s" python=\w+ ' % re.escape(name), text, re.M) is not None,
               "MeshLab %s lists the filter '%s' with a PyMeshLab name" % (VERSION, name))
     quality = [float(x) for x in open(ROOT + out + "/quality_1.txt").read().split()] \

@@ -97,7 +97,7 @@ int main(int argc, char **argv)
 	for (QAction *a : filters->actions())
 		std::printf("FILTER \"%s\" python=%s class=0x%x arity=%d\n", qUtf8Printable(a->text()),
 		            qUtf8Printable(filters->pythonFilterName(a)), unsigned(filters->getClass(a)), int(filters->filterArity(a)));
-	check(filters->actions().size() == 4, "the filter plugin has 4 filters");
+	check(filters->actions().size() == 5, "the filter plugin has 5 filters");
 	bool tool = false;
 	for (EditPlugin *ep : pm.editPluginFactoryIterator()) {
 		if (ep->pluginName() != "EditGeometricSnake") continue;

@@ -6,7 +6,8 @@ lines go to stdout (MeshSet.set_verbosity), after a "CASE name" line.
 
     pyml_filters.py PLUGIN PLAN.json RESULT.json
 
-PLAN: {"mesh": PATH, "cases": [{"name": ..., "filters": [[PYTHON_NAME, {param: value}], ...]}]}.
+PLAN: {"mesh": PATH, "cases": [{"name": ..., "filters": [[PYTHON_NAME, {param: value}], ...]}]}; a case's own
+"mesh" replaces the plan's.
 A filter whose name starts with "!" must fail (PyMeshLabException): its message is kept.
 """
 import ctypes
@@ -33,7 +34,7 @@ for case in plan["cases"]:
     libc.fflush(None)
     print("CASE " + case["name"], flush=True)
     ms = pymeshlab.MeshSet()
-    ms.load_new_mesh(plan["mesh"])
+    ms.load_new_mesh(case.get("mesh", plan["mesh"]))
     ms.set_verbosity(True)  # the plugin's Log lines on stdout
     out = {"errors": [], "outputs": []}
     for name, params in case["filters"]:

@@ -44,7 +44,8 @@ SNAKE_TOL = 0.25
 PY_NAMES = {mlhost.FILTER_ENERGY: "compute_scalar_by_geometric_snake_feature_energy",
             mlhost.FILTER_SEED_PATH: "compute_selection_by_geometric_snake_seed_path",
             mlhost.FILTER_SNAKE: "compute_geometric_snake_from_seed_vertices",
-            mlhost.FILTER_EXPORT: "save_geometric_snake_curves"}
+            mlhost.FILTER_EXPORT: "save_geometric_snake_curves",
+            mlhost.FILTER_CUT: "meshing_cut_along_geometric_snake"}
 
 
 def snake(out, seeds="", points="", pp="", new_layer=True):
@@ -79,7 +80,21 @@ def cases(side):
         "export": [snake("", seeds=s, new_layer=False),
                    (mlhost.FILTER_EXPORT, {"OutputFile": os.path.join(d, "export.json"), "Which": 0, "NewLayer": False})],
         "error": [("!" + mlhost.FILTER_SNAKE, snake("", seeds="0, 99999999")[1])],
+        # the cut filter on its own mesh (CASE_MESH): a plate and a snake file around a square of area 25
+        "cut": [(mlhost.FILTER_CUT, {"CurveFile": plate()[1], "Mode": 0, "Side": 0})],
     }
+
+
+def plate():
+    """mlhost.plate_and_square in WORK, made once: (mesh, curve file)."""
+    mesh, curve = os.path.join(WORK, "plate.ply"), os.path.join(WORK, "square.json")
+    if not os.path.exists(curve):
+        mesh, curve, _ = mlhost.plate_and_square(WORK)
+    return mesh, curve
+
+
+def case_mesh(name):
+    return plate()[0] if name == "cut" else MESH
 
 
 def py_value(name, value):
@@ -92,7 +107,7 @@ def run_pymeshlab():
     os.makedirs(os.path.join(WORK, "pymeshlab"), exist_ok=True)
     plan = {"mesh": MESH, "cases": []}
     for name, filters in cases("pymeshlab").items():
-        plan["cases"].append({"name": name, "filters": [
+        plan["cases"].append({"name": name, "mesh": case_mesh(name), "filters": [
             [("!" if f.startswith("!") else "") + PY_NAMES[f.lstrip("!")], {k.lower(): py_value(k, v) for k, v in p.items()}]
             for f, p in filters]})
     plan_path, result_path = os.path.join(WORK, "plan.json"), os.path.join(WORK, "pymeshlab.json")
@@ -120,7 +135,7 @@ def run_meshlabserver():
     for name, filters in cases("meshlabserver").items():
         mlx = os.path.join(d, name + ".mlx")
         mlhost.write_mlx(mlx, [(f.lstrip("!"), p) for f, p in filters])
-        args = ["-i", MESH, "-o", os.path.join(d, name + ".ply"), "-m", "vq", "vf"]
+        args = ["-i", case_mesh(name), "-o", os.path.join(d, name + ".ply"), "-m", "vq", "vf"]
         if name == "seed_path":
             args += ["-o", os.path.join(d, name + "_layer.ply"), "-l", "x"]
         rc, logs[name] = mlhost.run_meshlabserver(args + ["-s", mlx])
@@ -164,7 +179,7 @@ def filters():
     if py.get("load") != "ok":
         return
     check(sorted(py["filters"]) == sorted(PY_NAMES.values()),
-          "PyMeshLab lists the 4 filters by their Python names: %s" % py["filters"])
+          "PyMeshLab lists the %d filters by their Python names: %s" % (len(PY_NAMES), py["filters"]))
     ms_rc, mslog = run_meshlabserver()
     c = py["cases"]
     for name, rc in ms_rc.items():
@@ -212,6 +227,14 @@ def filters():
         d = sorted(math.hypot(1.0 - s["position"][0], 1.0 - s["position"][1]) / h for s in v["samples"])
         check(d[int(0.95 * (len(d) - 1))] < 0.6, "PyMeshLab's snake captured the cube edge (95%% of the samples within "
               "%.3f h)" % d[int(0.95 * (len(d) - 1))])
+
+    # the cut: the same vertices (the curve embedded) and the same ones selected inside the square
+    cut_ms = ms("cut")
+    sel_ms = [i for i, v in enumerate(cut_ms) if v["flags"] & mlhost.SELECTED]
+    inside = [i for i, v in enumerate(cut_ms) if 2.5 - 1e-9 <= v["x"] <= 7.5 + 1e-9 and 2.5 - 1e-9 <= v["y"] <= 7.5 + 1e-9]
+    check(c["cut"]["vertices"] == len(cut_ms) and c["cut"]["selected"] == sel_ms and sel_ms == inside,
+          "cut: the same %d vertices, the same %d selected, exactly those in the square (PyMeshLab: %d, %d)"
+          % (len(cut_ms), len(sel_ms), c["cut"]["vertices"], len(c["cut"]["selected"])))
 
     # a bad seed: PyMeshLabException with the plugin's message, as meshlabserver's Log has it
     err = c["error"]["errors"]
