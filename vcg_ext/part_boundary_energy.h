@@ -19,6 +19,12 @@
 // dimensionless by r; the concavity c = max(0, -k_min r) maps to E = exp(-c / c_ref), with
 // c_ref the median concavity of the concave vertices: strong valleys go to 0, flat ground
 // stays at 1, whatever the mesh's size.
+//
+// vcglib's UpdateCurvatureFitting::updateCurvatureLocal fits the same kind of quadric in a
+// sphere, but walks VF adjacency (Nring) and writes the optional curvature components: the
+// feature energies read no adjacency, so that they run beside MeshLab's adjacency build on a
+// second core (SnakeEnergySource::ComputeBeside), and its radius is one length for the whole
+// mesh where this one follows the local edge length. The vertex graph is built here instead.
 
 #include <algorithm>
 #include <cmath>
