@@ -98,6 +98,8 @@ GS_ENERGY_BENCH(CurvatureNorm_0, FeatureEnergyType::CurvatureNorm, 0);
 GS_ENERGY_BENCH(QuadricError_0, FeatureEnergyType::QuadricError, 0);
 // The crease energy (dihedral angles, then each face's nearest creases through vcglib's grid).
 GS_ENERGY_BENCH(Crease_2, FeatureEnergyType::Crease, 2);
+// The part-boundary energy (issue 33): a quadric fitted over 3 local edge lengths per vertex.
+GS_ENERGY_BENCH(PartBoundary_2, FeatureEnergyType::PartBoundary, 2);
 BENCHMARK(BM_FaceGradients)->Unit(benchmark::kMillisecond)->Iterations(3)->Repetitions(3)->ReportAggregatesOnly(true);
 BENCHMARK(BM_Inspect)->Unit(benchmark::kMillisecond)->Iterations(3)->Repetitions(3)->ReportAggregatesOnly(true);
 BENCHMARK(BM_SeedPathShort)->Unit(benchmark::kMillisecond)->Iterations(3)->Repetitions(3)->ReportAggregatesOnly(true);

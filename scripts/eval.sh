@@ -8,6 +8,9 @@
 #   scripts/eval.sh --capture  the capture-range sweep only (issue 9, a few minutes): seeds 1-6
 #                              edge lengths off a crease, both methods -> docs/eval/capture.csv,
 #                              results.md and docs/img/capture_range.svg (the other results kept)
+#   scripts/eval.sh --parts    closed snakes on part boundaries drawn by people (issue 33, ~2 min):
+#                              bench/eval/gs_parts on ../shared/data/segmentation, both energies ->
+#                              docs/eval/parts.csv, parts.md, docs/img/parts_distance.svg
 #
 # Environment: BUILD_DIR (default /work/build-eval), MESHLAB_SOURCE_DIR (default
 # <repo>/build/meshlab-src), JOBS (default 2).
@@ -19,7 +22,9 @@ MESHLAB_SOURCE_DIR="${MESHLAB_SOURCE_DIR:-$ROOT/build/meshlab-src}"
 JOBS="${JOBS:-2}"
 QUICK=0
 CAPTURE_ONLY=0
+PARTS_ONLY=0
 [[ "${1:-}" == "--quick" ]] && QUICK=1
+[[ "${1:-}" == "--parts" ]] && PARTS_ONLY=1
 [[ "${1:-}" == "--capture" ]] && CAPTURE_ONLY=1
 
 OUT="$ROOT/docs/eval"
@@ -29,11 +34,22 @@ T0=$(date +%s)
 
 TARGETS="gs_eval bench_table1"
 [[ $CAPTURE_ONLY == 1 ]] && TARGETS="gs_eval"
+[[ $PARTS_ONLY == 1 ]] && TARGETS="gs_parts"
 echo "== build ($TARGETS) in $BUILD_DIR"
 mkdir -p "$BUILD_DIR"
 cmake -S "$ROOT" -B "$BUILD_DIR" -DGS_BUILD_PLUGINS=OFF -DMESHLAB_SOURCE_DIR="$MESHLAB_SOURCE_DIR" \
       -DCMAKE_BUILD_TYPE=Release > "$BUILD_DIR/gs_eval_build.log" 2>&1
 cmake --build "$BUILD_DIR" -j"$JOBS" --target $TARGETS >> "$BUILD_DIR/gs_eval_build.log" 2>&1
+
+if [[ $PARTS_ONLY == 1 ]]; then
+  echo "== closed snakes on part boundaries drawn by people"
+  "$BUILD_DIR/bench/eval/gs_parts" --energy normal,part --rings 2,3 --out "$OUT/parts.csv" 2> "$OUT/parts.log"
+  grep -E "^(normal|part) +ALL|done" "$OUT/parts.log"
+  python3 "$ROOT/bench/eval/parts_report.py" "$OUT/parts.csv" "$OUT" > /dev/null
+  cp "$OUT/parts_distance.svg" "$ROOT/docs/img/parts_distance.svg"
+  echo "== done in $(( $(date +%s) - T0 )) s: $OUT/parts.md"
+  exit 0
+fi
 
 echo "== capture range (seeds 1-6 h off a crease)"
 if [[ $QUICK == 1 ]]; then

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include <common/ml_mesh_type.h>
+#include <snake_test_util.h>
 #include <wrap/io_trimesh/import_off.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
@@ -298,20 +299,7 @@ inline std::vector<int> Seeds(CMeshO &m, const Part &p, int ring, int sideWanted
     return seeds;
 }
 
-inline double DistToSegment(const P3 &p, const P3 &a, const P3 &b)
-{
-    const P3 ab = b - a;
-    const double l2 = ab.SquaredNorm();
-    double t = l2 > 0 ? ((p - a) * ab) / l2 : 0;
-    t = std::max(0.0, std::min(1.0, t));
-    return (p - (a + ab * t)).Norm();
-}
-inline double DistToLoop(const P3 &p, const std::vector<P3> &l)
-{
-    double d = 1e300;
-    for (size_t i = 0; i < l.size(); ++i) d = std::min(d, DistToSegment(p, l[i], l[(i + 1) % l.size()]));
-    return d;
-}
+inline double DistToLoop(const P3 &p, const std::vector<P3> &l) { return gs_test::DistToPolyline(p, l, true); }
 inline std::vector<P3> ResampleLoop(const std::vector<P3> &pl, double step)
 {
     std::vector<P3> out;

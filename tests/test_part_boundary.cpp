@@ -236,3 +236,20 @@ TEST(PartBoundaryBenchmark, TeddyPartsCapturedByThePartBoundaryEnergyOnly)
         }
     }
 }
+
+// The snakes read the part-boundary energy on level 0 only (the pyramid let loops collapse), and
+// every other energy through the pyramid, also after switching energies on the same surface.
+TEST(PartBoundaryEnergy, ReadWithoutThePyramid)
+{
+    CMeshO m;
+    MakeRevolved(m, Waist, 0.0);
+    SnakeEnergySource<CMeshO> src(m);
+    src.SetSettings(FeatureEnergyType::PartBoundary, 2);
+    EXPECT_EQ(src.EnsureSurface()->Levels(), 1);
+    src.SetSettings(FeatureEnergyType::NormalVariation, 2);
+    EXPECT_GT(src.EnsureSurface()->Levels(), 1);
+    src.SetSettings(FeatureEnergyType::PartBoundary, 2);
+    EXPECT_EQ(src.EnsureSurface()->Levels(), 1);
+    src.UseQuality();
+    EXPECT_GT(src.EnsureSurface()->Levels(), 1);
+}

@@ -156,7 +156,7 @@ public:
     /// None for the part-boundary energy (issue 33): its curvature fit over a few edge lengths
     /// is its capture range already, and the pyramid's smoothing of it lets a loop shrink past
     /// the valley (bench/eval/gs_parts, 220 loops: 20 collapsed with the pyramid, 2 without;
-    /// 45 and 43 % captured).
+    /// 43 % captured either way).
     static int CaptureSmoothingFor(bool quality, FeatureEnergyType t)
     {
         return !quality && t == FeatureEnergyType::PartBoundary ? 0 : Surface::DefaultCaptureSmoothing();
