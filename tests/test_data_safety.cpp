@@ -16,6 +16,7 @@
 
 #include <snake_test_util.h>
 #include <vcg_ext/safe_file_write.h>
+#include <vcg_ext/seed_points.h>
 #include <vcg_ext/snake_controller.h>
 #include <vcg_ext/snake_io.h>
 
@@ -409,12 +410,12 @@ TEST(SmallerOnes, TooManySamplesBlamesTheRightCause)
     CMeshO m;
     PrepareGrid(m, 100);
     auto surf = std::make_shared<SnakeSurface<CMeshO>>(m);
-    // thousands of seeds back and forth: the path is too long, whatever the spacing
+    // thousands of seeds back and forth: too many seeds (issue 36: refused before any search)
     std::vector<int> seeds;
     for (int i = 0; i < 3000; ++i) seeds.push_back(50 * 101 + (i % 2) * 100);
     Snake s(surf);
     std::string e = ErrorOf([&] { s.InitFromSeeds(seeds, false); });
-    EXPECT_NE(e.find("seed path is too long"), std::string::npos) << e;
+    EXPECT_NE(e.find("3000 seed vertices are given: one path or snake joins at most 1000"), std::string::npos) << e;
     // a short path at a tiny spacing: the spacing
     SnakeParams p;
     p.spacing = 0.05;
@@ -431,4 +432,43 @@ TEST(SmallerOnes, AnOpenSnake)
     PrepareGrid(m, 5);
     const std::string e = ErrorOf([&] { SeedPath<CMeshO>::Compute(m, {3}, false); });
     EXPECT_NE(e.find("An open snake"), std::string::npos) << e;
+}
+
+// Issue 36: a FIFO (or a folder, a device) given as a Pick Points or curve/session file blocked
+// the reader forever; InputFile::Require refuses it at once, for the filters, the tool and the program.
+TEST(DataSafety, NonRegularInputsAreRefusedAtOnce)
+{
+    TempDir t;
+    const std::string fifo = t / "points.pp";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto t0 = std::chrono::steady_clock::now();
+    for (const std::string &p : {fifo, t.dir.string(), std::string("/dev/zero")}) {
+        try {
+            SeedPointsParser::ReadPickPointsFile(p);
+            ADD_FAILURE() << p << " was read";
+        } catch (const SnakeError &e) {
+            EXPECT_NE(std::string(e.what()).find("Cannot read the Pick Points file"), std::string::npos) << e.what();
+        }
+        EXPECT_THROW(SnakeIO<CMeshO>::ParseFileLean(p), SnakeError) << p;
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+}
+
+// Issue 36: temporary files are named for their target and process, listed while they exist
+// (a signal handler removes them), and a later write removes what a dead process left.
+TEST(DataSafety, TemporaryFilesOfDeadProcessesAreRemoved)
+{
+    TempDir t;
+    const std::string target = t / "curve.json";
+    const std::string prefix = SafeFileWrite::TempPrefix(target, 4194305); // beyond Linux's pid_max
+    EXPECT_NE(prefix.find("/.curve.json.gs-tmp-4194305-"), std::string::npos) << prefix;
+    std::ofstream(prefix + "abc") << "partial";
+    std::ofstream(SafeFileWrite::TempPrefix(target, long(::getpid())) + "live") << "ours";
+    SafeFileWrite::Write(target, "{}\n");
+    EXPECT_FALSE(fs::exists(prefix + "abc"));
+    EXPECT_TRUE(fs::exists(SafeFileWrite::TempPrefix(target, long(::getpid())) + "live")) << "a live process's";
+    std::ofstream(t / "listed") << "x";
+    TempFiles::Add(t / "listed");
+    TempFiles::RemoveAll();
+    EXPECT_FALSE(fs::exists(t / "listed"));
 }

@@ -533,7 +533,7 @@ void MakeVRidge(CMeshO &m, int n, double deg)
 // feature maps to 0 whatever its share of the mesh; the flats stay at 1.
 TEST(FeatureEnergy, ThinRidgeSurvivesOnFineGrids)
 {
-    for (int n : {100, 300, 600}) {
+    for (int n : {100, 300, 600}) { // 1000 x 1000 (2M faces): the same, by hand with geometric-snake energy
         for (int steps : {0, 2}) {
             CMeshO m;
             MakeVRidge(m, n, 33);

@@ -10,6 +10,7 @@
 #include <iterator>
 
 #include <gs_fuzz.h>
+#include <gs_fuzz_mesh.h>
 
 namespace {
 
@@ -64,6 +65,13 @@ TEST(FuzzCorpus, SeedString) { Replay("seed_string", gs_fuzz::SeedString, 4); }
 TEST(FuzzCorpus, SeedPoints) { Replay("seed_points", gs_fuzz::SeedPoints, 4); }
 
 TEST(FuzzCorpus, PickPoints) { Replay("pick_points", gs_fuzz::PickPoints, 3); }
+
+// The program's mesh loading (issue 36: vcglib's OBJ importer crashed on a far index and dropped
+// the faces at vertex 1; negative PLY/OFF counts reached std::vector).
+TEST(FuzzCorpus, MeshObj) { Replay("mesh_obj", gs_fuzz::MeshObj, 3); }
+TEST(FuzzCorpus, MeshPly) { Replay("mesh_ply", gs_fuzz::MeshPly, 3); }
+TEST(FuzzCorpus, MeshOff) { Replay("mesh_off", gs_fuzz::MeshOff, 3); }
+TEST(FuzzCorpus, MeshStl) { Replay("mesh_stl", gs_fuzz::MeshStl, 2); }
 
 // Found by fuzz_seed_points: a seed point 8.9e12 away went into vcglib's grid, whose
 // float-to-int cell index is undefined there (UBSan: grid_util.h PToIP). It must be refused

@@ -7,10 +7,11 @@
 //
 // The flat end is a high percentile of all values (most of a mesh is flat), the feature end a
 // low percentile (so a single spike does not squash the range). When features are fewer than
-// that percentile, it falls on the flat level: a thin crease on a fine mesh (one line of
-// vertices, 0.1 % of a 1000 x 1000 grid) counted as outliers made the field constant. Then the
-// feature end is the same percentile of the *non-flat* values only, of which the crease is all:
-// the strongest features map to 0 whatever their share of the mesh.
+// that percentile, it falls on (or just below) the flat level: a thin crease on a fine mesh (one
+// line of vertices, 0.1 % of a 1000 x 1000 grid) counted as outliers made the field constant.
+// Then the feature end is the same percentile of the *non-flat* values only, of which the crease
+// is all (or a clear part, beside float noise): the strongest features map to 0 whatever their
+// share of the mesh, and a single spike still cannot squash the range.
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +40,11 @@ struct EnergyRange
         const size_t il = size_t(std::floor(tail * double(n - 1)));
         std::nth_element(vals.begin(), vals.begin() + il, vals.begin() + ih);
         r.lo = vals[il];
-        if (!(r.lo < flat)) { // the features are fewer than `tail`: take them from the non-flat part
+        const double least = *std::min_element(vals.begin(), vals.begin() + il + 1);
+        // The features are fewer than `tail` when the percentile falls on the flat level or just
+        // below it (float noise of a tessellated plane, the edge of a smoothed crease): a range
+        // under 5 % of the full one. Then take them from the non-flat part.
+        if (!(r.lo < flat) || r.hi - r.lo < 0.05 * (r.hi - least)) {
             const auto mid = std::partition(vals.begin(), vals.begin() + ih, [flat](double x) { return x < flat; });
             const size_t k = size_t(mid - vals.begin());
             if (k == 0) return r;

@@ -68,8 +68,8 @@ public:
 private:
     static char (&Slots())[16][4096]
     {
-        static char slots[16][4096];
-        return slots;
+        static char names[16][4096];
+        return names;
     }
 };
 

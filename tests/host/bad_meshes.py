@@ -172,7 +172,7 @@ PLY_HEAD = ("ply\nformat ascii 1.0\nelement vertex %s\nproperty float x\npropert
 
 # Files MeshLab 2020.09's own importers (vcglib) abort on while opening them, before any plugin
 # runs: the host test records it, the program must refuse them cleanly (issue 36).
-HOST_IMPORTER_ABORTS = {"obj_vertex_one", "obj_far_index", "ply_negative_count", "ply_count_past_int64",
+HOST_IMPORTER_ABORTS = {"obj_vertex_one", "obj_cube", "obj_far_index", "ply_negative_count", "ply_count_past_int64",
                         "off_negative_counts"}
 
 
