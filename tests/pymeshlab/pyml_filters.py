@@ -30,10 +30,15 @@ except pymeshlab.PyMeshLabException as e:  # the loader's own message (version, 
 result["filters"] = [f for f in pymeshlab.filter_list() if "geometric_snake" in f]
 
 libc = ctypes.CDLL(None)  # PyMeshLab logs through C stdio: flushed before each marker, in order
+# Every MeshSet lives to the end: in PyMeshLab 2025.7 a MeshSet destroyed after one of its filters raised
+# leaves a dangling log behind, and the next load_new_mesh crashes (std::bad_alloc or SIGSEGV in
+# GLLogStream::log), whatever plugin raised (PyMeshLab issue #399; README, "PyMeshLab").
+kept = []
 for case in plan["cases"]:
     libc.fflush(None)
     print("CASE " + case["name"], flush=True)
     ms = pymeshlab.MeshSet()
+    kept.append(ms)
     ms.load_new_mesh(case.get("mesh", plan["mesh"]))
     ms.set_verbosity(True)  # the plugin's Log lines on stdout
     out = {"errors": [], "outputs": []}
