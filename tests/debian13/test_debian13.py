@@ -46,6 +46,12 @@ TOL = 1e-6
 ENERGY = (mlhost.FILTER_ENERGY, {"EnergyType": 0, "SmoothingSteps": 2, "Colorize": True})
 
 
+def seed_path(seeds):
+    """The feature-cost path between the first and last seed, as a new layer (and the vertex selection)."""
+    s = seeds.split(",")
+    return (mlhost.FILTER_SEED_PATH, {"Seeds": "%s, %s" % (s[0], s[-1]), "Closed": False, "Cost": 1, "NewLayer": True})
+
+
 def snake(seeds, out):
     return (mlhost.FILTER_SNAKE, {"Seeds": seeds, "Closed": False, "Alpha": 0.05, "Beta": 0.5, "Gamma": 1.0,
                                   "ExternalWeight": 1.0, "Spacing": 1.0, "MaxOperations": 500, "Method": 0,
@@ -89,7 +95,7 @@ def run_root(seeds):
     out = "/opt/gs/out"
     shutil.rmtree(ROOT + out, ignore_errors=True)
     os.makedirs(ROOT + out)
-    args = cli_args([ENERGY, snake(seeds, out + "/snake.json"),
+    args = cli_args([ENERGY, snake(seeds, out + "/snake.json"), seed_path(seeds),
                      ("!" + mlhost.FILTER_SNAKE, {"Seeds": "0, 99999999"})])
     # MeshLab's own libraries on the library path, as the meshlab program's RUNPATH has them: since
     # 2023 some of MeshLab's plugins (edit_align, edit_pickpoints) need libmeshlab-common-gui.so
@@ -106,7 +112,12 @@ def run_root(seeds):
     quality = [float(x) for x in open(ROOT + out + "/quality_1.txt").read().split()] \
         if os.path.exists(ROOT + out + "/quality_1.txt") else []
     j = json.load(open(ROOT + out + "/snake.json")) if os.path.exists(ROOT + out + "/snake.json") else None
-    return text, quality, j
+    # the seed path (run 3): its selected vertices and its layer
+    m = re.search(r"^SELECTED 3:(.*)$", text, re.M)
+    layer = ROOT + out + "/layer_3_1.txt"
+    path = {"selected": [int(x) for x in m.group(1).split()] if m else None,
+            "layer": [float(x) for x in open(layer).read().split()] if os.path.exists(layer) else []}
+    return text, quality, j, path
 
 
 def run_2020(seeds):
@@ -122,10 +133,17 @@ def run_2020(seeds):
     rc1, log1 = mlhost.run_meshlabserver(["-i", mesh, "-o", energy_ply, "-m", "vq", "-s", energy_mlx])
     mlhost.write_mlx(snake_mlx, [snake(seeds, snake_json)])
     rc2, log2 = mlhost.run_meshlabserver(["-i", mesh, "-s", snake_mlx])
-    check(rc1 == 0 and rc2 == 0, "meshlabserver 2020.09 ran the same filters")
+    path_mlx, path_ply, layer_ply = (os.path.join(WORK, f) for f in ("path.mlx", "path_2020.ply", "path_layer_2020.ply"))
+    mlhost.write_mlx(path_mlx, [seed_path(seeds)])
+    rc3, log3 = mlhost.run_meshlabserver(["-i", mesh, "-o", path_ply, "-m", "vf", "-o", layer_ply, "-l", "x", "-s", path_mlx])
+    check(rc1 == 0 and rc2 == 0 and rc3 == 0, "meshlabserver 2020.09 ran the same filters")
     quality = [v["quality"] for v in mlhost.read_ply(energy_ply).vertices] if os.path.exists(energy_ply) else []
     j = json.load(open(snake_json)) if os.path.exists(snake_json) else None
-    return log1 + log2, quality, j
+    path = {"selected": [i for i, v in enumerate(mlhost.read_ply(path_ply).vertices) if v["flags"] & mlhost.SELECTED]
+            if os.path.exists(path_ply) else None,
+            "layer": [c for v in mlhost.read_ply(layer_ply).vertices for c in (v["x"], v["y"], v["z"])]
+            if os.path.exists(layer_ply) else []}
+    return log1 + log2 + log3, quality, j, path
 
 
 def raw_range(log):
@@ -136,8 +154,17 @@ def raw_range(log):
 def filters():
     seeds, h = mlhost.cube_edge_seeds(os.path.join(SRC, "data", ICOCUBE), 2.5)
     seeds = ",".join(map(str, seeds))
-    log_root, q_root, j_root = run_root(seeds)
-    log20, q20, j20 = run_2020(seeds)
+    log_root, q_root, j_root, path_root = run_root(seeds)
+    log20, q20, j20, path20 = run_2020(seeds)
+
+    # The seed path: the same vertices selected, the same path layer in order.
+    sel = path_root["selected"]
+    check(sel is not None and len(sel) > 2 and sel == path20["selected"],
+          "same seed path: %s selected vertices %s, 2020.09 %s" % (VERSION, sel, path20["selected"]))
+    a, b = path_root["layer"], path20["layer"]
+    check(len(a) > 6 and len(a) == len(b) and max_diff(a, b) <= TOL,
+          "same seed path layer: %d vs %d vertices in order, max |coordinate difference| %.3g (<= %g)"
+          % (len(a) // 3, len(b) // 3, max_diff(a, b) if len(a) == len(b) else float("nan"), TOL))
 
     # The energy filter writes the vertex quality, over [0,1], in both.
     check(len(q_root) > 0 and min(q_root) == 0.0 and max(q_root) == 1.0,

@@ -7,8 +7,9 @@
 //   gs_meshlab_check PLUGIN_DIR MESH OUT_DIR [FILTER_NAME [Param=Value ...]] [-- FILTER ...]
 //
 // Prints the plugin list, the Log and one "RESULT" line per filter; after the energy filter
-// writes the per-vertex quality to OUT_DIR/quality_<n>.txt. A filter named "!NAME" must fail
-// (MeshLab's MLException), its message is printed. Exit status 0 = every check held.
+// writes the per-vertex quality to OUT_DIR/quality_<n>.txt, and after every filter the selected
+// vertices ("SELECTED") and the coordinates of each added layer (OUT_DIR/layer_<n>_<k>.txt). A
+// filter named "!NAME" must fail (MeshLab's MLException), its message is printed. Exit status 0 = every check held.
 
 #include <cstdio>
 #include <fstream>
@@ -172,6 +173,23 @@ int main(int argc, char **argv)
 			std::printf(" quality=[%.9g,%.9g] quality_file=%s", lo, hi, qUtf8Printable(qpath));
 		}
 		std::printf("\n");
+		// The selection a filter left (the seed path's vertices, in index order) and the layers it
+		// added (coordinates in OUT_DIR/layer_<n>_<k>.txt, in vertex order), for comparison.
+		std::printf("SELECTED %d:", n);
+		for (size_t i = 0; i < m.vert.size(); ++i)
+			if (!m.vert[i].IsD() && m.vert[i].IsS()) std::printf(" %zu", i);
+		std::printf("\n");
+		int k = 0;
+		for (MeshModel &layer : md.meshIterator()) {
+			if (k++ == 0) continue;
+			const QString lpath = QDir(outDir).absoluteFilePath(QString("layer_%1_%2.txt").arg(n).arg(k - 1));
+			std::ofstream l(lpath.toStdString());
+			l.precision(9);
+			for (const auto &v : layer.cm.vert)
+				if (!v.IsD()) l << v.cP()[0] << " " << v.cP()[1] << " " << v.cP()[2] << "\n";
+			std::printf("LAYER %d %d \"%s\" vertices=%d edges=%d file=%s\n", n, k - 1, qUtf8Printable(layer.label()),
+			            layer.cm.vn, layer.cm.en, qUtf8Printable(lpath));
+		}
 	}
 	std::printf("%s: %d check(s) failed\n", failures ? "FAILED" : "OK", failures);
 	return failures ? 1 : 0;
