@@ -44,6 +44,17 @@ void EnableSnakeAdjacency(M &m)
 }
 
 /// Index of the mesh vertex nearest to p.
+/// The set-up most snake tests share: the engine's adjacency, unit face normals, the feature
+/// energy in the vertex quality (2 smoothing steps, as the filters' default) and a surface over it.
+inline std::shared_ptr<vcg::tri::SnakeSurface<CMeshO>> SurfaceWithEnergy(
+    CMeshO &m, vcg::tri::FeatureEnergyType type = vcg::tri::FeatureEnergyType::NormalVariation, int smoothing = 2)
+{
+    EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
+    vcg::tri::FeatureEnergy<CMeshO>::Compute(m, type, smoothing);
+    return std::make_shared<vcg::tri::SnakeSurface<CMeshO>>(m);
+}
+
 template <class M>
 int NearestVertex(const M &m, const vcg::Point3d &p)
 {

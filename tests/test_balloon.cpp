@@ -27,10 +27,7 @@ std::shared_ptr<Surface> MakeRidges(CMeshO &m)
         const double r = std::hypot(x - kCentre[0], y - kCentre[1]);
         return kHeight * (std::max(0.0, 1 - std::abs(r - kInner) / kWidth) + std::max(0.0, 1 - std::abs(r - kOuter) / kWidth));
     });
-    EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
-    return std::make_shared<Surface>(m);
+    return gs_test::SurfaceWithEnergy(m);
 }
 
 std::vector<int> Circle(const CMeshO &m, double r, int count, bool clockwise)

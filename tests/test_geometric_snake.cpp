@@ -729,10 +729,7 @@ TEST_P(FandiskAccuracy, SnakeLandsOnSharpEdges)
 {
     CMeshO m;
     ASSERT_TRUE(gs_test::LoadMesh(m, std::string(GS_DATA_DIR) + "/fandisk.ply"));
-    EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
-    auto surf = std::make_shared<Surface>(m);
+    auto surf = gs_test::SurfaceWithEnergy(m);
     const double h = surf->MeanEdge();
     std::vector<int> chain = LongestSharpChain(m);
     ASSERT_GE(chain.size(), 10u);

@@ -17,10 +17,7 @@ namespace {
 
 std::shared_ptr<Surface> Prepare(CMeshO &m)
 {
-    EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
-    return std::make_shared<Surface>(m);
+    return gs_test::SurfaceWithEnergy(m);
 }
 
 /// The mesh's edge length near p: the median edge of the faces around the vertex nearest to p.

@@ -98,10 +98,7 @@ struct EndCase
 
 std::shared_ptr<Surface> Prepare(CMeshO &m)
 {
-    EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
-    return std::make_shared<Surface>(m);
+    return gs_test::SurfaceWithEnergy(m);
 }
 
 // ----- a straight crease with a chamfer: a second, parallel crease `gap` cells beside it

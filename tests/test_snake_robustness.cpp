@@ -153,10 +153,7 @@ INSTANTIATE_TEST_SUITE_P(Plates, FlatEmbedding,
 namespace {
 std::shared_ptr<Surface> PrepareWithEnergy(CMeshO &m)
 {
-    EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
-    return std::make_shared<Surface>(m);
+    return gs_test::SurfaceWithEnergy(m);
 }
 std::vector<int> CircleSeeds(const CMeshO &m, vcg::Point3d c, double r, int count, double z)
 {

@@ -20,10 +20,7 @@ namespace {
 
 std::shared_ptr<Surface> WithEnergy(CMeshO &m)
 {
-    EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m);
-    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::NormalVariation, 2);
-    return std::make_shared<Surface>(m);
+    return gs_test::SurfaceWithEnergy(m);
 }
 
 std::vector<int> Circle(const CMeshO &m, vcg::Point3d c, double r, int count)
