@@ -10,8 +10,8 @@
 #include <common/ml_mesh_type.h>
 
 #include "generated_meshes.h"
-#include "vcg_ext/feature_energy.h"
-#include "vcg_ext/seed_path.h"
+#include "vcg_ext/energy/feature_energy.h"
+#include "vcg_ext/paths/seed_path.h"
 
 namespace {
 

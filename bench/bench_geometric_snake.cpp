@@ -28,7 +28,7 @@
 #include <memory>
 
 #include <snake_bench_util.h>
-#include <vcg_ext/snake_energy_source.h>
+#include <vcg_ext/energy/energy_source.h>
 
 namespace {
 

@@ -29,11 +29,11 @@
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
-#include <vcg_ext/input_file.h>
-#include <vcg_ext/safe_file_write.h>
+#include <vcg_ext/io/input_file.h>
+#include <vcg_ext/io/safe_file_write.h>
 #include "mesh_header.h"
 #include "obj_faces.h"
-#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake/error.h>
 
 namespace gs_cli {
 

@@ -1,5 +1,5 @@
 // geometric-snake: the plugin's batch operations as one command-line program, over the same
-// vcg_ext engine, with the same parameters (vcg_ext/snake_param_defs.h) and outputs (JSON
+// vcg_ext engine, with the same parameters (vcg_ext/session/param_defs.h) and outputs (JSON
 // contract, OBJ `l` records, PLY edges, the mesh with the energy in its quality).
 //
 //   geometric-snake energy MESH [--type normal|curvature|quadric|crease|part] [--smoothing K] -o OUT.ply
@@ -38,16 +38,16 @@
 #include <vcg/complex/algorithms/update/color.h>
 #include <vcg_ext/cut/cut_curve_io.h>
 #include <vcg_ext/cut/mesh_cut.h>
-#include <vcg_ext/feature_energy.h>
-#include <vcg_ext/mesh_validation.h>
-#include <vcg_ext/seed_path.h>
-#include <vcg_ext/snake_batch.h>
-#include <vcg_ext/snake_controller.h>
-#include <vcg_ext/snake_io.h>
-#include <vcg_ext/seed_points.h>
-#include <vcg_ext/snake_param_defs.h>
-#include <vcg_ext/snake_sidecar.h>
-#include <vcg_ext/triangle_soup.h>
+#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/io/snake_io.h>
+#include <vcg_ext/paths/seed_path.h>
+#include <vcg_ext/paths/seed_points.h>
+#include <vcg_ext/session/controller.h>
+#include <vcg_ext/session/param_defs.h>
+#include <vcg_ext/session/sidecar.h>
+#include <vcg_ext/snake/batch.h>
+#include <vcg_ext/surface/mesh_validation.h>
+#include <vcg_ext/surface/triangle_soup.h>
 
 using nlohmann::json;
 using namespace vcg::tri;
@@ -554,7 +554,7 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     r["updates"] = st.updates;
     r["embeddings"] = st.embeddings;
     r["converged"] = res.stop == SnakeStop::Converged;
-    r["stop"] = SnakeStopKey(res.stop); // why the run ended (snake_stop.h); a problem is also in warnings
+    r["stop"] = SnakeStopKey(res.stop); // why the run ended (snake/stop.h); a problem is also in warnings
     r["stop_message"] = res.stopMessage;
     r["seconds_snake"] = Since(t0);
     r["ms_per_operation"] = SnakeStats::Median(st.msOperation);

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake/error.h>
 
 namespace gs_cli {
 

@@ -19,7 +19,7 @@
 #include <vcg/complex/complex.h>
 #include <wrap/io_trimesh/io_mask.h>
 
-#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake/error.h>
 
 namespace gs_cli {
 

@@ -2,7 +2,7 @@
 
 #include "edit_geometric_snake.h"
 
-#include <vcg_ext/snake_mesh_store.h>
+#include <vcg_ext/session/mesh_store.h>
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/index/grid_static_ptr.h>
 #include <Eigen/Dense>

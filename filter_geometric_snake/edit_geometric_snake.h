@@ -10,7 +10,7 @@
 // A Run computes operations in time slices and redraws at most ~30 times per second.
 //
 // Environment hook for scripted GUI tests: GS_SNAKE_AUTOEXPORT=<file.json> makes the tool
-// write all its snakes (vcg_ext/snake_io.h JSON) to that file after every change.
+// write all its snakes (vcg_ext/io/snake_io.h JSON) to that file after every change.
 
 #include <functional>
 #include <map>
@@ -25,7 +25,7 @@
 
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 #include <vcg/space/index/grid_static_ptr.h>
-#include <vcg_ext/snake_controller.h>
+#include <vcg_ext/session/controller.h>
 
 class QKeyEvent;
 class SnakeDock;

@@ -1,13 +1,13 @@
 // The end of a Run in the edit tool (issue 33: every Run ends by itself and says why). The
 // limits come from the panel (Max operations, Time limit); the engine decides after every
-// operation whether the Run ends (vcg_ext/snake_stop.h: converged, a closed snake collapsing or
+// operation whether the Run ends (vcg_ext/snake/stop.h: converged, a closed snake collapsing or
 // leaving its part, a limit); this file shows the end: the status line (red for a stop or a
 // limit), MeshLab's Log once per Run (the line the GUI tests read), the snake's stats (JSON).
 
 #include "edit_geometric_snake.h"
 #include "snake_dock.h"
 
-#include <vcg_ext/snake_param_defs.h>
+#include <vcg_ext/session/param_defs.h>
 
 using namespace vcg;
 

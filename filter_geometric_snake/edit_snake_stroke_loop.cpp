@@ -1,6 +1,6 @@
 // One stroke across a part gives a loop round it (issue 33; contour completion, Lee et al. 2004):
 // the seeds painted or clicked across a limb, from one side of it to the other on the side
-// facing the user, are completed by the way back round the hidden side (vcg_ext/stroke_loop.h)
+// facing the user, are completed by the way back round the hidden side (vcg_ext/paths/stroke_loop.h)
 // into a closed snake; L or the panel's Loop button. The hidden side is the one facing away
 // from the view at the stroke.
 

@@ -21,18 +21,18 @@
 
 #include <vcg_ext/cut/cut_curve_io.h>
 #include <vcg_ext/cut/mesh_cut.h>
-#include <vcg_ext/feature_energy.h>
-#include <vcg_ext/mesh_validation.h>
-#include <vcg_ext/seed_path.h>
-#include <vcg_ext/seed_points.h>
-#include <vcg_ext/snake_batch.h>
-#include <vcg_ext/snake_controller.h>
-#include <vcg_ext/snake_error.h>
-#include <vcg_ext/safe_file_write.h>
-#include <vcg_ext/snake_io.h>
-#include <vcg_ext/snake_mesh_store.h>
-#include <vcg_ext/snake_param_defs.h>
-#include <vcg_ext/triangle_soup.h>
+#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/io/safe_file_write.h>
+#include <vcg_ext/io/snake_io.h>
+#include <vcg_ext/paths/seed_path.h>
+#include <vcg_ext/paths/seed_points.h>
+#include <vcg_ext/session/controller.h>
+#include <vcg_ext/session/mesh_store.h>
+#include <vcg_ext/session/param_defs.h>
+#include <vcg_ext/snake/batch.h>
+#include <vcg_ext/snake/error.h>
+#include <vcg_ext/surface/mesh_validation.h>
+#include <vcg_ext/surface/triangle_soup.h>
 
 #include <QFileInfo>
 #include <fstream>
@@ -43,7 +43,7 @@ namespace {
 
 const int kDefaultSmoothingSteps = tri::SnakeParamDefs::DefaultSmoothingSteps();
 
-/// MeshLab parameters from the shared definitions (vcg_ext/snake_param_defs.h), which the
+/// MeshLab parameters from the shared definitions (vcg_ext/session/param_defs.h), which the
 /// geometric-snake program reads too: same names, defaults, ranges and help.
 void addParams(RichParameterList &par, const std::vector<tri::ParamDef> &defs)
 {

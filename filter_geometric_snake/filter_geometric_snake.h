@@ -12,8 +12,8 @@
 #define FILTER_GEOMETRIC_SNAKE_H
 
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
-#include <vcg_ext/seed_points.h>
-#include <vcg_ext/snake_param_defs.h>
+#include <vcg_ext/paths/seed_points.h>
+#include <vcg_ext/session/param_defs.h>
 
 class FilterGeometricSnakePlugin : public QObject, public gs::FilterPluginBase
 {

@@ -63,7 +63,7 @@ public:
     QPushButton *computeEnergy, *showEnergy;
     // parameters
     QDoubleSpinBox *alpha, *beta, *gamma, *external, *balloon, *spacing;
-    // the limits of one Run (snake_stop.h): it ends when it reaches either
+    // the limits of one Run (snake/stop.h): it ends when it reaches either
     QSpinBox *maxOperations;
     QDoubleSpinBox *timeLimit;
     // slithering
@@ -83,7 +83,7 @@ public:
     StatusLine *status;
 
     void setStatus(const QString &text, bool error = false);
-    void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running, 4 stopped (snake_stop.h)
+    void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running, 4 stopped (snake/stop.h)
 
 protected:
     QWidget *section(QVBoxLayout *into, const QString &title, bool open);

@@ -22,11 +22,11 @@
 
 #include <common/ml_mesh_type.h>
 #include <snake_test_util.h>
-#include <vcg_ext/seed_path.h>
-#include <vcg_ext/seed_points.h>
-#include <vcg_ext/snake_controller.h>
-#include <vcg_ext/snake_error.h>
-#include <vcg_ext/snake_io.h>
+#include <vcg_ext/io/snake_io.h>
+#include <vcg_ext/paths/seed_path.h>
+#include <vcg_ext/paths/seed_points.h>
+#include <vcg_ext/session/controller.h>
+#include <vcg_ext/snake/error.h>
 
 namespace gs_fuzz {
 

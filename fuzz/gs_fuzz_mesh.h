@@ -29,7 +29,7 @@
 #include <cassert>
 #endif
 
-#include <vcg_ext/feature_energy.h>
+#include <vcg_ext/energy/feature_energy.h>
 
 namespace gs_fuzz {
 

@@ -9,8 +9,8 @@
 
 #include <common/ml_mesh_type.h>
 #include <generated_meshes.h>
-#include <vcg_ext/feature_energy.h>
-#include <vcg_ext/geometric_snake.h>
+#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/snake/geometric_snake.h>
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/index/grid_static_ptr.h>
 

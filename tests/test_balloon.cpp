@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include <snake_test_util.h>
-#include <vcg_ext/feature_energy.h>
+#include <vcg_ext/energy/feature_energy.h>
 
 using namespace vcg::tri;
 using gs_test::EnableSnakeAdjacency;

@@ -14,15 +14,15 @@
 
 #include "cad_meshes.h"
 #include "snake_test_util.h"
-#include "vcg_ext/crease_energy.h"
-#include "vcg_ext/feature_energy.h"
-#include "vcg_ext/geometric_snake.h"
-#include "vcg_ext/local_region.h"
-#include "vcg_ext/mesh_validation.h"
-#include "vcg_ext/path_tighten.h"
-#include "vcg_ext/seed_points.h"
-#include "vcg_ext/snake_controller.h"
-#include "vcg_ext/triangle_soup.h"
+#include "vcg_ext/energy/crease_energy.h"
+#include "vcg_ext/energy/feature_energy.h"
+#include "vcg_ext/snake/geometric_snake.h"
+#include "vcg_ext/embedding/local_region.h"
+#include "vcg_ext/surface/mesh_validation.h"
+#include "vcg_ext/paths/path_tighten.h"
+#include "vcg_ext/paths/seed_points.h"
+#include "vcg_ext/session/controller.h"
+#include "vcg_ext/surface/triangle_soup.h"
 
 namespace {
 

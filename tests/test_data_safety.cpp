@@ -15,10 +15,10 @@
 #include <unistd.h>
 
 #include <snake_test_util.h>
-#include <vcg_ext/safe_file_write.h>
-#include <vcg_ext/seed_points.h>
-#include <vcg_ext/snake_controller.h>
-#include <vcg_ext/snake_io.h>
+#include <vcg_ext/io/safe_file_write.h>
+#include <vcg_ext/io/snake_io.h>
+#include <vcg_ext/paths/seed_points.h>
+#include <vcg_ext/session/controller.h>
 
 using namespace vcg::tri;
 namespace fs = std::filesystem;

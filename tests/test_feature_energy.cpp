@@ -11,7 +11,7 @@
 
 #include "generated_meshes.h"
 #include "snake_test_util.h"
-#include "vcg_ext/feature_energy.h"
+#include "vcg_ext/energy/feature_energy.h"
 
 namespace {
 

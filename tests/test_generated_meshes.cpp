@@ -10,7 +10,7 @@
 #include <common/ml_mesh_type.h>
 
 #include "generated_meshes.h"
-#include "vcg_ext/mesh_validation.h"
+#include "vcg_ext/surface/mesh_validation.h"
 
 #ifndef GS_SHARED_MESH_DIR
 #define GS_SHARED_MESH_DIR GS_DATA_DIR "/../../shared/data/meshes"

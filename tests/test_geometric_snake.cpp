@@ -11,9 +11,9 @@
 #include <Eigen/Dense>
 
 #include <snake_test_util.h>
-#include <vcg_ext/path_tighten.h>
-#include <vcg_ext/snake_energy_source.h>
-#include <vcg_ext/snake_io.h>
+#include <vcg_ext/energy/energy_source.h>
+#include <vcg_ext/io/snake_io.h>
+#include <vcg_ext/paths/path_tighten.h>
 
 using namespace vcg::tri;
 using gs_test::EnableSnakeAdjacency;

@@ -7,7 +7,7 @@
 #include <common/ml_mesh_type.h>
 
 #include "generated_meshes.h"
-#include "vcg_ext/mesh_validation.h"
+#include "vcg_ext/surface/mesh_validation.h"
 
 namespace {
 

@@ -9,9 +9,9 @@
 
 #include <part_cases.h>
 #include <snake_test_util.h>
-#include <vcg_ext/feature_energy.h>
-#include <vcg_ext/part_boundary_energy.h>
-#include <vcg_ext/snake_energy_source.h>
+#include <vcg_ext/energy/energy_source.h>
+#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/energy/part_boundary_energy.h>
 
 #ifndef GS_SEGMENTATION_DIR
 #define GS_SEGMENTATION_DIR GS_DATA_DIR "/../../shared/data/segmentation"

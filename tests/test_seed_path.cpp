@@ -10,8 +10,8 @@
 #include <common/ml_mesh_type.h>
 
 #include "generated_meshes.h"
-#include "vcg_ext/feature_energy.h"
-#include "vcg_ext/seed_path.h"
+#include "vcg_ext/energy/feature_energy.h"
+#include "vcg_ext/paths/seed_path.h"
 
 namespace {
 
@@ -214,7 +214,7 @@ TEST(SeedPath, FeatureCostFollowsCubeEdge)
     EXPECT_GE(byFeature.length, byLength.length - 1e-9); // the Euclidean one is the shortest
 }
 
-// A cost is a type (seed_path_cost.h): one written here, a length that is 50x dearer where
+// A cost is a type (paths/seed_path_cost.h): one written here, a length that is 50x dearer where
 // z > -0.15, steers the path around that region without touching the search.
 struct AvoidBandCost
 {

@@ -1,5 +1,5 @@
 // Seeds as points in space: the "x y z; ..." parser, MeshLab Pick Points (.pp) files and
-// snapping onto the surface (vcg_ext/seed_points.h).
+// snapping onto the surface (vcg_ext/paths/seed_points.h).
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <common/ml_mesh_type.h>
 
 #include "generated_meshes.h"
-#include "vcg_ext/seed_points.h"
+#include "vcg_ext/paths/seed_points.h"
 
 namespace {
 

@@ -1,11 +1,11 @@
-// Tests of the edit tool's logic (vcg_ext/snake_controller.h), without Qt or OpenGL.
+// Tests of the edit tool's logic (vcg_ext/session/controller.h), without Qt or OpenGL.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 
 #include <snake_test_util.h>
-#include <vcg_ext/snake_controller.h>
+#include <vcg_ext/session/controller.h>
 
 using namespace vcg::tri;
 using Controller = SnakeController<CMeshO>;

@@ -197,7 +197,7 @@ INSTANTIATE_TEST_SUITE_P(
 // it), the final curve turned by 11-18 degrees between consecutive segments: level 0 is linear
 // in each face, its V-shaped wells pull every sample with full force onto the mesh's zigzag
 // fold line, and beta cannot straighten it. The slope across the curve is now averaged over about
-// one and a half triangles (snake_segment_motion.h, acrossSlope).
+// one and a half triangles (snake/segment_motion.h, acrossSlope).
 class StraightCreaseSmooth : public ::testing::TestWithParam<EndCase> {};
 
 TEST_P(StraightCreaseSmooth, TurnsStayBelowTenDegrees)

@@ -1,4 +1,4 @@
-// Partitioning of a snake into segments (paper Sec. 5.1, vcg_ext/snake_partition.h): every
+// Partitioning of a snake into segments (paper Sec. 5.1, vcg_ext/snake/partition.h): every
 // segment lies inside the snake and the segments cover it, for any length, corners and pins.
 // Built with _GLIBCXX_ASSERTIONS (tests/CMakeLists.txt): an out-of-bounds sample index in the
 // engine aborts here even in a release build.
@@ -8,8 +8,8 @@
 #include <random>
 
 #include <snake_test_util.h>
-#include <vcg_ext/snake_io.h>
-#include <vcg_ext/snake_partition.h>
+#include <vcg_ext/io/snake_io.h>
+#include <vcg_ext/snake/partition.h>
 
 using namespace vcg::tri;
 using gs_test::EnableSnakeAdjacency;

@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 
 #include <snake_test_util.h>
-#include <vcg_ext/feature_energy.h>
+#include <vcg_ext/energy/feature_energy.h>
 
 using namespace vcg::tri;
 using gs_test::EnableSnakeAdjacency;

@@ -1,4 +1,4 @@
-// Every run ends by itself and says why (issue 33, vcg_ext/snake_stop.h): converged, a closed
+// Every run ends by itself and says why (issue 33, vcg_ext/snake/stop.h): converged, a closed
 // snake collapsing or leaving the part it surrounded, Max operations or the time limit reached,
 // cancelled. One test per reason, through GeometricSnake::Run and through the controller's Run
 // and the edit tool's per-operation check (SnakeRunLimits::Check), which ignored the collapse
@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include <snake_test_util.h>
-#include <vcg_ext/feature_energy.h>
-#include <vcg_ext/snake_controller.h>
+#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/session/controller.h>
 
 using namespace vcg::tri;
 using gs_test::EnableSnakeAdjacency;

@@ -10,9 +10,9 @@
 #include <queue>
 
 #include <snake_test_util.h>
-#include <vcg_ext/feature_energy.h>
-#include <vcg_ext/snake_controller.h>
-#include <vcg_ext/stroke_loop.h>
+#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/paths/stroke_loop.h>
+#include <vcg_ext/session/controller.h>
 
 using namespace vcg::tri;
 using gs_test::EnableSnakeAdjacency;

@@ -11,7 +11,7 @@
 #include <set>
 
 #include "snake_test_util.h"
-#include "vcg_ext/surface_projection.h"
+#include "vcg_ext/surface/surface_projection.h"
 
 namespace {
 

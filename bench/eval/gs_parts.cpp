@@ -22,9 +22,9 @@
 #include <sstream>
 
 #include <part_cases.h>
-#include <vcg_ext/feature_energy.h>
-#include <vcg_ext/geometric_snake.h>
-#include <vcg_ext/snake_energy_source.h>
+#include <vcg_ext/energy/energy_source.h>
+#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/snake/geometric_snake.h>
 
 using namespace vcg::tri;
 typedef GeometricSnake<CMeshO> Snake;

@@ -2,7 +2,7 @@
 #define VCG_EXT_CUT_CURVE_EMBEDDING_H
 
 // Embeds curves on the surface into the mesh exactly: afterwards each curve runs along mesh
-// edges through a chain of vertices. The curve's points (face + barycentric, surface_point.h)
+// edges through a chain of vertices. The curve's points (face + barycentric, surface/surface_point.h)
 // and every crossing of a mesh edge become vertices, whatever edges earlier passes of the
 // curve split (several crossings of one edge): the segment between two consecutive points lies
 // in one face of the user's mesh, and is walked through that face's sub-faces in the face's
@@ -17,14 +17,14 @@
 #include <vector>
 
 #include <vcg_ext/cut/cut_work_mesh.h>
-#include <vcg_ext/snake_error.h>
-#include <vcg_ext/surface_point.h>
+#include <vcg_ext/snake/error.h>
+#include <vcg_ext/surface/surface_point.h>
 
 namespace vcg {
 namespace tri {
 
 /// A curve on the surface: consecutive points share a face of the mesh (as a snake's polyline,
-/// snake_polyline.h, or a chain of vertices and edge crossings). Closed curves do not repeat
+/// snake/polyline.h, or a chain of vertices and edge crossings). Closed curves do not repeat
 /// their first point.
 struct CutCurve
 {

@@ -14,7 +14,7 @@
 #include <vcg_ext/cut/curve_embedding.h>
 #include <vcg_ext/cut/cut_sides.h>
 #include <vcg_ext/cut/cut_work_mesh.h>
-#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake/error.h>
 
 namespace vcg {
 namespace tri {

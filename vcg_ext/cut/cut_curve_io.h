@@ -1,9 +1,9 @@
 #ifndef VCG_EXT_CUT_CUT_CURVE_IO_H
 #define VCG_EXT_CUT_CUT_CURVE_IO_H
 
-// The curve to cut along, from a snake JSON file (snake_io.h's contract: one snake, or
+// The curve to cut along, from a snake JSON file (io/snake_io.h's contract: one snake, or
 // {"snakes": [...]}): its samples on this mesh and, between them, the polyline the snake shows
-// once restored (snake_polyline.h). A file made on another mesh is refused: faces out of range
+// once restored (snake/polyline.h). A file made on another mesh is refused: faces out of range
 // (SnakeIO), or samples whose saved "position" is not where their face and barycentric
 // coordinates put them on this mesh.
 
@@ -14,8 +14,8 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 
 #include <vcg_ext/cut/curve_embedding.h>
-#include <vcg_ext/snake_io.h>
-#include <vcg_ext/snake_polyline.h>
+#include <vcg_ext/io/snake_io.h>
+#include <vcg_ext/snake/polyline.h>
 
 namespace vcg {
 namespace tri {

@@ -15,7 +15,7 @@
 #include <vcg/space/point2.h>
 #include <vcg/space/point3.h>
 
-#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake/error.h>
 
 namespace vcg {
 namespace tri {

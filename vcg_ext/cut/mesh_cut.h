@@ -21,7 +21,7 @@
 #include <vcg_ext/cut/cut_open.h>
 #include <vcg_ext/cut/cut_sides.h>
 #include <vcg_ext/cut/cut_work_mesh.h>
-#include <vcg_ext/snake_error.h>
+#include <vcg_ext/snake/error.h>
 #include <unordered_set>
 
 namespace vcg {

@@ -1,0 +1,457 @@
+#ifndef VCG_EXT_SNAKE_SEGMENT_MOTION_H
+#define VCG_EXT_SNAKE_SEGMENT_MOTION_H
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include <vcg_ext/embedding/conformal_param.h>
+#include <vcg_ext/embedding/kept_embeddings.h>
+#include <vcg_ext/embedding/local_region.h>
+#include <vcg_ext/embedding/region_walk.h>
+#include <vcg_ext/embedding/virtual_boundary_param.h>
+#include <vcg_ext/snake/curve.h>
+#include <vcg_ext/snake/motion_rules.h>
+#include <vcg_ext/snake/partition.h>
+#include <vcg_ext/snake/spline.h>
+#include <vcg_ext/surface/face_path.h>
+#include <vcg_ext/surface/snake_surface.h>
+#include <vcg_ext/surface/surface_point.h>
+#include <vcg_ext/surface/surface_projection.h>
+
+namespace vcg {
+namespace tri {
+
+/// How a snake moves by the paper's method (Sec. 5): one segment at a time in the plane of a
+/// local embedding. Owns the scratch state reused across operations: the kept embeddings
+/// (SnakeKeptEmbeddings), the factored spline systems and a workspace. The naive method of
+/// Sec. 4.2 is SnakeProjectionMotion; the rules both follow are SnakeMotionRules. The session
+/// (creation, editing, undo, convergence) is GeometricSnake's business.
+template <class MeshType>
+class SnakeSegmentMotion : public SnakeMotionRules<MeshType>
+{
+    typedef SnakeMotionRules<MeshType> Rules;
+
+public:
+    typedef typename MeshType::FaceType FaceType;
+    typedef SnakeSurface<MeshType> Surface;
+    typedef SnakeEmbedding<MeshType> Embedding;
+
+    explicit SnakeSegmentMotion(std::shared_ptr<Surface> s) : Rules(std::move(s)) {}
+
+    int conformalFallbacks = 0; ///< embeddings that fell back to the virtual boundary
+
+    /// Forget the factored spline systems (parameters or samples changed).
+    void ClearCache()
+    {
+        splines.Clear();
+        ForgetEmbeddings();
+    }
+    /// Forget the kept embeddings (samples were edited, inserted or deleted).
+    void ForgetEmbeddings() { kept.Clear(); }
+    /// How many embeddings are kept (one may serve several segments).
+    int KeptEmbeddings() const { return kept.Count(); }
+    /// A new operation (SnakeKeptEmbeddings::BeginOperation).
+    void BeginOperation() { kept.BeginOperation(); }
+
+    /// Moves one segment (Sec. 5.2 - 5.4): local region, embedding, up to `updates` updates of
+    /// Eq. 4 in the plane, back by barycentric coordinates, then retraces its gaps (Sec. 4.1).
+    /// `updates` = 0 only retraces. `level`: energy level; `unit`: the snake's length unit.
+    void Move(SnakeCurve &st, SnakeStats &stats, const SnakeSegment &seg, int updates, const SnakeMotionFrame &fr,
+              int depth = 0)
+    {
+        const int level = fr.level;
+        const double unit = fr.unit;
+        const bool faceLinear = surf->EnergyField().FaceLinear();
+        const int k = int(seg.idx.size());
+        if (k < 2) return;
+        auto t0 = SnakeClock::Now();
+        bool wholeClosed = st.closed && k == int(st.samples.size()) && seg.idx.front() == 0 && !seg.fixFirst;
+        int gapsInSeg = wholeClosed ? k : k - 1;
+        // Sec. 4.2: one embedding serves several updates, here several operations: an embedding
+        // is kept while the samples of a segment stay well inside it, and it serves whichever
+        // segment they form (the partition's borders move with the corners of the curve).
+        std::vector<int> &lf = work.lf;
+        Eigen::MatrixXd &X = work.X;
+        lf.resize(k);
+        X.resize(k, 2);
+        Embedding *embedding = nullptr;
+        const bool reused = kept.Acquire(st, seg, lf, X, embedding);
+        if (reused) stats.reuses++;
+        Embedding &E = *embedding;
+        if (!reused) {
+            E.valid = false;
+            // Sec. 5.2: the faces the segment crosses ...
+            std::vector<int> &core = work.core;
+            core.clear();
+            for (int j = 0; j < k; ++j) { // in curve order: the region numbers its vertices by it
+                core.push_back(st.samples[seg.idx[j]].p.face);
+                if (j >= gapsInSeg) continue;
+                int g = st.GapIndex(seg.idx[j], seg.idx[(j + 1) % k]);
+                if (g < 0) continue;
+                SnakeGap &gap = st.gaps[g];
+                if (gap.faces.empty())
+                    gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[j]].p.face, st.samples[seg.idx[(j + 1) % k]].p.face);
+                core.insert(core.end(), gap.faces.begin(), gap.faces.end());
+            }
+            // ... plus a band around them (LocalRegion), then Sec. 5.3.
+            if (!build(st, seg, core, unit, E, lf, X)) {
+                if (k >= 8 && depth < 6) { // split the segment (Sec. 5.1) and try the halves
+                    SnakeSegment a, b;
+                    int mid = k / 2;
+                    a.idx.assign(seg.idx.begin(), seg.idx.begin() + mid + 1);
+                    b.idx.assign(seg.idx.begin() + mid, seg.idx.end());
+                    a.fixFirst = seg.fixFirst; a.fixLast = true;
+                    b.fixFirst = true; b.fixLast = seg.fixLast;
+                    Move(st, stats, a, updates, fr, depth + 1);
+                    Move(st, stats, b, updates, fr, depth + 1);
+                    return;
+                }
+                stats.regionFailures++;
+                std::string why = E.region.error.empty() ? E.emb.error : E.region.error;
+                if (stats.warnings.size() < 20) stats.warnings.push_back("a segment could not move: " + why);
+                return;
+            }
+            stats.embeddings++;
+            stats.msEmbedding.push_back(SnakeClock::MsSince(t0));
+        }
+        const LocalRegion<MeshType> &region = E.region;
+        const VirtualBoundaryParam::Result &emb = E.emb;
+
+        // Sec. 6.2: the energy gradient at a sample, mapped into the plane. The field gives it
+        // in space; its derivatives along two face edges are invariant, so in the plane it is
+        // J^-T (g . e1, g . e2) with J the embedded edges. J^-T is kept per face with the embedding.
+        auto gradient = [&](int lev, int t, const Eigen::RowVector3d &bary) -> Eigen::Vector2d {
+            const auto &T = region.tri[t];
+            vcg::Point3d g = surf->EnergyGradient(lev, SurfacePoint(region.faces[t], toPoint(bary)));
+            Eigen::Vector2d d(g * (region.pos[T[1]] - region.pos[T[0]]), g * (region.pos[T[2]] - region.pos[T[0]]));
+            return E.JinvT(t) * d;
+        };
+        std::vector<bool> fixed(k);
+        for (int j = 0; j < k; ++j)
+            fixed[j] = st.samples[seg.idx[j]].fixed || (j == 0 && seg.fixFirst) || (j == k - 1 && seg.fixLast);
+        Eigen::MatrixXd &B = work.B; // barycentric coordinates of each sample in its local face
+        B.resize(k, 3);
+        for (int j = 0; j < k; ++j) {
+            const auto &b = st.samples[seg.idx[j]].p.bary;
+            B.row(j) << b[0], b[1], b[2];
+        }
+        if (updates > 0) {
+            SnakeSpline &spline = splines.For(k, wholeClosed, st.params.alpha, st.params.beta, st.params.gamma, fixed);
+            Eigen::MatrixXd &F = work.F;
+            F.resize(k, 2);
+            std::vector<double> slope(k, 0.0);
+            std::vector<Eigen::Vector2d> &across = work.across, &pull = work.pull;
+            across.assign(k, Eigen::Vector2d::Zero());
+            pull.assign(k, Eigen::Vector2d::Zero());
+            for (int u = 0; u < updates; ++u) {
+                auto tu = SnakeClock::Now();
+                for (int j = 0; j < k; ++j) {
+                    // Only the feature force across the curve: along a feature valley the
+                    // energy still varies a little, and its tangential part would slide the
+                    // samples towards the strongest spots (corners) and bunch them there.
+                    const int lev = SampleLevel(st.samples[seg.idx[j]], level);
+                    const double gain = lev == level ? fr.gain : 1.0;
+                    const Eigen::Vector2d g = gradient(lev, lf[j], B.row(j));
+                    slope[j] = g.norm();
+                    if (lev > 0 && faceLinear) pull[j] = g; // alongPullBlend
+                    Eigen::Vector2d f = st.params.externalWeight * gain * g;
+                    Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
+                                         X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
+                    if (t.norm() > 0) {
+                        t.normalize();
+                        f -= f.dot(t) * t;
+                        across[j] = Eigen::Vector2d(t.y(), -t.x());
+                        if (lev == 0 && faceLinear) { // the across slope, averaged (see acrossSlope)
+                            const Eigen::Vector2d nrm(t.y(), -t.x());
+                            double a;
+                            if (acrossSlope(E, lf[j], X.row(j).transpose(), nrm, a))
+                                f = st.params.externalWeight * gain * a * nrm;
+                        }
+                        // balloon (beyond the paper, as in image snakes): a pressure along the
+                        // outward normal; f is a gradient, so it pushes against it
+                        if (fr.outside != 0)
+                            f -= balloonPressure(st.params, fr, SurfacePoint(region.faces[lf[j]], toPoint(B.row(j)))) *
+                                 Eigen::Vector2d(t.y(), -t.x());
+                    }
+                    F.row(j) = f.transpose();
+                }
+                Eigen::MatrixXd &Xn = work.Xn;
+                spline.Update(X, F, Xn);
+                bool left = false;
+                for (int j = 0; j < k; ++j) {
+                    if (fixed[j]) continue;
+                    Eigen::Vector2d d = (Xn.row(j) - X.row(j)).transpose();
+                    if (!d.allFinite()) continue;
+                    if (st.IsOpenEnd(seg.idx[j]))
+                        d = pull[j].norm() > 0 ? alongPullBlend(d, pull[j], Rules::template acrossEnd<Eigen::Vector2d>(X, j, d))
+                                               : Rules::template acrossEnd<Eigen::Vector2d>(X, j, d);
+                    double len = d.norm();
+                    double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * E.WidthAlong(lf[j], d / len) : 0;
+                    if (len > cap) d *= cap / len;
+                    if (len == 0) continue;
+                    RegionWalk::Result &w = work.walk;
+                    RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(), X.row(j).transpose() + d,
+                                     false, w);
+                    SnakeSample &smp = st.samples[seg.idx[j]];
+                    const int lev = SampleLevel(smp, level);
+                    const SurfacePoint pOld(region.faces[lf[j]], toPoint(B.row(j))), pNew(region.faces[w.face], toPoint(w.bary));
+                    double eOld = surf->EnergyAt(lev, pOld);
+                    double eNew = surf->EnergyAt(lev, pNew);
+                    UpdateTrust(smp.trust, lev, eOld, eNew, slope[j] * std::min(len, cap));
+                    if (level > 0 && !st.closed) { // open snakes only (HoldAtWell)
+                        const Eigen::Vector2d x1 = E.ToPlane(w.face, w.bary);
+                        const Eigen::Vector2d x0 = X.row(j).transpose();
+                        smp.heldFine = HoldAtWell(smp.heldFine, pOld, pNew, d, across[j], Eigen::Vector2d(-across[j].y(), across[j].x()),
+                                                  level, [&](const Eigen::Vector2d &v, bool ahead, SurfacePoint &q) {
+                                                      return planeProbe(E, ahead ? w.face : lf[j], ahead ? x1 : x0, v, q);
+                                                  });
+                    }
+                    lf[j] = w.face;
+                    B.row(j) = w.bary.transpose();
+                    X.row(j) = E.ToPlane(w.face, w.bary).transpose();
+                    left |= w.exited;
+                }
+                stats.updates++;
+                stats.msUpdate.push_back(SnakeClock::MsSince(tu));
+                if (left) { // the curve reached the region border: re-embed (Sec. 5.4)
+                    E.valid = false;
+                    break;
+                }
+            }
+        }
+        // Map back by barycentric coordinates.
+        for (int j = 0; j < k; ++j) {
+            SnakeSample &s = st.samples[seg.idx[j]];
+            if (fixed[j] && s.fixed) continue; // pinned samples are held exactly
+            s.p.face = region.faces[lf[j]];
+            s.p.bary = vcg::Point3d(B(j, 0), B(j, 1), B(j, 2));
+            s.p.Normalize();
+        }
+        // Trace the straight segments between samples across the embedded triangles (Sec. 4.1).
+        for (int j = 0; j < gapsInSeg; ++j) {
+            int a = j, b = (j + 1) % k;
+            int g = st.GapIndex(seg.idx[a], seg.idx[b]);
+            if (g < 0) continue;
+            RegionWalk::Result &w = work.walk;
+            RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[a], X.row(a).transpose(), X.row(b).transpose(), true, w);
+            SnakeGap &gap = st.gaps[g]; // cleared, not replaced: its lists keep their memory
+            gap.faces.clear();
+            gap.crossings.clear();
+            gap.traced = false;
+            gap.tightenPending = false;
+            if (w.exited) { // leaves the region (non-convex border): re-project next time
+                E.valid = false;
+                gap.faces = FacePath<MeshType>::Find(*surf, st.samples[seg.idx[a]].p.face, st.samples[seg.idx[b]].p.face);
+                continue;
+            }
+            gap.faces.push_back(region.faces[lf[a]]);
+            for (const auto &c : w.crossings) {
+                gap.crossings.push_back(SurfacePoint(region.faces[c.face], vcg::Point3d(c.bary[0], c.bary[1], c.bary[2])));
+                gap.faces.push_back(region.faces[c.face]);
+            }
+            gap.faces.push_back(region.faces[w.face]);
+            gap.faces.push_back(region.faces[lf[b]]);
+            // straight in the plane is not shortest on the surface where the embedding is
+            // distorted (slivers): the shortest path through the same faces (paths/path_tighten.h),
+            // taken when the polyline is read (GeometricSnake::tightenGaps)
+            gap.tightenPending = true;
+            gap.tracedFrom = st.samples[seg.idx[a]].p;
+            gap.tracedTo = st.samples[seg.idx[b]].p;
+            gap.traced = true;
+        }
+    }
+
+private:
+    template <class V>
+    static vcg::Point3d toPoint(const V &b) { return vcg::Point3d(b[0], b[1], b[2]); }
+
+    /// A new region around `core` and its embedding; its margin (a distance on each side) is at
+    /// least twice the sample spacing and 1.5 times the longest edge the segment crosses. When the
+    /// faces carrying samples are embedded with a distortion above kMaxDistortion, the region grows once.
+    bool build(const SnakeCurve &st, const SnakeSegment &seg, const std::vector<int> &core, double unit, Embedding &E,
+               std::vector<int> &lf, Eigen::MatrixXd &X)
+    {
+        const int k = int(seg.idx.size());
+        // the region with the given margin, its embedding, and the samples in it
+        auto attempt = [&](double margin) {
+            lf.resize(k);
+            X.resize(k, 2);
+            if (!E.region.Build(*surf, core, 60000, margin)) return false;
+            if (!embed(st.params, unit, E.region, E.emb)) return false;
+            E.lookup.clear();
+            for (int t = 0; t < E.region.RealFaces(); ++t) E.lookup.emplace_back(E.region.faces[t], t);
+            std::sort(E.lookup.begin(), E.lookup.end());
+            E.distortion = 1;
+            for (int j = 0; j < k; ++j) {
+                const SurfacePoint &p = st.samples[seg.idx[j]].p;
+                lf[j] = E.region.LocalFace(*surf, p.face);
+                if (lf[j] < 0) return false; // cannot happen: sample faces are in the core
+                X.row(j) = E.ToPlane(lf[j], p.bary).transpose();
+                E.distortion = std::max(E.distortion, E.Distortion(lf[j], unit));
+            }
+            return true;
+        };
+        const double margin = std::max(2 * st.params.spacing * unit, 1.5 * longestCrossed(st, seg));
+        if (!attempt(margin)) return false;
+        // Too distorted where the samples are: grow the region once (a wider band moves the
+        // free border, or the virtual boundary, away from them); keep the better of the two.
+        // The first is set aside meanwhile, not built again: on bunny00's 300-sample loop growing
+        // made 40 of 50 regions worse, and each of those was built twice.
+        if (!(E.distortion <= kMaxDistortion) && E.region.margin > 0) {
+            auto &a = work.aside;
+            auto swapAside = [&] {
+                std::swap(E.region, a.region);
+                std::swap(E.emb, a.emb);
+                E.lookup.swap(a.lookup);
+                lf.swap(a.lf);
+                X.swap(a.X);
+                std::swap(E.distortion, a.distortion);
+            };
+            swapAside();
+            if (!attempt(2 * margin)) return false;
+            if (!(E.distortion <= a.distortion)) swapAside();
+        }
+        E.jinvT.resize(E.region.RealFaces());
+        E.jDone.assign(E.region.RealFaces(), 0);
+        E.anchor.resize(k);
+        for (int j = 0; j < k; ++j) E.anchor[j] = X.row(j).transpose();
+        E.first = seg.idx.front();
+        E.count = k;
+        E.samples = int(st.samples.size());
+        E.valid = true;
+        return true;
+    }
+
+    /// The longest mesh edge the segment's polyline crosses (shared by consecutive faces of a
+    /// traced gap), or the longest edge of the sample faces when no gap is traced.
+    double longestCrossed(const SnakeCurve &st, const SnakeSegment &seg) const
+    {
+        const MeshType &m = surf->Mesh();
+        const int k = int(seg.idx.size());
+        double longest = 0;
+        auto edge = [&](const FaceType &f, int e) { // in double: a float square overflows at 1e30
+            return vcg::Distance(vcg::Point3d::Construct(f.cP(e)), vcg::Point3d::Construct(f.cP((e + 1) % 3)));
+        };
+        auto sharedEdge = [&](int a, int b) {
+            for (int e = 0; e < 3; ++e)
+                if (m.face[a].cFFp(e) == &m.face[b]) longest = std::max(longest, edge(m.face[a], e));
+        };
+        for (int j = 0; j + 1 < k; ++j) {
+            const int g = st.GapIndex(seg.idx[j], seg.idx[j + 1]);
+            if (g < 0) continue;
+            const std::vector<int> &f = st.gaps[g].faces;
+            for (size_t i = 0; i + 1 < f.size(); ++i)
+                if (f[i] != f[i + 1]) sharedEdge(f[i], f[i + 1]);
+        }
+        if (longest > 0) return longest;
+        for (int j = 0; j < k; ++j) {
+            const auto &f = m.face[st.samples[seg.idx[j]].p.face];
+            for (int e = 0; e < 3; ++e) longest = std::max(longest, edge(f, e));
+        }
+        return longest;
+    }
+
+
+    /// The precise level is linear in each face: across a crease it is a V whose slope does
+    /// not fade at the bottom, so every sample is pulled with full force onto the mesh's own
+    /// fold line, which zigzags between the vertices nearest the feature, and the rigidity
+    /// (beta) cannot straighten the curve: turns of 11-18 degrees between segments on a
+    /// straight crease (level 0 alone). The slope across the curve is taken instead as the central difference
+    /// of the energy from -r to +r, r = kAcrossReach times the width of the sample's triangle
+    /// in that direction (at most that times the length unit): the mean slope over that
+    /// stretch, i.e. level 0 box-smoothed across the curve over about one and a half triangles.
+    /// Near the bottom it fades linearly, a spring, and beta wins against the zigzag; farther
+    /// out it is the slope itself. False when a probe leaves the region.
+    bool acrossSlope(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &nrm, double &slope)
+    {
+        const double r = Rules::kAcrossReach * std::min(E.WidthAlong(t, nrm), 1.0); // plane units: 1 = the length unit
+        double lo, hi;
+        if (!acrossEnergies(E, t, x, nrm, r, lo, hi)) return false;
+        slope = (hi - lo) / (2 * r);
+        return true;
+    }
+    /// The surface point at x + v (plane), walking from local face t; false when it leaves the region.
+    bool planeProbe(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &v, SurfacePoint &q)
+    {
+        RegionWalk::Result &w = work.probe;
+        RegionWalk::Walk(E.emb.uv, E.region.tri, E.region.adj, t, x, x + v, false, w);
+        if (w.exited) return false;
+        q = SurfacePoint(E.region.faces[w.face], toPoint(w.bary));
+        return true;
+    }
+
+    /// Level-0 energy at x -/+ r nrm (plane), walking from local face t.
+    bool acrossEnergies(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &nrm, double r, double &lo,
+                        double &hi)
+    {
+        if (!(r > 0)) return false;
+        double e[2];
+        for (int side = 0; side < 2; ++side) {
+            RegionWalk::Result &w = work.probe;
+            RegionWalk::Walk(E.emb.uv, E.region.tri, E.region.adj, t, x, x + (side ? r : -r) * nrm, false, w);
+            if (w.exited) return false;
+            e[side] = surf->EnergyAt(0, SurfacePoint(E.region.faces[w.face], toPoint(w.bary)));
+        }
+        lo = e[0], hi = e[1];
+        return true;
+    }
+
+    /// The local embedding (Sec. 5.3): least-squares conformal first, which embeds developable
+    /// regions exactly; if it flips a triangle, the paper's convex combination with a virtual
+    /// boundary, which is injective whatever the geometry.
+    bool embed(const SnakeParams &params, double unit, const LocalRegion<MeshType> &region,
+               VirtualBoundaryParam::Result &emb)
+    {
+        emb = VirtualBoundaryParam::Result();
+        std::string err;
+        if (ConformalParam::Embed(region.pos, region.tri, region.boundary, unit, emb.uv, err, conformal,
+                                  region.arc.empty() ? nullptr : &region.arc) &&
+            VirtualBoundaryParam::CountFlipped(emb.uv, region.tri) == 0)
+            return true;
+        ++conformalFallbacks;
+        return VirtualBoundaryParam::Embed(region.pos, region.tri, region.boundary, unit, params.virtualLayers, emb);
+    }
+
+    /// Distortion (angle times scale, Embedding::Distortion) of a sample's face above which a
+    /// region grows: on a curved strip the conformal map alone reaches 2, and growing cannot
+    /// undo curvature, so only embeddings spoiled by their border (the virtual one) grow.
+    static constexpr double kMaxDistortion = 3.0;
+    using Rules::surf;
+    using Rules::UpdateTrust;
+    using Rules::SampleLevel;
+    using Rules::HoldAtWell;
+    using Rules::alongPullBlend;
+    using Rules::balloonPressure;
+    SnakeKeptEmbeddings<MeshType> kept;
+    ConformalParam::Workspace conformal;
+    SnakeSplineCache splines;
+    struct Workspace // reused by every segment move: no allocation in the steady state
+    {
+        std::vector<int> core, lf;
+        Eigen::MatrixXd X, B, F, Xn;
+        RegionWalk::Result walk, probe;
+        std::vector<Eigen::Vector2d> across, pull; // the curve's normal, the coarse gradient (plane)
+        struct Aside // build(): the first region while a grown one is tried
+        {
+            LocalRegion<MeshType> region;
+            VirtualBoundaryParam::Result emb;
+            std::vector<std::pair<int, int>> lookup;
+            std::vector<int> lf;
+            Eigen::MatrixXd X;
+            double distortion = 1;
+        } aside;
+    } work;
+
+};
+
+} // namespace tri
+} // namespace vcg
+
+#endif
