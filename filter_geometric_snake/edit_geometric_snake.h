@@ -2,7 +2,7 @@
 #define GS_EDIT_GEOMETRIC_SNAKE_H
 
 // MeshLab edit tool "Geometric Snake": interactive geometric snakes (Lee & Lee 2002,
-// Sec. 5.5 and 7) on the current layer. Thin Qt/GL glue over vcg_ext/snake_controller.h.
+// Sec. 5.5 and 7) on the current layer. Thin Qt/GL glue over vcg_ext/session/controller.h.
 //
 // While active, the tool owns its keys (Delete, Backspace, I, L, P, R, Space, Enter, Ctrl+Z,
 // Ctrl+Y; Esc during a Run): an application event filter overrides MeshLab's shortcuts for
