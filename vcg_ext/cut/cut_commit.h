@@ -28,12 +28,7 @@ public:
     static vcg::Point3d Bary(const vcg::Point3d &a, const vcg::Point3d &b, const vcg::Point3d &c,
                              const vcg::Point3d &x)
     {
-        const vcg::Point3d n = (b - a) ^ (c - a);
-        const double nn = n * n;
-        if (!(nn > 0)) return vcg::Point3d(1.0 / 3, 1.0 / 3, 1.0 / 3);
-        vcg::Point3d l(((c - b) ^ (x - b)) * n / nn, ((a - c) ^ (x - c)) * n / nn, 0);
-        l[2] = 1 - l[0] - l[1];
-        return l;
+        return CutWorkMesh::Bary(a, b, c, x);
     }
 
     static void Commit(MeshType &m, const CutWorkMesh &w)

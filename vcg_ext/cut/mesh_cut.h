@@ -19,6 +19,7 @@
 #include <vcg_ext/cut/cut_check.h>
 #include <vcg_ext/cut/cut_commit.h>
 #include <vcg_ext/cut/cut_open.h>
+#include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/cut/cut_sides.h>
 #include <vcg_ext/cut/cut_work_mesh.h>
 #include <vcg_ext/snake_error.h>
@@ -62,6 +63,9 @@ public:
         int facesInside = 0, facesOutside = 0;
         double areaInside = 0, areaOutside = 0;
         bool chosenLeft = true;
+        /// Select and CutOpen: surface points of the mesh before the cut to the mesh after it
+        /// (the user's snakes); SelectOnly and Split leave the mesh as it was (an empty map).
+        CutPointMap points;
         double msEmbed = 0, msSides = 0, msCheck = 0, msCommit = 0, msSplit = 0;
     };
 
@@ -88,6 +92,7 @@ public:
         }
         r.msCheck += ms(t0);
         t0 = clock::now();
+        r.points.Build(m, wk.w);
         CutCommit<MeshType>::Commit(m, wk.w);
         r.msCommit = ms(t0);
         markSides(m, wk);
