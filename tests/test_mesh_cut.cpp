@@ -864,3 +864,30 @@ TEST(MeshCutTest, SurfacePointsOfTheMeshBeforeTheCutMapOntoItAfter)
     const SurfacePoint p(17, vcg::Point3d(0.2, 0.3, 0.5));
     EXPECT_EQ(r.points.Map(p).face, 17);
 }
+
+TEST(MeshCutTest, ACurveCutAgainRunsAlongTheEdgesOfItsFirstCut)
+{
+    // the edit tool: Select inside embeds the snake; the curve traced again on the cut mesh runs
+    // along its edges: selecting again adds nothing, cutting open adds a copy of each curve vertex
+    DMesh m;
+    Plate(m, 10, 1.0, 0.0, 1);
+    const double before = Area(m);
+    const std::vector<vcg::Point2d> square = {{2.5, 2.5}, {7.5, 2.5}, {7.5, 7.5}, {2.5, 7.5}};
+    Cut::Apply(m, {PolygonCurve(m, square)}, Cut::Param());
+    const CutCurve c = PolygonCurve(m, square);
+    const size_t vn = m.vert.size();
+    const Cut::Result again = Cut::Apply(m, {c}, Cut::Param());
+    EXPECT_EQ(m.vert.size(), vn);
+    EXPECT_EQ(again.addedVertices, 0);
+    EXPECT_NEAR(again.areaInside, 25, 1e-9);
+    Cut::Param open;
+    open.mode = CutMode::CutOpen;
+    const Cut::Result o = Cut::Apply(m, {c}, open);
+    EXPECT_EQ(o.addedVertices, o.curveVertices); // one copy of each curve vertex, nothing else
+    ExpectValid(m, before);
+    UpdateTopology<DMesh>::FaceFace(m);
+    int border = 0;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
+    EXPECT_EQ(border, 40 + 2 * o.curveVertices); // the plate's rim and both lips of the square
+}
