@@ -612,7 +612,10 @@ void EditGeometricSnakePlugin::undoRedo(bool redo)
     setRunning(false);
     std::string label = redo ? ctl->RedoLabel() : ctl->UndoLabel();
     bool done = false;
+    const long selection = ctl->SelectionRevision();
     if (guarded(redo ? "redo" : "undo", [&] { done = redo ? ctl->Redo() : ctl->Undo(); })) {
+        if (ctl->SelectionRevision() != selection && glArea && modelAlive())
+            glArea->updateSelection(model->id(), true, true); // a cut's selection came back
         if (ctl->SelectedSnake()) paramsToDock(ctl->SelectedSnake()->Params());
         afterChange();
         report(done ? QString("%1 %2.").arg(redo ? "Redid" : "Undid", QString::fromStdString(label))

@@ -2,7 +2,7 @@
 #define GS_EDIT_GEOMETRIC_SNAKE_H
 
 // MeshLab edit tool "Geometric Snake": interactive geometric snakes (Lee & Lee 2002,
-// Sec. 5.5 and 7) on the current layer. Thin Qt/GL glue over vcg_ext/snake_controller.h.
+// Sec. 5.5 and 7) on the current layer. Thin Qt/GL glue over vcg_ext/session/controller.h.
 //
 // While active, the tool owns its keys (Delete, Backspace, I, L, P, R, Space, Enter, Ctrl+Z,
 // Ctrl+Y; Esc during a Run): an application event filter overrides MeshLab's shortcuts for
@@ -25,6 +25,7 @@
 
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 #include <vcg/space/index/grid_static_ptr.h>
+#include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/session/controller.h>
 
 class QKeyEvent;
@@ -141,10 +142,12 @@ private:
     void computeEnergy(bool show);
     void exportCurves(bool all);
     void addAsLayer();
-    /// Cut along the selected snake (edit_geometric_snake_cut.cpp): select one side, or split.
+    /// Cut along the selected snake (edit_geometric_snake_cut.cpp): select one side, cut open, split.
     void cutSelect(bool inside);
+    void cutOpen();
     void cutSplit();
     void connectCutButtons();
+    void afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map);
     void usePickPoints();
     vcg::tri::SnakeParams paramsFromDock() const;
     void paramsToDock(const vcg::tri::SnakeParams &p);

@@ -204,12 +204,17 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     // --- cut (issue 34; last and closed, so it moves nothing above it)
     QWidget *gc = section(v, "Cut", false);
     QGridLayout *lc = new QGridLayout(gc);
-    cutSelectInside = button("Select inside", "Select the faces inside the selected closed snake (the side its Balloon inflates), whole faces by their centroid; the mesh is not changed");
-    cutSelectOutside = button("Select outside", "Select the faces on the other side of the selected snake (the inverse selection)");
+    cutSelectInside = button("Select inside", "Embed the selected closed snake into the mesh (vertices where it crosses edges) and select the faces inside it (the side its Balloon inflates)");
+    cutSelectOutside = button("Select outside", "Embed the selected snake and select the faces on its other side (the inverse selection)");
     cutSplit = button("Split into layers", "Add two layers, \"inside\" and \"outside\", cut exactly along the selected snake; this layer is not changed");
+    cutOpen = button("Cut open", "Embed the selected snake and make its edges boundary edges, in this layer (an open snake ending inside the mesh makes a slit)");
+    cutWholeFaces = new QCheckBox("Whole faces only (keep the mesh)");
+    cutWholeFaces->setToolTip("Select inside / outside select the mesh's faces by their centroid's side, without embedding the snake; the tool's undo (Ctrl+Z) takes the selection back");
     lc->addWidget(cutSelectInside, 0, 0);
     lc->addWidget(cutSelectOutside, 0, 1);
     lc->addWidget(cutSplit, 1, 0);
+    lc->addWidget(cutOpen, 1, 1);
+    lc->addWidget(cutWholeFaces, 2, 0, 1, 2);
     v->addStretch(1);
 
     // the wheel edits a spin or combo box only when it has the focus (clicked or tabbed to);

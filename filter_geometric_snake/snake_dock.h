@@ -78,7 +78,8 @@ public:
     // output
     QPushButton *exportSelected, *exportAll, *addLayer, *saveSession;
     // cut (edit_geometric_snake_cut.cpp)
-    QPushButton *cutSelectInside, *cutSelectOutside, *cutSplit;
+    QPushButton *cutSelectInside, *cutSelectOutside, *cutSplit, *cutOpen;
+    QCheckBox *cutWholeFaces;
     // status
     StatusLine *status;
 

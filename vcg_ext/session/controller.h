@@ -38,6 +38,7 @@
 #include <vcg_ext/paths/seed_path.h>
 #include <vcg_ext/paths/seed_points.h>
 #include <vcg_ext/paths/stroke_loop.h>
+#include <vcg_ext/session/mesh_selection_memento.h>
 #include <vcg_ext/session/session_file.h>
 #include <vcg_ext/session/session_history.h>
 #include <vcg_ext/session/sidecar.h>
@@ -413,16 +414,37 @@ public:
     /// Returns to the session as it was before the last action (all snakes, seeds, selection).
     bool Undo()
     {
-        if (!history.Undo(makeSnake())) return false;
+        if (!history.Undo(makeSnake(), saveSelection(), loadSelection())) return false;
         touch("undo");
         return true;
     }
     bool Redo()
     {
-        if (!history.Redo(makeSnake())) return false;
+        if (!history.Redo(makeSnake(), saveSelection(), loadSelection())) return false;
         touch("redo");
         return true;
     }
+    /// A change of the mesh's face and vertex selection made by `change()` (e.g. a cut's Select
+    /// inside): one undo step that brings the selection back. Nothing is recorded if change()
+    /// leaves the selection as it was, or throws (the selection is then put back).
+    template <class Change>
+    void ChangeSelection(const std::string &label, Change change)
+    {
+        auto before = std::make_shared<const Selection>(Selection::Save(mesh));
+        try {
+            change();
+        } catch (...) {
+            before->Restore(mesh);
+            throw;
+        }
+        if (Selection::Save(mesh) == *before) return;
+        history.RecordMesh(label, std::move(before));
+        ++selectionRevision;
+        touch(label.c_str());
+    }
+    /// Increases whenever the controller changes the mesh's selection (ChangeSelection, or an
+    /// undo / redo of it): the view redraws the selection then.
+    long SelectionRevision() const { return selectionRevision; }
     /// Memory bound of the history (default 100 MB) and its current estimate.
     void SetUndoLimit(size_t bytes) { history.SetLimit(bytes); }
     size_t UndoBytes() const { return history.Bytes(); }
@@ -577,7 +599,19 @@ private:
     SnakeAutosave autosave;
     double computeMs = 0;
 
-    SnakeSessionHistory<Snake, SnakeSeedList<MeshType>> history{{snakes, selected, seedList, params}};
+    typedef MeshSelectionMemento<MeshType> Selection;
+    SnakeSessionHistory<Snake, SnakeSeedList<MeshType>, Selection> history{{snakes, selected, seedList, params}};
+    long selectionRevision = 0;
+    auto saveSelection()
+    {
+        return [this] { return std::make_shared<const Selection>(Selection::Save(mesh)); };
+    }
+    auto loadSelection()
+    {
+        return [this](const Selection &s) {
+            if (s.Restore(mesh)) ++selectionRevision;
+        };
+    }
 
     bool record(const char *label) { return history.Record(label); }
     // builds the snakes an undo brings back
