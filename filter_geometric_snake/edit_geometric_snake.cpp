@@ -202,6 +202,16 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         restoredFromFile = true;
     }
     if (side.unreadable) sidecarProblem = QString("Geometric snake: %1").arg(QString::fromStdString(side.message));
+    if (!meshPath.empty() && !side.restored && !fromStore) {
+        // the session file is "<mesh file>.snakes.json"; an older README said "<mesh>.snakes.json":
+        // a file of that name may belong to another mesh of the same base name, so it is not read
+        const QFileInfo mf(QString::fromStdString(meshPath));
+        const QString other = mf.absolutePath() + "/" + mf.completeBaseName() + ".snakes.json";
+        if (QFileInfo::exists(other) && other != QString::fromStdString(meshPath) + ".snakes.json")
+            Log(GLLogStream::WARNING, "Geometric snake: %s is not read: this mesh's session file is %s.snakes.json "
+                "(rename it to that to restore it).", qUtf8Printable(QFileInfo(other).fileName()),
+                qUtf8Printable(mf.fileName()));
+    }
     // a restored session brings its parameters even when it holds only seeds so far
     if (ctl->SnakeCount() > 0 || side.restored || fromStore) {
         paramsToDock(ctl->Params());

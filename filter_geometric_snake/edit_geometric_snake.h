@@ -10,7 +10,8 @@
 // A Run computes operations in time slices and redraws at most ~30 times per second.
 //
 // Environment hook for scripted GUI tests: GS_SNAKE_AUTOEXPORT=<file.json> makes the tool
-// write all its snakes (vcg_ext/snake_io.h JSON) to that file after every change.
+// write all its snakes (vcg_ext/snake_io.h JSON) to that file after every change;
+// GS_SNAKE_PANEL_STATE=<file.json> what its panel shows (edit_snake_status.cpp).
 
 #include <functional>
 #include <map>

@@ -6,7 +6,7 @@ real MeshLab on data/icocube.ply, the panel's state in $GS_SNAKE_PANEL_STATE aft
 2. The status line counts from the state: one seed clicked says "1 seed", Backspace removes it
    and the line says "No seeds".
 3. The wheel zooms the view with the tool active (the screenshot differs: fewer mesh pixels after
-   zooming out), and the tool is still active (a click places a seed).
+   zooming out), a middle-button drag pans it, and the tool is still active (a click places a seed).
 4. Esc suspends the tool: the panel shows it (and the Log); Esc again resumes.
 5. Build: the badge says "not converged" (nothing moves), the status line gives the Build time the
    Log gives, the sample buttons are disabled (no sample selected).
@@ -87,9 +87,23 @@ def main():
         time.sleep(1.0)
         after = count(g.Image(g.screenshot("03_after_wheel.png")))
         check(after < 0.8 * before, "the wheel zooms the view with the tool active (mesh pixels %d -> %d)" % (before, after))
-        xdo("mousemove", cx, cy, "click", 1)
+        # the middle button pans (MeshLab's trackball): the mesh moves right with the cursor
+        def mesh_x(img):
+            x0, y0, x1, y1 = g.gl_box(img)
+            xs = [x for y in range(y0, y1, 3) for x in range(x0, x1, 3) if g.is_mesh(img.px(x, y))]
+            return sum(xs) / max(1, len(xs))
+        xa = mesh_x(g.Image(os.path.join(WORK, "03_after_wheel.png")))
+        xdo("mousemove", cx, cy, "mousedown", 2)
+        for k in range(1, 9):
+            xdo("mousemove", cx + 10 * k, cy)
+            time.sleep(0.05)
+        xdo("mouseup", 2)
+        time.sleep(0.8)
+        xb = mesh_x(g.Image(g.screenshot("03b_after_pan.png")))
+        check(xb - xa > 40, "a middle-button drag pans the view with the tool active (mesh moved %+.0f px)" % (xb - xa))
+        xdo("mousemove", cx + 80, cy, "click", 1)
         check(panel(lambda s: s["seeds"] == "1 seed").get("seeds") == "1 seed",
-              "the tool is still active after zooming: a click places a seed")
+              "the tool is still active after zooming and panning: a click places a seed")
 
         # ---- 4. Esc suspends the tool, and the panel shows it
         xdo("key", "Escape")
