@@ -10,7 +10,7 @@ real MeshLab on data/icocube.ply, the panel's state in $GS_SNAKE_PANEL_STATE aft
 4. Esc suspends the tool: the panel shows it (and the Log); Esc again resumes.
 5. Build: the badge says "not converged" (nothing moves), the status line gives the Build time the
    Log gives, the sample buttons are disabled (no sample selected).
-6. The mesh is untouched, so MeshLab quits at Ctrl+Q without asking to save ("modified").
+6. The mesh is untouched, so File > Close Project does not ask to save it (no "modified" layer).
 """
 import json
 import os
@@ -129,12 +129,16 @@ def main():
               "Pin, Insert and Delete are disabled with no sample selected")
         g.screenshot("06_built.png")
 
-        # ---- 6. the mesh is untouched: MeshLab quits without asking to save
-        xdo("key", "ctrl+q")
-        quit_ok = wait_for(lambda: ml.p.poll() is not None, 6)
-        if not quit_ok:
-            g.screenshot("07_quit_prompt.png")
-        check(bool(quit_ok), "Ctrl+Q quits at once: the layer is not marked modified (no save prompt)")
+        # ---- 6. the mesh is untouched: File > Close Project closes it without asking to save
+        # (MeshLab asks "Project ... modified. Close without saving?" when a layer is modified)
+        xdo("mousemove", 30, 10, "click", 1)
+        time.sleep(0.8)
+        xdo("mousemove", 92, 134, "click", 1)  # Close Project
+        time.sleep(1.5)
+        prompt = xdo("search", "--name", "^MeshLab$")
+        g.screenshot("07_closed.png")
+        check(not prompt and ml.p.poll() is None,
+              "Close Project asks nothing: starting the tool left the layer unmodified (no save prompt)")
     finally:
         ml.kill()
     return g.finish()
