@@ -8,8 +8,6 @@
 #include "edit_geometric_snake.h"
 #include "snake_dock.h"
 
-#include <vcg_ext/snake_stop.h>
-
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
