@@ -10,8 +10,7 @@
 // A Run computes operations in time slices and redraws at most ~30 times per second.
 //
 // Environment hook for scripted GUI tests: GS_SNAKE_AUTOEXPORT=<file.json> makes the tool
-// write all its snakes (vcg_ext/snake_io.h JSON) to that file after every change;
-// GS_SNAKE_PANEL_STATE=<file.json> what its panel shows (edit_snake_status.cpp).
+// write all its snakes (vcg_ext/snake_io.h JSON) to that file after every change.
 
 #include <functional>
 #include <map>
