@@ -93,6 +93,7 @@ EditGeometricSnakePlugin::~EditGeometricSnakePlugin()
     ownKeys(false);
     runTimer.stop();
     if (ctl && modelAlive()) stop(true);
+    if (dock) dock->savePlace();
     delete dock.data();
 }
 
@@ -113,6 +114,7 @@ bool EditGeometricSnakePlugin::startEdit(MeshDocument &md, GLArea *gla, MLSceneG
     setLog(&md.Log);
     if (md.mm() == nullptr) return false;
     if (md.isBusy()) return false; // MeshLab is still loading or filtering the mesh
+    keepModifiedFlag(*md.mm());
     return startOn(*md.mm());
 }
 
@@ -132,7 +134,7 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         connectDock();
     }
     {
-        // docked on the right, stacked under MeshLab's layer dialog (which holds the Log)
+        // in its own dock area, or beside MeshLab's layer dialog (which holds the Log)
         QDockWidget *layers = nullptr;
         if (mw)
             for (QDockWidget *d : mw->findChildren<QDockWidget *>())
@@ -142,17 +144,10 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         hidePending = false;
         const bool first = !dock->isVisible();
         if (first) dock->dockInto(mw, layers);
-        if (first && mw) {
-            // where the panel is, for the user and for the GUI test that checks it is docked
-            QPointer<SnakeDock> d(dock);
-            QTimer::singleShot(400, this, [this, d, mw] {
-                if (!d || !d->isVisible()) return;
-                QRect r(d->mapToGlobal(QPoint(0, 0)), d->size());
-                Log(GLLogStream::SYSTEM, "Geometric snake: panel %s in MeshLab's main window at %d,%d size %dx%d",
-                    d->isFloating() ? "floating" : "docked", r.x(), r.y(), r.width(), r.height());
-            });
-        }
+        if (first && mw) QTimer::singleShot(400, this, [this, layers = QPointer<QDockWidget>(layers)] { logLayout(layers); });
     }
+    shownSuspended = glArea && glArea->suspendedEditor; // a layer switch keeps MeshLab's Esc state
+    showSuspended();
     ownKeys(true);
     refreshDock();
     lastError.clear(); // a new start: its problems go to the Log again
@@ -207,6 +202,16 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         restoredFromFile = true;
     }
     if (side.unreadable) sidecarProblem = QString("Geometric snake: %1").arg(QString::fromStdString(side.message));
+    if (!meshPath.empty() && !side.restored && !fromStore) {
+        // the session file is "<mesh file>.snakes.json"; an older README said "<mesh>.snakes.json":
+        // a file of that name may belong to another mesh of the same base name, so it is not read
+        const QFileInfo mf(QString::fromStdString(meshPath));
+        const QString other = mf.absolutePath() + "/" + mf.completeBaseName() + ".snakes.json";
+        if (QFileInfo::exists(other) && other != QString::fromStdString(meshPath) + ".snakes.json")
+            Log(GLLogStream::WARNING, "Geometric snake: %s is not read: this mesh's session file is %s.snakes.json "
+                "(rename it to that to restore it).", qUtf8Printable(QFileInfo(other).fileName()),
+                qUtf8Printable(mf.fileName()));
+    }
     // a restored session brings its parameters even when it holds only seeds so far
     if (ctl->SnakeCount() > 0 || side.restored || fromStore) {
         paramsToDock(ctl->Params());
@@ -273,7 +278,10 @@ void EditGeometricSnakePlugin::hideDockLater()
 {
     hidePending = true;
     QTimer::singleShot(0, this, [this] {
-        if (hidePending && dock) dock->hide();
+        if (hidePending && dock) {
+            dock->savePlace(); // its width, for the next session
+            dock->hide();
+        }
         hidePending = false;
     });
 }
@@ -288,7 +296,7 @@ std::vector<vcg::tri::ProtectedFile> EditGeometricSnakePlugin::protectedFiles() 
 
 void EditGeometricSnakePlugin::report(const QString &msg, bool error)
 {
-    if (dock) dock->setStatus(msg, error);
+    showStatus(msg, error);
     if (error) {
         if (msg.toStdString() != lastError) Log(GLLogStream::WARNING, "%s", msg.toStdString().c_str());
         lastError = msg.toStdString();
@@ -342,58 +350,6 @@ void EditGeometricSnakePlugin::afterChange(bool forceSave)
     }
     refreshDock();
     if (glArea) glArea->update();
-}
-
-void EditGeometricSnakePlugin::refreshDock()
-{
-    if (!dock) return;
-    bool has = ctl != nullptr;
-    int nseeds = has ? int(ctl->Seeds().size()) : 0;
-    dock->seedLabel->setText(QString("%1 seed%2").arg(nseeds).arg(nseeds == 1 ? "" : "s"));
-    dock->buildOpen->setEnabled(nseeds >= 2);
-    dock->buildClosed->setEnabled(nseeds >= 3);
-    dock->removeLastSeed->setEnabled(nseeds > 0);
-    dock->clearSeeds->setEnabled(nseeds > 0);
-    Controller::Snake *s = has ? ctl->SelectedSnake() : nullptr;
-    for (QWidget *w : std::initializer_list<QWidget *>{dock->step, dock->run, dock->exportSelected, dock->addLayer,
-                                                        dock->deleteSnake, dock->insert, dock->remove, dock->pin})
-        w->setEnabled(s != nullptr);
-    dock->exportAll->setEnabled(has && ctl->SnakeCount() > 0);
-    dock->undo->setEnabled(has && ctl->CanUndo());
-    dock->redo->setEnabled(has && ctl->CanRedo());
-    dock->undo->setToolTip(has && ctl->CanUndo() ? QString("Undo %1 (Ctrl+Z)").arg(QString::fromStdString(ctl->UndoLabel()))
-                                                 : QString("Nothing to undo (Ctrl+Z)"));
-    dock->redo->setToolTip(has && ctl->CanRedo() ? QString("Redo %1 (Ctrl+Y)").arg(QString::fromStdString(ctl->RedoLabel()))
-                                                 : QString("Nothing to redo (Ctrl+Y)"));
-    {
-        QSignalBlocker b(dock->snakeList);
-        dock->snakeList->clear();
-        if (has)
-            for (int i = 0; i < ctl->SnakeCount(); ++i) {
-                auto &x = ctl->Get(i);
-                dock->snakeList->addItem(QString("%1: %2, %3 samples")
-                                             .arg(i + 1)
-                                             .arg(x.Closed() ? "closed" : "open")
-                                             .arg(x.SampleCount()));
-            }
-        if (has && ctl->Selected() >= 0) dock->snakeList->setCurrentIndex(ctl->Selected());
-    }
-    if (s && currentSample >= s->SampleCount()) currentSample = -1;
-    dock->setConvergence(!s ? 0 : runTimer.isActive() ? 3 : s->Converged() ? 2
-                                 : vcg::tri::SnakeStopIsProblem(s->Stats().stop) ? 4 : 1);
-    if (s && dock->status->styleSheet().isEmpty() && !running()) {
-        const auto &st = s->Stats();
-        int pins = 0;
-        for (auto &x : s->Samples()) pins += x.fixed;
-        dock->setStatus(QString("%1 samples, %2 pinned | %3 ops | last: %4 (%5 ms) | move %6 h")
-                            .arg(s->SampleCount())
-                            .arg(pins)
-                            .arg(st.operations)
-                            .arg(QString::fromStdString(ctl->LastOperation()))
-                            .arg(ctl->LastOperationMs(), 0, 'f', 1)
-                            .arg(st.lastMaxMove, 0, 'f', 3),
-                        false);
-    }
 }
 
 SnakeParams EditGeometricSnakePlugin::paramsFromDock() const
@@ -500,10 +456,11 @@ void EditGeometricSnakePlugin::buildSnake(bool closed)
             double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             Log(GLLogStream::FILTER, "Geometric snake: built %s snake with %d samples in %.1f ms", closed ? "a closed" : "an open",
                 ctl->SelectedSnake()->SampleCount(), ms);
+            lastTimed = QString("build, %1 ms").arg(ms, 0, 'f', 1); // the Log's figure
+            lastTimedRevision = ctl->Revision();
         })) {
         currentSample = -1;
         dock->editMode->setChecked(true);
-        if (dock) dock->setStatus("", false);
         afterChange(true);
     }
 }
@@ -511,10 +468,9 @@ void EditGeometricSnakePlugin::buildSnake(bool closed)
 void EditGeometricSnakePlugin::stepOnce()
 {
     setRunning(false);
-    if (guarded("step", [&] { ctl->Step(); })) {
-        dock->setStatus("", false);
+    if (guarded("step", [&] { ctl->Step(); lastTimed = QString("step, %1 ms").arg(ctl->LastOperationMs(), 0, 'f', 1);
+                                 lastTimedRevision = ctl->Revision(); }))
         afterChange();
-    }
 }
 
 void EditGeometricSnakePlugin::setRunning(bool on)
@@ -559,7 +515,7 @@ void EditGeometricSnakePlugin::runProgress(const char *state)
 {
     if (!dock || !ctl || !ctl->SelectedSnake()) return;
     const auto *s = ctl->SelectedSnake();
-    dock->setStatus(QString("%1: %2 operations, largest move %3 h, %4 energy | %5 s (compute %6 s)")
+    showStatus(QString("%1: %2 operations, largest move %3 edge lengths, %4 energy | %5 s (compute %6 s)")
                         .arg(state)
                         .arg(s->Stats().operations - runOps0)
                         .arg(s->Stats().lastMaxMove, 0, 'f', 3)
@@ -890,6 +846,7 @@ int EditGeometricSnakePlugin::nearestSeedOnScreen(const QPointF &g, double radiu
 // ====================================================================== mouse and keys
 void EditGeometricSnakePlugin::mousePressEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
 {
+    if (viewButton(e, gla)) return; // the middle button pans the view (edit_snake_view.cpp)
     if (!ctl || &m != model || e->button() != Qt::LeftButton) return;
     pressed = true;
     pressPos = e->pos();
@@ -923,6 +880,7 @@ void EditGeometricSnakePlugin::mousePressEvent(QMouseEvent *e, MeshModel &m, GLA
 
 void EditGeometricSnakePlugin::mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
 {
+    if (viewButton(e, gla)) return; // the middle button pans the view (edit_snake_view.cpp)
     if (!ctl || &m != model || !pressed || !(e->buttons() & Qt::LeftButton)) return;
     QPointF g = glPos(e, gla);
     bool far = (e->pos() - pressPos).manhattanLength() > 6;
@@ -950,6 +908,7 @@ void EditGeometricSnakePlugin::mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLAr
 
 void EditGeometricSnakePlugin::mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
 {
+    if (viewButton(e, gla)) return; // the middle button pans the view (edit_snake_view.cpp)
     if (!ctl || &m != model || e->button() != Qt::LeftButton || !pressed) return;
     pressed = false;
     QPointF g = glPos(e, gla);
@@ -986,11 +945,7 @@ void EditGeometricSnakePlugin::mouseReleaseEvent(QMouseEvent *e, MeshModel &m, G
         report("The click is not on the mesh (no seed placed).", false);
         return;
     }
-    if (guarded("add seed", [&] { ctl->AddSeedFromPick(sp.face, sp.bary); })) {
-        dock->setStatus(QString("%1 seeds; Enter builds an open snake, Shift+Enter a closed one.").arg(ctl->Seeds().size()),
-                        false);
-        afterChange();
-    }
+    if (guarded("add seed", [&] { ctl->AddSeedFromPick(sp.face, sp.bary); })) afterChange(); // the status counts them
 }
 
 void EditGeometricSnakePlugin::keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla)
@@ -1119,6 +1074,7 @@ bool EditGeometricSnakePlugin::handleKey(const QKeyEvent *e)
 void EditGeometricSnakePlugin::decorate(MeshModel &m, GLArea *gla, QPainter *)
 {
     if (gla != glArea) return;
+    checkSuspended(gla);
     if (&m != model) {
         // the current layer changed under us (MeshLab normally restarts the tool)
         if (ctl && !modelAlive()) { ctl.reset(); model = nullptr; setRunning(false); }

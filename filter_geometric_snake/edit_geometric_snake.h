@@ -28,7 +28,9 @@
 #include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/session/controller.h>
 
+class QDockWidget;
 class QKeyEvent;
+class QWheelEvent;
 class SnakeDock;
 
 class EditGeometricSnakePlugin : public QObject, public gs::EditToolBase
@@ -52,6 +54,7 @@ public:
     void mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla) override;
+    void wheelEvent(QWheelEvent *e, MeshModel &m, GLArea *gla) override; // the view's (edit_snake_view.cpp)
 
 protected:
     bool eventFilter(QObject *o, QEvent *e) override;
@@ -85,6 +88,24 @@ private:
     double Minv[16];
     int viewport[4] = {0, 0, 1, 1};
     bool viewValid = false;
+
+    // the view's navigation while the tool is active (edit_snake_view.cpp)
+    bool viewDrag = false;       // a middle-button drag MeshLab's trackball handles (pan)
+    bool shownSuspended = false; // MeshLab's "Not editing" (Esc) state the panel shows
+    void passToView(QEvent *e, GLArea *gla);
+    bool viewButton(QMouseEvent *e, GLArea *gla);
+    void checkSuspended(GLArea *gla);
+    void showSuspended();
+    void keepModifiedFlag(MeshModel &m);
+    void logLayout(QDockWidget *layers);
+
+    // the status line (edit_snake_status.cpp): a message stays until the state changes, then
+    // the line is recomputed from the state
+    long statusRevision = -1;
+    QString lastTimed; // the last action timed as the Log says it ("build, 8.9 ms") ...
+    long lastTimedRevision = -1; // ... shown while the state is the one it made
+    void showStatus(const QString &text, bool error);
+    QString stateLine() const;
 
     // mouse
     bool pressed = false;

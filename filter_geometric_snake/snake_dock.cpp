@@ -50,7 +50,8 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     seedMode->setToolTip("Click on the surface to add a seed (the nearest vertex of the clicked triangle);\n"
                          "drag to paint a stroke of seeds; Ctrl+click removes the nearest seed.\n"
                          "Enter builds an open snake, Shift+Enter a closed one; Backspace removes the last seed (S).\n"
-                         "Esc suspends the tool to rotate the view (Esc again resumes).");
+                         "The wheel zooms and the middle button pans the view as always;\n"
+                         "Esc suspends the tool to rotate the view with the left button (Esc again resumes).");
     editMode = new QRadioButton("Edit samples");
     editMode->setToolTip("Drag a sample along the surface (point editing); click selects a sample,\n"
                          "Shift+click pins/unpins it (E). Keys: P pin, I insert, Delete/Backspace delete, Space step,\n"
@@ -64,6 +65,12 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     convergence->setToolTip("Convergence indicator of the selected snake");
     hm->addWidget(convergence);
     top->addLayout(hm);
+    suspended = new QLabel("Suspended (Esc): the mouse turns the view; the panel and the keys still act on the "
+                           "snakes. Esc resumes.");
+    suspended->setWordWrap(true);
+    suspended->setStyleSheet("background: #ffe08a; color: black; padding: 3px;");
+    suspended->setVisible(false);
+    top->addWidget(suspended);
     status = new StatusLine;
     top->addWidget(status);
     QHBoxLayout *hb = new QHBoxLayout;
@@ -147,7 +154,7 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     exportSelected = button("Export selected...", "Write the selected snake to JSON, OBJ or PLY");
     exportAll = button("Export all...", "Write all snakes to JSON, OBJ or PLY");
     addLayer = button("Add as layer", "Add the selected snake's curve to the document as an edge layer");
-    saveSession = button("Save session", "Save snakes, pins and parameters to <mesh>.snakes.json now (also saved automatically)");
+    saveSession = button("Save session", "Save snakes, pins and parameters to <mesh file>.snakes.json next to the mesh now, e.g. fandisk.ply.snakes.json (also saved automatically)");
     lo->addWidget(exportSelected, 0, 0);
     lo->addWidget(exportAll, 0, 1);
     lo->addWidget(addLayer, 1, 0);
@@ -263,43 +270,6 @@ QWidget *SnakeDock::section(QVBoxLayout *into, const QString &title, bool open)
     return body;
 }
 
-void SnakeDock::dockInto(QMainWindow *mw, QDockWidget *beside)
-{
-    if (!mw) {
-        show();
-        return;
-    }
-    if (mw->dockWidgetArea(this) == Qt::NoDockWidgetArea || isFloating()) {
-        setFloating(false);
-        if (beside && !beside->isFloating() && mw->dockWidgetArea(beside) != Qt::NoDockWidgetArea) {
-            mw->addDockWidget(mw->dockWidgetArea(beside), this);
-            mw->splitDockWidget(beside, this, Qt::Vertical); // stacked under the layer dialog
-            show();
-            beside->show();
-            // the panel gets most of the height; the layers and the Log keep a third (once
-            // the main window has laid the new dock out)
-            QPointer<SnakeDock> self(this);
-            QPointer<QDockWidget> other(beside);
-            QTimer::singleShot(0, mw, [mw, self, other] {
-                if (!self || !other) return;
-                int h = self->height() + other->height();
-                mw->resizeDocks({other.data(), self.data()}, {h * 3 / 10, h - h * 3 / 10}, Qt::Vertical);
-                // the layer dialog does not shrink below its contents: on a short screen
-                // the panel would be cramped, so it becomes a tab beside the layer dialog
-                if (self->height() < 420) {
-                    mw->tabifyDockWidget(other.data(), self.data());
-                    self->show();
-                    self->raise();
-                }
-            });
-        } else {
-            mw->addDockWidget(Qt::RightDockWidgetArea, this);
-        }
-    }
-    show();
-    raise();
-}
-
 bool SnakeDock::eventFilter(QObject *o, QEvent *e)
 {
     if (e->type() == QEvent::Wheel) {
@@ -388,7 +358,7 @@ void StatusLine::relayout()
 
 void SnakeDock::setConvergence(int state)
 {
-    static const char *text[] = {"no snake", "moving", "converged", "running", "stopped"};
+    static const char *text[] = {"no snake", "not converged", "converged", "running", "stopped"};
     static const char *style[] = {"color: gray;", "color: #a06000; font-weight: bold;",
                                   "color: #008000; font-weight: bold;", "color: #0050c0; font-weight: bold;",
                                   "color: #b00000; font-weight: bold;"};

@@ -50,8 +50,10 @@ def main():
         g.xdo("mousemove", px + 37, py + 678, "click", 1)
         time.sleep(1)
         g.screenshot("02_cut_open.png")
-        inside_box = (330, 420, 200, 200)   # inside the square snake, in the 3D view
-        outside_box = (175, 270, 90, 90)    # the plate outside it
+        vx0, vy0, vx1, _ = g.gl_box(g.Image(os.path.join(WORK, "01_started.png")))
+        cx, cy = (vx0 + vx1) // 2, vy0 + 448  # the middle of the 3D view (896 px high)
+        inside_box = (cx - 104, cy - 98, 200, 200)  # inside the square snake, in the 3D view
+        outside_box = (cx - 259, cy - 248, 90, 90)  # the plate outside it
         # Select inside: the Log line, and the faces inside drawn selected (red)
         g.xdo("mousemove", px + 108, py + 716, "click", 1)
         time.sleep(2)
