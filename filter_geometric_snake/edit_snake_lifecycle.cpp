@@ -119,8 +119,8 @@ void EditGeometricSnakePlugin::layerChanged(MeshDocument &md, MeshModel &old, GL
 {
     switchingLayer = true;
     endEdit(old, gla, cont);
-    switchingLayer = false;
     startEdit(md, gla, cont);
+    switchingLayer = false;
 }
 
 // ====================================================================== the next start
@@ -139,6 +139,7 @@ void EditGeometricSnakePlugin::resumeHistory(MeshModel &m, const std::string &st
         return;
     case SnakeHistoryKeeper::Store::Outcome::Taken: {
         ctl->AdoptHistory(std::move(h));
+        if (switchingLayer) return; // back on a layer after a layer switch: no news
         const int n = int(ctl->UndoSteps());
         const std::string next = n > 0 ? "Ctrl+Z undoes the " + ctl->UndoLabel() : "Ctrl+Y redoes the " + ctl->RedoLabel();
         Log(GLLogStream::FILTER, "Geometric snake: the undo history of %s is back (%d step%s; %s).",
