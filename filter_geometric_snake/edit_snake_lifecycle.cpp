@@ -13,7 +13,7 @@
 #include <QFileInfo>
 
 #include <meshlab/glarea.h>
-#include <vcg_ext/snake_mesh_fingerprint.h>
+#include <vcg_ext/session/mesh_fingerprint.h>
 #include <vcg_ext/snake_mesh_store.h>
 
 using vcg::tri::SnakeMeshFingerprint;

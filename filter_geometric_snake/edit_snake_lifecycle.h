@@ -8,7 +8,7 @@
 // the history to the SnakeHistoryKeeper, owned by the plugin's factory, which keeps it per mesh
 // (document, mesh id) until the mesh or its document is closed, and gives it back to the next
 // start on that mesh if the mesh and its snakes are as the tool left them
-// (vcg_ext/snake_kept_histories.h).
+// (vcg_ext/session/kept_histories.h).
 
 #include <set>
 #include <string>
@@ -18,7 +18,7 @@
 
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 #include <vcg_ext/snake_controller.h>
-#include <vcg_ext/snake_kept_histories.h>
+#include <vcg_ext/session/kept_histories.h>
 
 class SnakeHistoryKeeper : public QObject
 {

@@ -1,6 +1,6 @@
 // The edit tool's undo history outlives the tool (issue 37): MeshLab ends the tool when any
-// filter starts; the history is kept per mesh (vcg_ext/snake_kept_histories.h) and adopted by
-// the next session on the same mesh, unless the mesh (vcg_ext/snake_mesh_fingerprint.h) or the
+// filter starts; the history is kept per mesh (vcg_ext/session/kept_histories.h) and adopted by
+// the next session on the same mesh, unless the mesh (vcg_ext/session/mesh_fingerprint.h) or the
 // session changed meanwhile.
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 
 #include <snake_test_util.h>
 #include <vcg_ext/snake_controller.h>
-#include <vcg_ext/snake_kept_histories.h>
-#include <vcg_ext/snake_mesh_fingerprint.h>
+#include <vcg_ext/session/kept_histories.h>
+#include <vcg_ext/session/mesh_fingerprint.h>
 
 using namespace vcg::tri;
 using Controller = SnakeController<CMeshO>;

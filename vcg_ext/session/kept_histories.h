@@ -1,5 +1,5 @@
-#ifndef VCG_EXT_SNAKE_KEPT_HISTORIES_H
-#define VCG_EXT_SNAKE_KEPT_HISTORIES_H
+#ifndef VCG_EXT_SESSION_KEPT_HISTORIES_H
+#define VCG_EXT_SESSION_KEPT_HISTORIES_H
 
 // The undo histories of the meshes the edit tool left (issue 37): MeshLab ends an edit tool
 // whenever a filter starts (even one that only selects), so the tool's undo must outlive the
@@ -17,7 +17,7 @@
 #include <string>
 #include <utility>
 
-#include <vcg_ext/snake_mesh_fingerprint.h>
+#include <vcg_ext/session/mesh_fingerprint.h>
 
 namespace vcg {
 namespace tri {

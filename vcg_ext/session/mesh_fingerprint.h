@@ -1,5 +1,5 @@
-#ifndef VCG_EXT_SNAKE_MESH_FINGERPRINT_H
-#define VCG_EXT_SNAKE_MESH_FINGERPRINT_H
+#ifndef VCG_EXT_SESSION_MESH_FINGERPRINT_H
+#define VCG_EXT_SESSION_MESH_FINGERPRINT_H
 
 // What a mesh is, as far as the snakes on it are concerned: surface points are (face index,
 // barycentric coordinates), so a snake stays meaningful exactly while the faces keep their
