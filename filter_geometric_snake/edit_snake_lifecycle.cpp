@@ -100,7 +100,7 @@ void EditGeometricSnakePlugin::endTool()
     if (!active || switchingLayer) return; // a layer switch restarts the tool at once
     QString msg = byUser ? QString("Geometric snake: the tool ended on %1").arg(label)
                          : QString("Geometric snake: MeshLab ended the tool on %1 (it ends edit tools when a filter or "
-                                   "its dialog starts)").arg(label);
+                                   "its dialog starts, or the document closes)").arg(label);
     msg += sidecar.isEmpty() ? QString("; the session is kept on the mesh")
                              : QString("; the session is saved to %1").arg(QFileInfo(sidecar).fileName());
     if (keptSteps > 0)
