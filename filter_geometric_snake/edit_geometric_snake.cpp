@@ -81,7 +81,7 @@ Eigen::Vector4d apply(const double *m, const Eigen::Vector4d &v) { return Eigen:
 } // namespace
 
 
-EditGeometricSnakePlugin::EditGeometricSnakePlugin()
+EditGeometricSnakePlugin::EditGeometricSnakePlugin(SnakeHistoryKeeper *k) : keeper(k)
 {
     runTimer.setInterval(0);
     connect(&runTimer, SIGNAL(timeout()), this, SLOT(runTick()));
@@ -220,6 +220,7 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
     } else {
         try { ctl->SetParams(paramsFromDock()); } catch (const SnakeError &) {}
     }
+    resumeHistory(m, stored); // the undo history kept when the tool last left this mesh (edit_snake_lifecycle.cpp)
     (ctl->SnakeCount() > 0 ? dock->editMode : dock->seedMode)->setChecked(true);
     refreshDock();
     if (!sidecarProblem.isEmpty()) report(sidecarProblem, true); // stays in the status line, and goes to the Log
@@ -236,40 +237,6 @@ bool EditGeometricSnakePlugin::modelAlive() const
     if (!model) return false;
     if (!doc) return true;
     return gs::host::HasMesh(*doc, model);
-}
-
-void EditGeometricSnakePlugin::stop(bool save)
-{
-    setRunning(false);
-    if (ctl && save && modelAlive()) {
-        try {
-            vcg::tri::SnakeMeshStore<CMeshO>::Set(model->cm, ctl->ToJson().dump());
-            ctl->Autosave(true);
-        } catch (const std::exception &e) {
-            report(QString("Geometric snake: saving the session failed: %1").arg(e.what()), true);
-        }
-    }
-    ctl.reset();
-    model = nullptr;
-    currentSample = -1;
-    pressed = stroking = false;
-    dragSample = -1;
-    stroke.clear();
-    refreshDock(); // nothing stays enabled that would act on a mesh the tool left
-}
-
-void EditGeometricSnakePlugin::endEdit(MeshModel &, GLArea *, MLSceneGLSharedDataContext *)
-{
-    stop(true);
-    ownKeys(false);
-    hideDockLater();
-}
-
-void EditGeometricSnakePlugin::endEdit(MeshDocument &, GLArea *, MLSceneGLSharedDataContext *)
-{
-    stop(true);
-    ownKeys(false);
-    hideDockLater();
 }
 
 /// Hides the panel once control returns to the event loop, unless the tool started again

@@ -25,6 +25,7 @@
 
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 #include <vcg/space/index/grid_static_ptr.h>
+#include "edit_snake_lifecycle.h"
 #include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/session/controller.h>
 
@@ -40,7 +41,8 @@ class EditGeometricSnakePlugin : public QObject, public gs::EditToolBase
 public:
     typedef vcg::tri::SnakeController<CMeshO> Controller;
 
-    EditGeometricSnakePlugin();
+    /// `keeper`: where the undo histories of the meshes the tool left are kept (the factory's).
+    explicit EditGeometricSnakePlugin(SnakeHistoryKeeper *keeper = nullptr);
     virtual ~EditGeometricSnakePlugin();
 
     static const QString Info();
@@ -49,6 +51,7 @@ public:
     bool startEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void endEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void endEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
+    void layerChanged(MeshDocument &md, MeshModel &old, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void decorate(MeshModel &m, GLArea *gla, QPainter *p) override;
     void mousePressEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
@@ -119,6 +122,13 @@ private:
 
     bool startOn(MeshModel &m);
     void stop(bool save);
+    // the tool's end and restart (edit_snake_lifecycle.cpp): the undo history outlives the tool
+    QPointer<SnakeHistoryKeeper> keeper;
+    bool switchingLayer = false;
+    int keptSteps = 0; // undo steps the last stop() kept
+    void endTool();
+    void keepHistory(const std::string &session);
+    void resumeHistory(MeshModel &m, const std::string &stored);
     bool modelAlive() const;
     std::vector<vcg::tri::ProtectedFile> protectedFiles() const; // never overwritten by exports
     void connectDock();

@@ -445,6 +445,12 @@ public:
     /// Increases whenever the controller changes the mesh's selection (ChangeSelection, or an
     /// undo / redo of it): the view redraws the selection then.
     long SelectionRevision() const { return selectionRevision; }
+    /// The undo history, to keep while the edit tool is away (SnakeKeptHistories): taken out
+    /// (this controller's history is left empty) and adopted by the next controller on the same
+    /// mesh once it has restored the session this one saved.
+    typedef typename SnakeSessionHistory<Snake, SnakeSeedList<MeshType>, MeshSelectionMemento<MeshType>>::KeptSteps KeptHistory;
+    KeptHistory TakeHistory() { return history.Take(); }
+    void AdoptHistory(KeptHistory h) { history.Adopt(std::move(h)); }
     /// Memory bound of the history (default 100 MB) and its current estimate.
     void SetUndoLimit(size_t bytes) { history.SetLimit(bytes); }
     size_t UndoBytes() const { return history.Bytes(); }

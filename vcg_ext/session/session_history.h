@@ -151,6 +151,29 @@ private:
     static std::shared_ptr<const MeshStateType> noSave() { return nullptr; }
     static void noLoad(const MeshStateType &) {}
 
+public:
+    /// The recorded steps, pure data (the snakes' mementos, seeds, parameters): taken out when
+    /// the edit tool leaves the mesh and adopted by the next session on it (SnakeKeptHistories),
+    /// so Undo goes on across MeshLab ending and restarting the tool.
+    typedef SnakeUndo<Session> KeptSteps;
+    /// Takes the steps out; the history is left empty.
+    KeptSteps Take()
+    {
+        KeptSteps s = std::move(undo);
+        undo = KeptSteps(s.Limit());
+        Clear();
+        return s;
+    }
+    /// Goes on with `s`, steps of this session (the current state is where they left off).
+    void Adopt(KeptSteps s)
+    {
+        s.SetLimit(undo.Limit());
+        undo = std::move(s);
+        AllChanged();
+        lastPushed.clear();
+    }
+
+private:
     Live cur;
     SnakeUndo<Session> undo;
     // saved[k]: snake k's memento while it is unchanged (nullptr: changed since), shared by
