@@ -109,6 +109,11 @@ public:
     {
         if (energy.SetSettings(type, smoothing)) energyChanged();
     }
+    /// Computes the energy and builds the shared surface on another thread, for the snakes to
+    /// come (SnakeEnergySource::PrepareInBackground): the edit tool starts it when it starts,
+    /// so that Build does not wait for them. The mesh must not change until a call that uses
+    /// the energy (those wait for it).
+    void PrepareInBackground() { energy.PrepareInBackground(); }
     /// The shared surface; computes the energy first if that was not done yet.
     Surface &EnsureSurface() { return *energy.EnsureSurface(); }
     bool HasSurface() const { return bool(energy.SurfacePtr()); }
