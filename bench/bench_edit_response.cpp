@@ -3,11 +3,13 @@
 //
 // BM_PickGrid      the uniform grid of the faces that picking casts rays on (once per mesh)
 // BM_Prepare       the feature energy and the snake surface (once per mesh; the tool starts it
-//                  on another thread when it starts, SnakeController::PrepareInBackground)
+//                  on another thread when it starts, SnakeController::PrepareInBackground,
+//                  with the seed paths' SeedPath::MeshIndex)
 // BM_Click         one seed click once both are ready: the ray cast and the seed added
 // BM_Build         Enter with 4 seeds across the bunny once both are ready: the seed path (A*
 //                  between the clicked points), the samples, the session as JSON for autosave
-// BM_BuildCold     the same on a controller that has not prepared (what Build cost before)
+// BM_BuildCold     the same on a controller that has not prepared (what the first Build cost
+//                  before; every Build paid the seed path's O(mesh) part)
 // Run: build/bench/bench_edit_response --benchmark_repetitions=5 and read the medians.
 
 #include <benchmark/benchmark.h>
@@ -80,17 +82,22 @@ CFaceO *Click(double fx, double fy, SurfacePoint &sp)
 const double kX[4] = {0.43, 0.45, 0.47, 0.49}; // across the body (~100 samples, as the 92), at 40 % of its height
 const double kY = 0.4;
 
+double BuildOnce(Controller &c, benchmark::State *state = nullptr);
+
+/// A controller as the edit tool has it some seconds after it started: prepared, one Build done.
 Controller &Ready()
 {
     static std::unique_ptr<Controller> c;
     if (!c) {
         c.reset(new Controller(Mesh()));
+        c->PrepareInBackground();
         c->EnsureSurface();
+        BuildOnce(*c);
     }
     return *c;
 }
 
-double BuildOnce(Controller &c, benchmark::State *state = nullptr)
+double BuildOnce(Controller &c, benchmark::State *state)
 {
     for (double x : kX) {
         SurfacePoint sp;

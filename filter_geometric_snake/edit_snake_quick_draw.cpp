@@ -2,12 +2,14 @@
 // every mouse event it passes to an edit tool (GLArea::mousePressEvent/mouseMoveEvent/
 // mouseReleaseEvent call update()): on bunny00 subdivided twice (1.2M faces) under software
 // OpenGL one redraw took 0.42-0.54 s, so a seed click waited for two of them. In seed mode
-// the tool takes the mouse events of the 3D view before MeshLab does (no redraw of the mesh)
-// and draws what changed over the frame on screen: a seed, a stroke being painted, a new
-// snake. Nothing else in the view changes then: the view's matrices are those of the last
-// frame, and its depth buffer is still there to hide what lies behind the mesh. A seed is
-// checked on screen afterwards; where the front buffer is not what the user sees (some
-// compositors) the full redraw follows at once, as before.
+// the tool takes the mouse events of the 3D view before MeshLab does, and under Mesa's
+// software OpenGL draws what changed over the last frame instead of redrawing the mesh: a
+// seed, a stroke being painted, a new snake. There a buffer swap copies the back buffer to
+// the window and keeps it (and the depth buffer), so the last frame is still in it; nothing
+// else in the view changed (the view's matrices are the last frame's). A GPU redraws the mesh
+// in milliseconds, and its swaps may not keep the back buffer: there the full redraw, as before.
+// (Drawing into the front buffer instead showed a black view under Xvfb: its front buffer
+// does not hold the frame on screen.)
 
 #include <GL/glew.h>
 
@@ -16,7 +18,18 @@
 
 #include <QMouseEvent>
 
+#include <string>
+
 #include <meshlab/glarea.h>
+
+/// Mesa's software OpenGL (llvmpipe, softpipe, swrast): swaps copy and keep the back buffer.
+static bool softwareGL()
+{
+    const char *r = reinterpret_cast<const char *>(glGetString(GL_RENDERER));
+    const std::string s = r ? r : "";
+    return s.find("llvmpipe") != std::string::npos || s.find("softpipe") != std::string::npos ||
+           s.find("Software Rasterizer") != std::string::npos;
+}
 
 bool EditGeometricSnakePlugin::seedModeMouse(QObject *o, QEvent *e)
 {
@@ -42,9 +55,10 @@ bool EditGeometricSnakePlugin::seedModeMouse(QObject *o, QEvent *e)
     return true;
 }
 
-/// Draws the tool's curves and seeds over the frame on screen (its front buffer), with the
-/// view of the last frame; `mustShow` (a new seed) is then read back: if it is not on screen,
-/// a full redraw. Logs the response time of the input being shown (SnakeResponseClock).
+/// Draws the tool's curves and seeds over the last frame (software OpenGL, see above) and
+/// swaps, with the view of the last frame; `mustShow` (a new seed) is read back first: if it
+/// is not there, a full redraw. Elsewhere a full redraw. Logs the response time of the input
+/// being shown (SnakeResponseClock).
 void EditGeometricSnakePlugin::showNow(const vcg::Point3d *mustShow)
 {
     if (!glArea || !ctl || !model || !viewValid || !glArea->isVisible()) {
@@ -52,6 +66,10 @@ void EditGeometricSnakePlugin::showNow(const vcg::Point3d *mustShow)
         return;
     }
     glArea->makeCurrent();
+    if (!softwareGL()) {
+        glArea->update();
+        return;
+    }
     glPushAttrib(GL_ALL_ATTRIB_BITS);
     glMatrixMode(GL_PROJECTION);
     glPushMatrix();
@@ -60,7 +78,7 @@ void EditGeometricSnakePlugin::showNow(const vcg::Point3d *mustShow)
     glPushMatrix();
     glLoadMatrixd(MV);
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    glDrawBuffer(GL_FRONT);
+    glDrawBuffer(GL_BACK);
     bool ok = true;
     try {
         drawAll(*model);
@@ -72,13 +90,11 @@ void EditGeometricSnakePlugin::showNow(const vcg::Point3d *mustShow)
         vcg::Point3d s;
         GLubyte px[3] = {0, 0, 0};
         if (project(*mustShow, s)) {
-            glReadBuffer(GL_FRONT);
+            glReadBuffer(GL_BACK);
             glReadPixels(int(s[0]), int(s[1]), 1, 1, GL_RGB, GL_UNSIGNED_BYTE, px);
         }
         ok = px[1] > 150 && px[0] < 100 && px[2] < 100; // the seed's green
     }
-    glDrawBuffer(GL_BACK);
-    glReadBuffer(GL_BACK);
     glMatrixMode(GL_PROJECTION);
     glPopMatrix();
     glMatrixMode(GL_MODELVIEW);
@@ -88,5 +104,6 @@ void EditGeometricSnakePlugin::showNow(const vcg::Point3d *mustShow)
         glArea->update(); // the response is logged when that redraw shows it
         return;
     }
+    glArea->swapBuffers();
     if (response.Pending()) Log(GLLogStream::FILTER, "%s", response.Shown("drawn over the last frame").c_str());
 }

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <future>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -113,7 +114,14 @@ public:
     /// come (SnakeEnergySource::PrepareInBackground): the edit tool starts it when it starts,
     /// so that Build does not wait for them. The mesh must not change until a call that uses
     /// the energy (those wait for it).
-    void PrepareInBackground() { energy.PrepareInBackground(); }
+    void PrepareInBackground()
+    {
+        energy.PrepareInBackground();
+        if (!pathIndex && !pathIndexReady.valid()) {
+            MeshType *m = &mesh;
+            pathIndexReady = std::async(std::launch::async, [m] { return std::make_shared<const PathIndex>(*m); });
+        }
+    }
     /// The shared surface; computes the energy first if that was not done yet.
     Surface &EnsureSurface() { return *energy.EnsureSurface(); }
     bool HasSurface() const { return bool(energy.SurfacePtr()); }
@@ -208,7 +216,7 @@ public:
         if (seedList.AtVertices())
             sn->InitFromSeeds(seedList.Vertices(), closed, seedCost, LengthScale());
         else
-            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale());
+            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale(), &seedPathIndex());
         addSnake(std::move(sn), true);
         return selected;
     }
@@ -220,7 +228,7 @@ public:
         EnsureSurface();
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale());
+        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(), &seedPathIndex());
         addSnake(std::move(sn), false);
         return selected;
     }
@@ -583,6 +591,17 @@ private:
     double computeMs = 0;
 
     SnakeSessionHistory<Snake, SnakeSeedList<MeshType>> history{{snakes, selected, seedList, params}};
+    // what the seed paths search on, per mesh (SeedPath::MeshIndex): kept across Builds
+    typedef typename SeedPath<MeshType>::MeshIndex PathIndex;
+    std::shared_ptr<const PathIndex> pathIndex;
+    std::future<std::shared_ptr<const PathIndex>> pathIndexReady; // PrepareInBackground's; last: ends first
+
+    const PathIndex &seedPathIndex()
+    {
+        if (pathIndexReady.valid()) pathIndex = pathIndexReady.get();
+        if (!pathIndex || !pathIndex->Matches(mesh)) pathIndex = std::make_shared<const PathIndex>(mesh);
+        return *pathIndex;
+    }
 
     bool record(const char *label) { return history.Record(label); }
     // builds the snakes an undo brings back
