@@ -180,8 +180,13 @@ public:
             for (size_t f = 0; f < m.face.size(); ++f)
                 if (!m.face[f].IsD())
                     for (int k = 0; k < 3; ++k) corner[MV::VIndex(m, m.face[f].cV(k))] = std::make_pair(int(f), k);
-            if (!adjacency) return;
-            const int nv = int(nv_);
+            if (adjacency) VertexAdjacency(m, start, adj);
+        }
+        /// The vertex graph from the faces: v's neighbours are adj[start[v] .. start[v + 1]),
+        /// each face adding its other two corners (so an inner edge appears twice).
+        static void VertexAdjacency(const MeshType &m, std::vector<int> &start, std::vector<int> &adj)
+        {
+            const int nv = int(m.vert.size());
             start.assign(nv + 1, 0);
             for (const FaceType &f : m.face)
                 if (!f.IsD())
@@ -375,24 +380,10 @@ private:
                 return;
             }
             useVF_ = tri::HasPerVertexVFAdjacency(m) && tri::HasPerFaceVFAdjacency(m);
-            if (useVF_) {
+            if (useVF_)
                 UpdateTopology<MeshType>::VertexFace(m);
-            } else {
-                start_.assign(nv + 1, 0);
-                for (const FaceType &f : m.face)
-                    if (!f.IsD())
-                        for (int k = 0; k < 3; ++k) start_[MV::VIndex(m, f.cV(k)) + 1] += 2;
-                for (int v = 0; v < nv; ++v) start_[v + 1] += start_[v];
-                adj_.resize(start_[nv]);
-                std::vector<int> fill(start_.begin(), start_.end() - 1);
-                for (const FaceType &f : m.face)
-                    if (!f.IsD())
-                        for (int k = 0; k < 3; ++k) {
-                            const int v = MV::VIndex(m, f.cV(k));
-                            adj_[fill[v]++] = MV::VIndex(m, f.cV((k + 1) % 3));
-                            adj_[fill[v]++] = MV::VIndex(m, f.cV((k + 2) % 3));
-                        }
-            }
+            else
+                MeshIndex::VertexAdjacency(m, start_, adj_);
         }
 
         /// Multi-source, multi-target A*: sources (vertex, initial cost), targets (vertex, cost
