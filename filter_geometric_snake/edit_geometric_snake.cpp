@@ -85,6 +85,11 @@ EditGeometricSnakePlugin::EditGeometricSnakePlugin(SnakeHistoryKeeper *k) : keep
 {
     runTimer.setInterval(0);
     connect(&runTimer, SIGNAL(timeout()), this, SLOT(runTick()));
+    redrawLater.setSingleShot(true);
+    redrawLater.setInterval(800);
+    connect(&redrawLater, &QTimer::timeout, this, [this] {
+        if (glArea) glArea->update();
+    });
     for (int i = 0; i < 16; ++i) M[i] = Minv[i] = (i % 5 == 0) ? 1 : 0;
 }
 
@@ -171,7 +176,6 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         return false;
     }
     model = &m;
-    pickGrid.reset(); // the mesh may have changed since the tool last ran
     ctl.reset(new Controller(m.cm));
     currentSample = -1;
     exportedRevision = storedRevision = -1;
@@ -222,6 +226,9 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
     }
     resumeHistory(m, stored); // the undo history kept when the tool last left this mesh (edit_snake_lifecycle.cpp)
     (ctl->SnakeCount() > 0 ? dock->editMode : dock->seedMode)->setChecked(true);
+    // what the first click and the first Build need, made while the user places seeds
+    ctl->PrepareInBackground();
+    preparePickGrid();
     refreshDock();
     if (!sidecarProblem.isEmpty()) report(sidecarProblem, true); // stays in the status line, and goes to the Log
     else if (!restored.isEmpty()) report(restored, false);
@@ -316,7 +323,7 @@ void EditGeometricSnakePlugin::afterChange(bool forceSave)
         ctl->SetAutosave(std::string()); // do not retry on every operation
     }
     refreshDock();
-    if (glArea) glArea->update();
+    if (glArea && !quickShow) glArea->update();
 }
 
 SnakeParams EditGeometricSnakePlugin::paramsFromDock() const
@@ -416,6 +423,7 @@ void EditGeometricSnakePlugin::connectDock()
 void EditGeometricSnakePlugin::buildSnake(bool closed)
 {
     setRunning(false);
+    response.Start("build");
     if (guarded("build snake", [&] {
             ctl->SetNewSnakeParams(paramsFromDock()); // the other snakes stay as they are (converged)
             auto t0 = std::chrono::steady_clock::now();
@@ -428,8 +436,14 @@ void EditGeometricSnakePlugin::buildSnake(bool closed)
         })) {
         currentSample = -1;
         dock->editMode->setChecked(true);
+        quickShow = true; // the new snake drawn over the last frame; the full redraw when the user pauses
         afterChange(true);
-    }
+        quickShow = false;
+        response.Handled();
+        showNow();
+        redrawLater.start();
+    } else
+        response.Cancel();
 }
 
 void EditGeometricSnakePlugin::stepOnce()
@@ -717,14 +731,15 @@ bool EditGeometricSnakePlugin::boundedDragTarget(const QPointF &g, const Surface
     const double pixelSize = (b - a).Norm(); // the size of a pixel at the sample's depth
     const double pixels = std::hypot(g.x() - dragLastPos.x(), g.y() - dragLastPos.y()) + 2.0;
     const double maxStep = 2.0 * pixels * pixelSize, d = (to - from).Norm();
-    if (!(d > maxStep) || !pickGrid) {
+    FaceGrid *grid = pickGrid();
+    if (!(d > maxStep) || !grid) {
         target = hit;
         return true;
     }
     const vcg::Point3d q = from + (to - from) * (maxStep / d);
     Scalarm dist = 0;
     Point3m closest;
-    CFaceO *f = vcg::tri::GetClosestFaceBase(m, *pickGrid, Point3m::Construct(q), Scalarm(2 * maxStep), dist, closest);
+    CFaceO *f = vcg::tri::GetClosestFaceBase(m, *grid, Point3m::Construct(q), Scalarm(2 * maxStep), dist, closest);
     if (!f || f->IsD()) return false;
     Point3m bary;
     if (!vcg::InterpolationParameters(vcg::Triangle3<Scalarm>(f->cP(0), f->cP(1), f->cP(2)), closest, bary)) return false;
@@ -740,39 +755,6 @@ bool EditGeometricSnakePlugin::project(const vcg::Point3d &p, vcg::Point3d &s) c
     s = vcg::Point3d(viewport[0] + (c[0] / c[3] + 1) * 0.5 * viewport[2], viewport[1] + (c[1] / c[3] + 1) * 0.5 * viewport[3],
                      (c[2] / c[3] + 1) * 0.5);
     return std::isfinite(s[0]) && std::isfinite(s[1]);
-}
-
-/// Exact picking: the ray through the pixel against the mesh's triangles, with vcglib's
-/// ray casting on a uniform grid (tri::DoRay), so a click costs the same on a 1M-face mesh;
-/// the hit gives the face and barycentric coordinates.
-bool EditGeometricSnakePlugin::pick(const QPointF &g, SurfacePoint &sp, vcg::Point3d &xyz)
-{
-    if (!viewValid || !ctl || !model) return false;
-    double nx = 2.0 * (g.x() - viewport[0]) / viewport[2] - 1.0, ny = 2.0 * (g.y() - viewport[1]) / viewport[3] - 1.0;
-    Eigen::Vector4d a = apply(Minv, Eigen::Vector4d(nx, ny, -1, 1)), b = apply(Minv, Eigen::Vector4d(nx, ny, 1, 1));
-    if (a[3] == 0 || b[3] == 0) return false;
-    Eigen::Vector3d o = a.head<3>() / a[3], d = b.head<3>() / b[3] - o;
-    if (!o.allFinite() || !d.allFinite() || d.norm() == 0) return false;
-    CMeshO &m = model->cm;
-    if (!pickGrid || pickGridFaces != m.face.size() || pickGridMesh != &m) {
-        pickGrid.reset(new vcg::GridStaticPtr<CFaceO, Scalarm>());
-        pickGrid->Set(m.face.begin(), m.face.end());
-        pickGridFaces = m.face.size();
-        pickGridMesh = &m;
-    }
-    vcg::Ray3<Scalarm> ray(Point3m(o[0], o[1], o[2]), Point3m(d[0], d[1], d[2]));
-    Scalarm t = 0;
-    CFaceO *f = vcg::tri::DoRay(m, *pickGrid, ray, Scalarm(d.norm() * 2), t);
-    if (f == nullptr || f->IsD() || !std::isfinite(t)) return false;
-    ray.Normalize();
-    const Point3m hit = ray.Origin() + ray.Direction() * t;
-    vcg::Triangle3<Scalarm> tri(f->cP(0), f->cP(1), f->cP(2));
-    Point3m bary;
-    if (!vcg::InterpolationParameters(tri, hit, bary)) return false; // a degenerate face: ignore the click
-    sp = SurfacePoint(int(vcg::tri::Index(m, f)), vcg::Point3d::Construct(bary));
-    sp.Normalize();
-    xyz = sp.Pd(m);
-    return true;
 }
 
 int EditGeometricSnakePlugin::nearestSampleOnScreen(const QPointF &g, int &snake, double radius)
@@ -868,7 +850,11 @@ void EditGeometricSnakePlugin::mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLAr
             vcg::Point2f p0 = QTLogicalToOpenGL(gla, pressPos);
             if (pick(QPointF(p0[0], p0[1]), sp, x)) stroke.push_back(sp);
         }
-        if (stroking && pick(g, sp, x)) stroke.push_back(sp);
+        if (stroking && pick(g, sp, x)) {
+            stroke.push_back(sp);
+            showNow(); // the stroke grows without redrawing the mesh
+        }
+        return;
     }
     gla->update();
 }
@@ -904,15 +890,24 @@ void EditGeometricSnakePlugin::mouseReleaseEvent(QMouseEvent *e, MeshModel &m, G
         std::vector<SurfacePoint> st;
         st.swap(stroke);
         if (guarded("stroke", [&] { ctl->AddSeedsFromStroke(st); })) afterChange();
-        return;
+        return; // a full redraw: the stroke's dots go, its seeds stay
     }
+    response.Start("seed");
     SurfacePoint sp;
     vcg::Point3d x;
     if (!pick(g, sp, x)) {
+        response.Cancel();
         report("The click is not on the mesh (no seed placed).", false);
         return;
     }
-    if (guarded("add seed", [&] { ctl->AddSeedFromPick(sp.face, sp.bary); })) afterChange(); // the status counts them
+    if (guarded("add seed", [&] { ctl->AddSeedFromPick(sp.face, sp.bary); })) {
+        quickShow = true; // a seed more: drawn over the last frame (MeshLab's redraw of a large mesh is slow)
+        afterChange(); // the status counts them
+        quickShow = false;
+        response.Handled();
+        showNow(&x);
+    } else
+        response.Cancel();
 }
 
 void EditGeometricSnakePlugin::keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla)
@@ -974,6 +969,7 @@ static bool isTextEntry(QWidget *w)
 /// handled here. Dialogs and other windows are left alone.
 bool EditGeometricSnakePlugin::eventFilter(QObject *o, QEvent *e)
 {
+    if (seedModeMouse(o, e)) return true;
     if (!keysOwned || (e->type() != QEvent::ShortcutOverride && e->type() != QEvent::KeyPress)) return false;
     QWidget *w = qobject_cast<QWidget *>(o);
     if (!w) return false; // the QWindow passes it on to its focus widget
@@ -983,10 +979,8 @@ bool EditGeometricSnakePlugin::eventFilter(QObject *o, QEvent *e)
     QWidget *main = glArea ? glArea->window() : nullptr;
     if (win != main && win != dock.data()) return false;
     if (isTextEntry(w)) return false;
-    if (e->type() == QEvent::KeyPress) {
-        handleKey(k);
-        if (glArea) glArea->update();
-    }
+    // no redraw here: what changes redraws (afterChange), or draws itself (Build, showNow)
+    if (e->type() == QEvent::KeyPress) handleKey(k);
     e->accept();
     return true;
 }
@@ -1054,7 +1048,7 @@ void EditGeometricSnakePlugin::decorate(MeshModel &m, GLArea *gla, QPainter *)
         return;
     }
     // cache the view for picking: projection * modelview * mesh transform
-    double P[16], MV[16], T[16], PMV[16];
+    double T[16], PMV[16];
     glGetDoublev(GL_PROJECTION_MATRIX, P);
     glGetDoublev(GL_MODELVIEW_MATRIX, MV);
     glGetIntegerv(GL_VIEWPORT, viewport);
@@ -1068,6 +1062,10 @@ void EditGeometricSnakePlugin::decorate(MeshModel &m, GLArea *gla, QPainter *)
         drawAll(m);
     } catch (const std::exception &e) {
         report(QString("Geometric snake: drawing failed: %1").arg(e.what()), true);
+    }
+    if (response.Pending()) {
+        glFinish(); // software OpenGL draws at the flush: the mesh's redraw counts too
+        Log(GLLogStream::FILTER, "%s", response.Shown("redraw").c_str());
     }
 }
 

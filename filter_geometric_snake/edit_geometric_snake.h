@@ -13,6 +13,7 @@
 // write all its snakes (vcg_ext/io/snake_io.h JSON) to that file after every change.
 
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <string>
@@ -23,6 +24,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include "edit_snake_response.h"
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 #include <vcg/space/index/grid_static_ptr.h>
 #include "edit_snake_lifecycle.h"
@@ -76,6 +78,7 @@ private:
     QTimer runTimer;
     // the Run in progress (time slices): its clocks and counters for the progress and the Log
     QElapsedTimer runClock;
+    SnakeResponseClock response; // input to redraw, for the Log (issue 37)
     double runCompute0 = 0, sliceMs = 30;
     qint64 sliceEnd = -1;
     int runOps0 = 0;
@@ -86,7 +89,8 @@ private:
     int currentSample = -1;
     std::string lastError;
 
-    // cached view (from the last decorate) for exact picking
+    // cached view (from the last decorate) for exact picking and for drawing between redraws
+    double P[16], MV[16]; // MeshLab's projection and modelview (column-major, like GL)
     double M[16];         // projection * modelview * mesh transform (column-major, like GL)
     double Minv[16];
     int viewport[4] = {0, 0, 1, 1};
@@ -142,11 +146,21 @@ private:
     template <class F> bool guarded(const QString &what, F f);
     bool guardedFn(const QString &what, const std::function<void()> &f); // guarded(), for the other files
 
-    // picking
+    // picking (edit_snake_picking.cpp)
+    typedef vcg::GridStaticPtr<CFaceO, Scalarm> FaceGrid;
     bool pick(const QPointF &glPos, vcg::tri::SurfacePoint &sp, vcg::Point3d &xyz);
-    std::unique_ptr<vcg::GridStaticPtr<CFaceO, Scalarm>> pickGrid; // built on the first click
+    void preparePickGrid();
+    FaceGrid *pickGrid();
+    std::unique_ptr<FaceGrid> faceGrid;               // the faces, for ray casting and closest points
+    std::future<std::unique_ptr<FaceGrid>> faceGridReady; // being built since the tool started
     size_t pickGridFaces = 0;
     const CMeshO *pickGridMesh = nullptr;
+
+    // showing an input at once, over the last frame (edit_snake_quick_draw.cpp)
+    bool seedModeMouse(QObject *o, QEvent *e);
+    void showNow(const vcg::Point3d *mustShow = nullptr);
+    bool quickShow = false; // afterChange shows the change with showNow instead of a full redraw
+    QTimer redrawLater;     // the full redraw once the user pauses (after Build)
     bool project(const vcg::Point3d &p, vcg::Point3d &screen) const;
     bool unproject(const vcg::Point3d &screen, vcg::Point3d &p) const;
     bool boundedDragTarget(const QPointF &glPos, const vcg::tri::SurfacePoint &hit, vcg::tri::SurfacePoint &target);

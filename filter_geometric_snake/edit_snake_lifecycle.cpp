@@ -55,6 +55,9 @@ void SnakeHistoryKeeper::sweep(MeshDocument &doc)
 void EditGeometricSnakePlugin::stop(bool save)
 {
     setRunning(false);
+    redrawLater.stop();
+    if (faceGridReady.valid()) faceGridReady.wait(); // it reads the mesh MeshLab may now change
+    faceGrid.reset();
     keptSteps = 0;
     if (ctl && save && modelAlive()) {
         try {

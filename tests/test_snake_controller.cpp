@@ -727,3 +727,41 @@ TEST(SnakeController, SessionMapsOntoTheMeshAfterACut)
     for (size_t i = 0; i < d.Get(0).Samples().size(); ++i) moved += d.Get(0).Samples()[i].p.face != c.Get(0).Samples()[i].p.face;
     EXPECT_GT(moved, 0); // samples in split faces went to their sub-faces
 }
+
+// The edit tool prepares the energy and the surface on another thread when it starts (issue
+// 37): the snake built afterwards is the one built without it, the energy settings chosen
+// meanwhile win, and a controller dropped while preparing waits for the thread (ASan).
+TEST(SnakeController, PreparingInBackgroundBuildsTheSameSnake)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    std::vector<vcg::Point3d> plain;
+    {
+        Controller c(m);
+        c.SetSeeds(EdgeSeeds(m, 2.0));
+        c.CloseSeeds(false);
+        c.Run(50);
+        plain = c.Get(0).positions();
+    }
+    Controller c(m);
+    c.PrepareInBackground();
+    c.PrepareInBackground(); // once
+    c.SetSeeds(EdgeSeeds(m, 2.0)); // seeds are placed meanwhile
+    c.CloseSeeds(false);
+    EXPECT_TRUE(c.HasSurface());
+    EXPECT_TRUE(c.EnergyComputed());
+    c.Run(50);
+    const std::vector<vcg::Point3d> pre = c.Get(0).positions();
+    ASSERT_EQ(pre.size(), plain.size());
+    for (size_t i = 0; i < pre.size(); ++i) EXPECT_LT((pre[i] - plain[i]).Norm(), 1e-12) << i;
+
+    Controller d(m);
+    d.PrepareInBackground();
+    d.SetEnergySettings(FeatureEnergyType::Crease, 0); // waits, then recomputes with these
+    EXPECT_EQ(d.EnergyType(), FeatureEnergyType::Crease);
+    EXPECT_TRUE(d.HasSurface());
+    {
+        Controller dropped(m);
+        dropped.PrepareInBackground();
+    }
+}

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <future>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -109,6 +110,18 @@ public:
     void SetEnergySettings(FeatureEnergyType type, int smoothing)
     {
         if (energy.SetSettings(type, smoothing)) energyChanged();
+    }
+    /// Computes the energy and builds the shared surface on another thread, for the snakes to
+    /// come (SnakeEnergySource::PrepareInBackground): the edit tool starts it when it starts,
+    /// so that Build does not wait for them. The mesh must not change until a call that uses
+    /// the energy (those wait for it).
+    void PrepareInBackground()
+    {
+        energy.PrepareInBackground();
+        if (!pathIndex && !pathIndexReady.valid()) {
+            MeshType *m = &mesh;
+            pathIndexReady = std::async(std::launch::async, [m] { return std::make_shared<const PathIndex>(*m); });
+        }
     }
     /// The shared surface; computes the energy first if that was not done yet.
     Surface &EnsureSurface() { return *energy.EnsureSurface(); }
@@ -204,7 +217,7 @@ public:
         if (seedList.AtVertices())
             sn->InitFromSeeds(seedList.Vertices(), closed, seedCost, LengthScale());
         else
-            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale());
+            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale(), &seedPathIndex());
         addSnake(std::move(sn), true);
         return selected;
     }
@@ -216,7 +229,7 @@ public:
         EnsureSurface();
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale());
+        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(), &seedPathIndex());
         addSnake(std::move(sn), false);
         return selected;
     }
@@ -617,6 +630,17 @@ private:
         return [this](const Selection &s) {
             if (s.Restore(mesh)) ++selectionRevision;
         };
+    }
+    // what the seed paths search on, per mesh (SeedPath::MeshIndex): kept across Builds
+    typedef typename SeedPath<MeshType>::MeshIndex PathIndex;
+    std::shared_ptr<const PathIndex> pathIndex;
+    std::future<std::shared_ptr<const PathIndex>> pathIndexReady; // PrepareInBackground's; last: ends first
+
+    const PathIndex &seedPathIndex()
+    {
+        if (pathIndexReady.valid()) pathIndex = pathIndexReady.get();
+        if (!pathIndex || !pathIndex->Matches(mesh)) pathIndex = std::make_shared<const PathIndex>(mesh);
+        return *pathIndex;
     }
 
     bool record(const char *label) { return history.Record(label); }
