@@ -64,7 +64,8 @@ def main():
         if not check(bool(pg) and pg[0], "the panel is docked (its Log line)"):
             return g.finish()
         _, px, py, pw, ph = pg
-        view = (40, 120, px - 80, 760)  # the 3D view left of the panel
+        # the 3D view as the tool's Log gives it, above MeshLab's info overlay
+        view = (g.VIEW[0], g.VIEW[1], g.VIEW[2], g.VIEW[3] - 105) if g.VIEW else (40, 120, 760, 760)
         g.xdo("mousemove", px + 37, py + 678, "click", 1)  # opens the Cut section
         time.sleep(1)
         # Run (R) until it ends by itself or by its time limit; Esc stops it after 20 s

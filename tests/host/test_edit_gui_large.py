@@ -100,20 +100,21 @@ def main():
         # then focus the view (a click beside the bunny places nothing; Esc twice resumes the
         # tool if that click suspended it, as in host_edit_gui_bunny)
         xdo("windowmove", ml.win, 0, 0)
-        xdo("windowsize", ml.win, 1280, 1000)
+        xdo("windowsize", ml.win, 1600, 1000)
         time.sleep(1.5)
-        xdo("mousemove", 20, 120, "click", 1)
+        img = Image(g.screenshot("00_started.png"))
+        x0, y0, x1, y1 = g.gl_box(img)  # the 3D view, as the tool's Log says
+        xdo("mousemove", x0 + 20, y0 + 50, "click", 1)
         for _ in range(2):
             time.sleep(0.3)
             xdo("key", "Escape")
         time.sleep(1.0)
-        # four seeds across the bunny's body, on a row through the middle of the
-        # view (left of the panel): the open snake between them has about the 92 samples
-        img = Image(g.screenshot("00_started.png"))
-        panel = g.panel_geometry(ml.log_text())
-        right = min(860, panel[1] - 5) if panel and panel[0] and panel[1] > 200 else 860
+        # four seeds across the bunny's body, on a row through the middle of the view: the open
+        # snake between them has about the 92 samples
+        right = x1
         y = 560
-        a, b = g.longest_run([g.is_mesh(img.px(x, y)) for x in range(0, right)])
+        a, b = g.longest_run([g.is_mesh(img.px(x, y)) for x in range(x0, right)])
+        a, b = a + x0, b + x0
         if not check(b - a > 100, "the bunny is in the view (%d px wide on row %d)" % (b - a, y)):
             return g.finish()
         for f in (0.25, 0.42, 0.58, 0.75):
@@ -126,7 +127,7 @@ def main():
             log("click %d: seed shown after %.0f ms (tool %.0f ms, %s %.0f ms)" % ((i + 1,) + s))
         if not check(len(seeds) == 4, "four clicks on the bunny place four seeds (%d)" % len(seeds)):
             return g.finish()
-        green = Image(g.screenshot("01_seeds.png")).count((0, 230, 0), (0, y - 40, 860, y + 40))
+        green = Image(g.screenshot("01_seeds.png")).count((0, 230, 0), (x0, y - 40, x1, y + 40))
         check(green >= 4 * 20, "the four seeds are on screen (%d green pixels)" % green)
         xdo("key", "Return")
         built = wait_for(lambda: (lambda j: j if j and samples(j) else None)(snakes_of(auto)), 30)
