@@ -81,10 +81,15 @@ Eigen::Vector4d apply(const double *m, const Eigen::Vector4d &v) { return Eigen:
 } // namespace
 
 
-EditGeometricSnakePlugin::EditGeometricSnakePlugin()
+EditGeometricSnakePlugin::EditGeometricSnakePlugin(SnakeHistoryKeeper *k) : keeper(k)
 {
     runTimer.setInterval(0);
     connect(&runTimer, SIGNAL(timeout()), this, SLOT(runTick()));
+    redrawLater.setSingleShot(true);
+    redrawLater.setInterval(800);
+    connect(&redrawLater, &QTimer::timeout, this, [this] {
+        if (glArea) glArea->update();
+    });
     for (int i = 0; i < 16; ++i) M[i] = Minv[i] = (i % 5 == 0) ? 1 : 0;
 }
 
@@ -93,6 +98,7 @@ EditGeometricSnakePlugin::~EditGeometricSnakePlugin()
     ownKeys(false);
     runTimer.stop();
     if (ctl && modelAlive()) stop(true);
+    if (dock) dock->savePlace();
     delete dock.data();
 }
 
@@ -113,6 +119,7 @@ bool EditGeometricSnakePlugin::startEdit(MeshDocument &md, GLArea *gla, MLSceneG
     setLog(&md.Log);
     if (md.mm() == nullptr) return false;
     if (md.isBusy()) return false; // MeshLab is still loading or filtering the mesh
+    keepModifiedFlag(*md.mm());
     return startOn(*md.mm());
 }
 
@@ -132,7 +139,7 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         connectDock();
     }
     {
-        // docked on the right, stacked under MeshLab's layer dialog (which holds the Log)
+        // in its own dock area, or beside MeshLab's layer dialog (which holds the Log)
         QDockWidget *layers = nullptr;
         if (mw)
             for (QDockWidget *d : mw->findChildren<QDockWidget *>())
@@ -142,17 +149,10 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         hidePending = false;
         const bool first = !dock->isVisible();
         if (first) dock->dockInto(mw, layers);
-        if (first && mw) {
-            // where the panel is, for the user and for the GUI test that checks it is docked
-            QPointer<SnakeDock> d(dock);
-            QTimer::singleShot(400, this, [this, d, mw] {
-                if (!d || !d->isVisible()) return;
-                QRect r(d->mapToGlobal(QPoint(0, 0)), d->size());
-                Log(GLLogStream::SYSTEM, "Geometric snake: panel %s in MeshLab's main window at %d,%d size %dx%d",
-                    d->isFloating() ? "floating" : "docked", r.x(), r.y(), r.width(), r.height());
-            });
-        }
+        if (first && mw) QTimer::singleShot(400, this, [this, layers = QPointer<QDockWidget>(layers)] { logLayout(layers); });
     }
+    shownSuspended = glArea && glArea->suspendedEditor; // a layer switch keeps MeshLab's Esc state
+    showSuspended();
     ownKeys(true);
     refreshDock();
     lastError.clear(); // a new start: its problems go to the Log again
@@ -176,7 +176,6 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         return false;
     }
     model = &m;
-    pickGrid.reset(); // the mesh may have changed since the tool last ran
     ctl.reset(new Controller(m.cm));
     currentSample = -1;
     exportedRevision = storedRevision = -1;
@@ -207,6 +206,16 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
         restoredFromFile = true;
     }
     if (side.unreadable) sidecarProblem = QString("Geometric snake: %1").arg(QString::fromStdString(side.message));
+    if (!meshPath.empty() && !side.restored && !fromStore) {
+        // the session file is "<mesh file>.snakes.json"; an older README said "<mesh>.snakes.json":
+        // a file of that name may belong to another mesh of the same base name, so it is not read
+        const QFileInfo mf(QString::fromStdString(meshPath));
+        const QString other = mf.absolutePath() + "/" + mf.completeBaseName() + ".snakes.json";
+        if (QFileInfo::exists(other) && other != QString::fromStdString(meshPath) + ".snakes.json")
+            Log(GLLogStream::WARNING, "Geometric snake: %s is not read: this mesh's session file is %s.snakes.json "
+                "(rename it to that to restore it).", qUtf8Printable(QFileInfo(other).fileName()),
+                qUtf8Printable(mf.fileName()));
+    }
     // a restored session brings its parameters even when it holds only seeds so far
     if (ctl->SnakeCount() > 0 || side.restored || fromStore) {
         paramsToDock(ctl->Params());
@@ -215,7 +224,11 @@ bool EditGeometricSnakePlugin::startOn(MeshModel &m)
     } else {
         try { ctl->SetParams(paramsFromDock()); } catch (const SnakeError &) {}
     }
+    resumeHistory(m, stored); // the undo history kept when the tool last left this mesh (edit_snake_lifecycle.cpp)
     (ctl->SnakeCount() > 0 ? dock->editMode : dock->seedMode)->setChecked(true);
+    // what the first click and the first Build need, made while the user places seeds
+    ctl->PrepareInBackground();
+    preparePickGrid();
     refreshDock();
     if (!sidecarProblem.isEmpty()) report(sidecarProblem, true); // stays in the status line, and goes to the Log
     else if (!restored.isEmpty()) report(restored, false);
@@ -233,47 +246,16 @@ bool EditGeometricSnakePlugin::modelAlive() const
     return gs::host::HasMesh(*doc, model);
 }
 
-void EditGeometricSnakePlugin::stop(bool save)
-{
-    setRunning(false);
-    if (ctl && save && modelAlive()) {
-        try {
-            vcg::tri::SnakeMeshStore<CMeshO>::Set(model->cm, ctl->ToJson().dump());
-            ctl->Autosave(true);
-        } catch (const std::exception &e) {
-            report(QString("Geometric snake: saving the session failed: %1").arg(e.what()), true);
-        }
-    }
-    ctl.reset();
-    model = nullptr;
-    currentSample = -1;
-    pressed = stroking = false;
-    dragSample = -1;
-    stroke.clear();
-    refreshDock(); // nothing stays enabled that would act on a mesh the tool left
-}
-
-void EditGeometricSnakePlugin::endEdit(MeshModel &, GLArea *, MLSceneGLSharedDataContext *)
-{
-    stop(true);
-    ownKeys(false);
-    hideDockLater();
-}
-
-void EditGeometricSnakePlugin::endEdit(MeshDocument &, GLArea *, MLSceneGLSharedDataContext *)
-{
-    stop(true);
-    ownKeys(false);
-    hideDockLater();
-}
-
 /// Hides the panel once control returns to the event loop, unless the tool started again
 /// meanwhile (MeshLab's layer switch is endEdit + startEdit).
 void EditGeometricSnakePlugin::hideDockLater()
 {
     hidePending = true;
     QTimer::singleShot(0, this, [this] {
-        if (hidePending && dock) dock->hide();
+        if (hidePending && dock) {
+            dock->savePlace(); // its width, for the next session
+            dock->hide();
+        }
         hidePending = false;
     });
 }
@@ -288,7 +270,7 @@ std::vector<vcg::tri::ProtectedFile> EditGeometricSnakePlugin::protectedFiles() 
 
 void EditGeometricSnakePlugin::report(const QString &msg, bool error)
 {
-    if (dock) dock->setStatus(msg, error);
+    showStatus(msg, error);
     if (error) {
         if (msg.toStdString() != lastError) Log(GLLogStream::WARNING, "%s", msg.toStdString().c_str());
         lastError = msg.toStdString();
@@ -341,59 +323,7 @@ void EditGeometricSnakePlugin::afterChange(bool forceSave)
         ctl->SetAutosave(std::string()); // do not retry on every operation
     }
     refreshDock();
-    if (glArea) glArea->update();
-}
-
-void EditGeometricSnakePlugin::refreshDock()
-{
-    if (!dock) return;
-    bool has = ctl != nullptr;
-    int nseeds = has ? int(ctl->Seeds().size()) : 0;
-    dock->seedLabel->setText(QString("%1 seed%2").arg(nseeds).arg(nseeds == 1 ? "" : "s"));
-    dock->buildOpen->setEnabled(nseeds >= 2);
-    dock->buildClosed->setEnabled(nseeds >= 3);
-    dock->removeLastSeed->setEnabled(nseeds > 0);
-    dock->clearSeeds->setEnabled(nseeds > 0);
-    Controller::Snake *s = has ? ctl->SelectedSnake() : nullptr;
-    for (QWidget *w : std::initializer_list<QWidget *>{dock->step, dock->run, dock->exportSelected, dock->addLayer,
-                                                        dock->deleteSnake, dock->insert, dock->remove, dock->pin})
-        w->setEnabled(s != nullptr);
-    dock->exportAll->setEnabled(has && ctl->SnakeCount() > 0);
-    dock->undo->setEnabled(has && ctl->CanUndo());
-    dock->redo->setEnabled(has && ctl->CanRedo());
-    dock->undo->setToolTip(has && ctl->CanUndo() ? QString("Undo %1 (Ctrl+Z)").arg(QString::fromStdString(ctl->UndoLabel()))
-                                                 : QString("Nothing to undo (Ctrl+Z)"));
-    dock->redo->setToolTip(has && ctl->CanRedo() ? QString("Redo %1 (Ctrl+Y)").arg(QString::fromStdString(ctl->RedoLabel()))
-                                                 : QString("Nothing to redo (Ctrl+Y)"));
-    {
-        QSignalBlocker b(dock->snakeList);
-        dock->snakeList->clear();
-        if (has)
-            for (int i = 0; i < ctl->SnakeCount(); ++i) {
-                auto &x = ctl->Get(i);
-                dock->snakeList->addItem(QString("%1: %2, %3 samples")
-                                             .arg(i + 1)
-                                             .arg(x.Closed() ? "closed" : "open")
-                                             .arg(x.SampleCount()));
-            }
-        if (has && ctl->Selected() >= 0) dock->snakeList->setCurrentIndex(ctl->Selected());
-    }
-    if (s && currentSample >= s->SampleCount()) currentSample = -1;
-    dock->setConvergence(!s ? 0 : runTimer.isActive() ? 3 : s->Converged() ? 2
-                                 : vcg::tri::SnakeStopIsProblem(s->Stats().stop) ? 4 : 1);
-    if (s && dock->status->styleSheet().isEmpty() && !running()) {
-        const auto &st = s->Stats();
-        int pins = 0;
-        for (auto &x : s->Samples()) pins += x.fixed;
-        dock->setStatus(QString("%1 samples, %2 pinned | %3 ops | last: %4 (%5 ms) | move %6 h")
-                            .arg(s->SampleCount())
-                            .arg(pins)
-                            .arg(st.operations)
-                            .arg(QString::fromStdString(ctl->LastOperation()))
-                            .arg(ctl->LastOperationMs(), 0, 'f', 1)
-                            .arg(st.lastMaxMove, 0, 'f', 3),
-                        false);
-    }
+    if (glArea && !quickShow) glArea->update();
 }
 
 SnakeParams EditGeometricSnakePlugin::paramsFromDock() const
@@ -493,6 +423,7 @@ void EditGeometricSnakePlugin::connectDock()
 void EditGeometricSnakePlugin::buildSnake(bool closed)
 {
     setRunning(false);
+    response.Start("build");
     if (guarded("build snake", [&] {
             ctl->SetNewSnakeParams(paramsFromDock()); // the other snakes stay as they are (converged)
             auto t0 = std::chrono::steady_clock::now();
@@ -500,21 +431,27 @@ void EditGeometricSnakePlugin::buildSnake(bool closed)
             double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             Log(GLLogStream::FILTER, "Geometric snake: built %s snake with %d samples in %.1f ms", closed ? "a closed" : "an open",
                 ctl->SelectedSnake()->SampleCount(), ms);
+            lastTimed = QString("build, %1 ms").arg(ms, 0, 'f', 1); // the Log's figure
+            lastTimedRevision = ctl->Revision();
         })) {
         currentSample = -1;
         dock->editMode->setChecked(true);
-        if (dock) dock->setStatus("", false);
+        quickShow = true; // the new snake drawn over the last frame; the full redraw when the user pauses
         afterChange(true);
-    }
+        quickShow = false;
+        response.Handled();
+        showNow();
+        redrawLater.start();
+    } else
+        response.Cancel();
 }
 
 void EditGeometricSnakePlugin::stepOnce()
 {
     setRunning(false);
-    if (guarded("step", [&] { ctl->Step(); })) {
-        dock->setStatus("", false);
+    if (guarded("step", [&] { ctl->Step(); lastTimed = QString("step, %1 ms").arg(ctl->LastOperationMs(), 0, 'f', 1);
+                                 lastTimedRevision = ctl->Revision(); }))
         afterChange();
-    }
 }
 
 void EditGeometricSnakePlugin::setRunning(bool on)
@@ -559,7 +496,7 @@ void EditGeometricSnakePlugin::runProgress(const char *state)
 {
     if (!dock || !ctl || !ctl->SelectedSnake()) return;
     const auto *s = ctl->SelectedSnake();
-    dock->setStatus(QString("%1: %2 operations, largest move %3 h, %4 energy | %5 s (compute %6 s)")
+    showStatus(QString("%1: %2 operations, largest move %3 edge lengths, %4 energy | %5 s (compute %6 s)")
                         .arg(state)
                         .arg(s->Stats().operations - runOps0)
                         .arg(s->Stats().lastMaxMove, 0, 'f', 3)
@@ -612,7 +549,10 @@ void EditGeometricSnakePlugin::undoRedo(bool redo)
     setRunning(false);
     std::string label = redo ? ctl->RedoLabel() : ctl->UndoLabel();
     bool done = false;
+    const long selection = ctl->SelectionRevision();
     if (guarded(redo ? "redo" : "undo", [&] { done = redo ? ctl->Redo() : ctl->Undo(); })) {
+        if (ctl->SelectionRevision() != selection && glArea && modelAlive())
+            glArea->updateSelection(model->id(), true, true); // a cut's selection came back
         if (ctl->SelectedSnake()) paramsToDock(ctl->SelectedSnake()->Params());
         afterChange();
         report(done ? QString("%1 %2.").arg(redo ? "Redid" : "Undid", QString::fromStdString(label))
@@ -791,14 +731,15 @@ bool EditGeometricSnakePlugin::boundedDragTarget(const QPointF &g, const Surface
     const double pixelSize = (b - a).Norm(); // the size of a pixel at the sample's depth
     const double pixels = std::hypot(g.x() - dragLastPos.x(), g.y() - dragLastPos.y()) + 2.0;
     const double maxStep = 2.0 * pixels * pixelSize, d = (to - from).Norm();
-    if (!(d > maxStep) || !pickGrid) {
+    FaceGrid *grid = pickGrid();
+    if (!(d > maxStep) || !grid) {
         target = hit;
         return true;
     }
     const vcg::Point3d q = from + (to - from) * (maxStep / d);
     Scalarm dist = 0;
     Point3m closest;
-    CFaceO *f = vcg::tri::GetClosestFaceBase(m, *pickGrid, Point3m::Construct(q), Scalarm(2 * maxStep), dist, closest);
+    CFaceO *f = vcg::tri::GetClosestFaceBase(m, *grid, Point3m::Construct(q), Scalarm(2 * maxStep), dist, closest);
     if (!f || f->IsD()) return false;
     Point3m bary;
     if (!vcg::InterpolationParameters(vcg::Triangle3<Scalarm>(f->cP(0), f->cP(1), f->cP(2)), closest, bary)) return false;
@@ -814,39 +755,6 @@ bool EditGeometricSnakePlugin::project(const vcg::Point3d &p, vcg::Point3d &s) c
     s = vcg::Point3d(viewport[0] + (c[0] / c[3] + 1) * 0.5 * viewport[2], viewport[1] + (c[1] / c[3] + 1) * 0.5 * viewport[3],
                      (c[2] / c[3] + 1) * 0.5);
     return std::isfinite(s[0]) && std::isfinite(s[1]);
-}
-
-/// Exact picking: the ray through the pixel against the mesh's triangles, with vcglib's
-/// ray casting on a uniform grid (tri::DoRay), so a click costs the same on a 1M-face mesh;
-/// the hit gives the face and barycentric coordinates.
-bool EditGeometricSnakePlugin::pick(const QPointF &g, SurfacePoint &sp, vcg::Point3d &xyz)
-{
-    if (!viewValid || !ctl || !model) return false;
-    double nx = 2.0 * (g.x() - viewport[0]) / viewport[2] - 1.0, ny = 2.0 * (g.y() - viewport[1]) / viewport[3] - 1.0;
-    Eigen::Vector4d a = apply(Minv, Eigen::Vector4d(nx, ny, -1, 1)), b = apply(Minv, Eigen::Vector4d(nx, ny, 1, 1));
-    if (a[3] == 0 || b[3] == 0) return false;
-    Eigen::Vector3d o = a.head<3>() / a[3], d = b.head<3>() / b[3] - o;
-    if (!o.allFinite() || !d.allFinite() || d.norm() == 0) return false;
-    CMeshO &m = model->cm;
-    if (!pickGrid || pickGridFaces != m.face.size() || pickGridMesh != &m) {
-        pickGrid.reset(new vcg::GridStaticPtr<CFaceO, Scalarm>());
-        pickGrid->Set(m.face.begin(), m.face.end());
-        pickGridFaces = m.face.size();
-        pickGridMesh = &m;
-    }
-    vcg::Ray3<Scalarm> ray(Point3m(o[0], o[1], o[2]), Point3m(d[0], d[1], d[2]));
-    Scalarm t = 0;
-    CFaceO *f = vcg::tri::DoRay(m, *pickGrid, ray, Scalarm(d.norm() * 2), t);
-    if (f == nullptr || f->IsD() || !std::isfinite(t)) return false;
-    ray.Normalize();
-    const Point3m hit = ray.Origin() + ray.Direction() * t;
-    vcg::Triangle3<Scalarm> tri(f->cP(0), f->cP(1), f->cP(2));
-    Point3m bary;
-    if (!vcg::InterpolationParameters(tri, hit, bary)) return false; // a degenerate face: ignore the click
-    sp = SurfacePoint(int(vcg::tri::Index(m, f)), vcg::Point3d::Construct(bary));
-    sp.Normalize();
-    xyz = sp.Pd(m);
-    return true;
 }
 
 int EditGeometricSnakePlugin::nearestSampleOnScreen(const QPointF &g, int &snake, double radius)
@@ -887,6 +795,7 @@ int EditGeometricSnakePlugin::nearestSeedOnScreen(const QPointF &g, double radiu
 // ====================================================================== mouse and keys
 void EditGeometricSnakePlugin::mousePressEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
 {
+    if (viewButton(e, gla)) return; // the middle button pans the view (edit_snake_view.cpp)
     if (!ctl || &m != model || e->button() != Qt::LeftButton) return;
     pressed = true;
     pressPos = e->pos();
@@ -920,6 +829,7 @@ void EditGeometricSnakePlugin::mousePressEvent(QMouseEvent *e, MeshModel &m, GLA
 
 void EditGeometricSnakePlugin::mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
 {
+    if (viewButton(e, gla)) return; // the middle button pans the view (edit_snake_view.cpp)
     if (!ctl || &m != model || !pressed || !(e->buttons() & Qt::LeftButton)) return;
     QPointF g = glPos(e, gla);
     bool far = (e->pos() - pressPos).manhattanLength() > 6;
@@ -940,13 +850,18 @@ void EditGeometricSnakePlugin::mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLAr
             vcg::Point2f p0 = QTLogicalToOpenGL(gla, pressPos);
             if (pick(QPointF(p0[0], p0[1]), sp, x)) stroke.push_back(sp);
         }
-        if (stroking && pick(g, sp, x)) stroke.push_back(sp);
+        if (stroking && pick(g, sp, x)) {
+            stroke.push_back(sp);
+            showNow(); // the stroke grows without redrawing the mesh
+        }
+        return;
     }
     gla->update();
 }
 
 void EditGeometricSnakePlugin::mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla)
 {
+    if (viewButton(e, gla)) return; // the middle button pans the view (edit_snake_view.cpp)
     if (!ctl || &m != model || e->button() != Qt::LeftButton || !pressed) return;
     pressed = false;
     QPointF g = glPos(e, gla);
@@ -975,19 +890,24 @@ void EditGeometricSnakePlugin::mouseReleaseEvent(QMouseEvent *e, MeshModel &m, G
         std::vector<SurfacePoint> st;
         st.swap(stroke);
         if (guarded("stroke", [&] { ctl->AddSeedsFromStroke(st); })) afterChange();
-        return;
+        return; // a full redraw: the stroke's dots go, its seeds stay
     }
+    response.Start("seed");
     SurfacePoint sp;
     vcg::Point3d x;
     if (!pick(g, sp, x)) {
+        response.Cancel();
         report("The click is not on the mesh (no seed placed).", false);
         return;
     }
     if (guarded("add seed", [&] { ctl->AddSeedFromPick(sp.face, sp.bary); })) {
-        dock->setStatus(QString("%1 seeds; Enter builds an open snake, Shift+Enter a closed one.").arg(ctl->Seeds().size()),
-                        false);
-        afterChange();
-    }
+        quickShow = true; // a seed more: drawn over the last frame (MeshLab's redraw of a large mesh is slow)
+        afterChange(); // the status counts them
+        quickShow = false;
+        response.Handled();
+        showNow(&x);
+    } else
+        response.Cancel();
 }
 
 void EditGeometricSnakePlugin::keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla)
@@ -1049,6 +969,7 @@ static bool isTextEntry(QWidget *w)
 /// handled here. Dialogs and other windows are left alone.
 bool EditGeometricSnakePlugin::eventFilter(QObject *o, QEvent *e)
 {
+    if (seedModeMouse(o, e)) return true;
     if (!keysOwned || (e->type() != QEvent::ShortcutOverride && e->type() != QEvent::KeyPress)) return false;
     QWidget *w = qobject_cast<QWidget *>(o);
     if (!w) return false; // the QWindow passes it on to its focus widget
@@ -1058,10 +979,8 @@ bool EditGeometricSnakePlugin::eventFilter(QObject *o, QEvent *e)
     QWidget *main = glArea ? glArea->window() : nullptr;
     if (win != main && win != dock.data()) return false;
     if (isTextEntry(w)) return false;
-    if (e->type() == QEvent::KeyPress) {
-        handleKey(k);
-        if (glArea) glArea->update();
-    }
+    // no redraw here: what changes redraws (afterChange), or draws itself (Build, showNow)
+    if (e->type() == QEvent::KeyPress) handleKey(k);
     e->accept();
     return true;
 }
@@ -1116,6 +1035,7 @@ bool EditGeometricSnakePlugin::handleKey(const QKeyEvent *e)
 void EditGeometricSnakePlugin::decorate(MeshModel &m, GLArea *gla, QPainter *)
 {
     if (gla != glArea) return;
+    checkSuspended(gla);
     if (&m != model) {
         // the current layer changed under us (MeshLab normally restarts the tool)
         if (ctl && !modelAlive()) { ctl.reset(); model = nullptr; setRunning(false); }
@@ -1128,7 +1048,7 @@ void EditGeometricSnakePlugin::decorate(MeshModel &m, GLArea *gla, QPainter *)
         return;
     }
     // cache the view for picking: projection * modelview * mesh transform
-    double P[16], MV[16], T[16], PMV[16];
+    double T[16], PMV[16];
     glGetDoublev(GL_PROJECTION_MATRIX, P);
     glGetDoublev(GL_MODELVIEW_MATRIX, MV);
     glGetIntegerv(GL_VIEWPORT, viewport);
@@ -1142,6 +1062,10 @@ void EditGeometricSnakePlugin::decorate(MeshModel &m, GLArea *gla, QPainter *)
         drawAll(m);
     } catch (const std::exception &e) {
         report(QString("Geometric snake: drawing failed: %1").arg(e.what()), true);
+    }
+    if (response.Pending()) {
+        glFinish(); // software OpenGL draws at the flush: the mesh's redraw counts too
+        Log(GLLogStream::FILTER, "%s", response.Shown("redraw").c_str());
     }
 }
 

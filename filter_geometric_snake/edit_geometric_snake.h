@@ -13,6 +13,7 @@
 // write all its snakes (vcg_ext/io/snake_io.h JSON) to that file after every change.
 
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <string>
@@ -23,11 +24,16 @@
 #include <QPointer>
 #include <QTimer>
 
+#include "edit_snake_response.h"
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 #include <vcg/space/index/grid_static_ptr.h>
+#include "edit_snake_lifecycle.h"
+#include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/session/controller.h>
 
+class QDockWidget;
 class QKeyEvent;
+class QWheelEvent;
 class SnakeDock;
 
 class EditGeometricSnakePlugin : public QObject, public gs::EditToolBase
@@ -37,7 +43,8 @@ class EditGeometricSnakePlugin : public QObject, public gs::EditToolBase
 public:
     typedef vcg::tri::SnakeController<CMeshO> Controller;
 
-    EditGeometricSnakePlugin();
+    /// `keeper`: where the undo histories of the meshes the tool left are kept (the factory's).
+    explicit EditGeometricSnakePlugin(SnakeHistoryKeeper *keeper = nullptr);
     virtual ~EditGeometricSnakePlugin();
 
     static const QString Info();
@@ -46,11 +53,13 @@ public:
     bool startEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void endEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void endEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
+    void layerChanged(MeshDocument &md, MeshModel &old, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void decorate(MeshModel &m, GLArea *gla, QPainter *p) override;
     void mousePressEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void keyPressEvent(QKeyEvent *e, MeshModel &m, GLArea *gla) override;
+    void wheelEvent(QWheelEvent *e, MeshModel &m, GLArea *gla) override; // the view's (edit_snake_view.cpp)
 
 protected:
     bool eventFilter(QObject *o, QEvent *e) override;
@@ -69,6 +78,7 @@ private:
     QTimer runTimer;
     // the Run in progress (time slices): its clocks and counters for the progress and the Log
     QElapsedTimer runClock;
+    SnakeResponseClock response; // input to redraw, for the Log (issue 37)
     double runCompute0 = 0, sliceMs = 30;
     qint64 sliceEnd = -1;
     int runOps0 = 0;
@@ -79,11 +89,30 @@ private:
     int currentSample = -1;
     std::string lastError;
 
-    // cached view (from the last decorate) for exact picking
+    // cached view (from the last decorate) for exact picking and for drawing between redraws
+    double P[16], MV[16]; // MeshLab's projection and modelview (column-major, like GL)
     double M[16];         // projection * modelview * mesh transform (column-major, like GL)
     double Minv[16];
     int viewport[4] = {0, 0, 1, 1};
     bool viewValid = false;
+
+    // the view's navigation while the tool is active (edit_snake_view.cpp)
+    bool viewDrag = false;       // a middle-button drag MeshLab's trackball handles (pan)
+    bool shownSuspended = false; // MeshLab's "Not editing" (Esc) state the panel shows
+    void passToView(QEvent *e, GLArea *gla);
+    bool viewButton(QMouseEvent *e, GLArea *gla);
+    void checkSuspended(GLArea *gla);
+    void showSuspended();
+    void keepModifiedFlag(MeshModel &m);
+    void logLayout(QDockWidget *layers);
+
+    // the status line (edit_snake_status.cpp): a message stays until the state changes, then
+    // the line is recomputed from the state
+    long statusRevision = -1;
+    QString lastTimed; // the last action timed as the Log says it ("build, 8.9 ms") ...
+    long lastTimedRevision = -1; // ... shown while the state is the one it made
+    void showStatus(const QString &text, bool error);
+    QString stateLine() const;
 
     // mouse
     bool pressed = false;
@@ -97,6 +126,13 @@ private:
 
     bool startOn(MeshModel &m);
     void stop(bool save);
+    // the tool's end and restart (edit_snake_lifecycle.cpp): the undo history outlives the tool
+    QPointer<SnakeHistoryKeeper> keeper;
+    bool switchingLayer = false;
+    int keptSteps = 0; // undo steps the last stop() kept
+    void endTool();
+    void keepHistory(const std::string &session);
+    void resumeHistory(MeshModel &m, const std::string &stored);
     bool modelAlive() const;
     std::vector<vcg::tri::ProtectedFile> protectedFiles() const; // never overwritten by exports
     void connectDock();
@@ -110,11 +146,21 @@ private:
     template <class F> bool guarded(const QString &what, F f);
     bool guardedFn(const QString &what, const std::function<void()> &f); // guarded(), for the other files
 
-    // picking
+    // picking (edit_snake_picking.cpp)
+    typedef vcg::GridStaticPtr<CFaceO, Scalarm> FaceGrid;
     bool pick(const QPointF &glPos, vcg::tri::SurfacePoint &sp, vcg::Point3d &xyz);
-    std::unique_ptr<vcg::GridStaticPtr<CFaceO, Scalarm>> pickGrid; // built on the first click
+    void preparePickGrid();
+    FaceGrid *pickGrid();
+    std::unique_ptr<FaceGrid> faceGrid;               // the faces, for ray casting and closest points
+    std::future<std::unique_ptr<FaceGrid>> faceGridReady; // being built since the tool started
     size_t pickGridFaces = 0;
     const CMeshO *pickGridMesh = nullptr;
+
+    // showing an input at once, over the last frame (edit_snake_quick_draw.cpp)
+    bool seedModeMouse(QObject *o, QEvent *e);
+    void showNow(const vcg::Point3d *mustShow = nullptr);
+    bool quickShow = false; // afterChange shows the change with showNow instead of a full redraw
+    QTimer redrawLater;     // the full redraw once the user pauses (after Build)
     bool project(const vcg::Point3d &p, vcg::Point3d &screen) const;
     bool unproject(const vcg::Point3d &screen, vcg::Point3d &p) const;
     bool boundedDragTarget(const QPointF &glPos, const vcg::tri::SurfacePoint &hit, vcg::tri::SurfacePoint &target);
@@ -141,10 +187,12 @@ private:
     void computeEnergy(bool show);
     void exportCurves(bool all);
     void addAsLayer();
-    /// Cut along the selected snake (edit_geometric_snake_cut.cpp): select one side, or split.
+    /// Cut along the selected snake (edit_geometric_snake_cut.cpp): select one side, cut open, split.
     void cutSelect(bool inside);
+    void cutOpen();
     void cutSplit();
     void connectCutButtons();
+    void afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map);
     void usePickPoints();
     vcg::tri::SnakeParams paramsFromDock() const;
     void paramsToDock(const vcg::tri::SnakeParams &p);

@@ -10,6 +10,7 @@ EditGeometricSnakeFactory::EditGeometricSnakeFactory()
     editSnake->setToolTip("Geometric Snake: place seeds on the surface and let a snake slither onto a feature curve");
     editSnake->setCheckable(true);
     addEditAction(editSnake);
+    keeper = new SnakeHistoryKeeper(this);
 
     // GS_SNAKE_AUTOSTART=1 (set by scripts/run.sh): start the tool as soon as MeshLab has a
     // mesh, so the README's first command opens MeshLab ready to snake. MeshLab enables
@@ -39,7 +40,7 @@ QString EditGeometricSnakeFactory::pluginName() const { return "EditGeometricSna
 
 gs::EditToolBase *EditGeometricSnakeFactory::getEditTool(const QAction *action)
 {
-    if (action == editSnake) return new EditGeometricSnakePlugin();
+    if (action == editSnake) return new EditGeometricSnakePlugin(keeper);
     return nullptr;
 }
 

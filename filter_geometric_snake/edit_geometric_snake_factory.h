@@ -4,6 +4,8 @@
 #include <QObject>
 #include "meshlab_host.h" // MeshLab 2020.09 or 2022.02, chosen by CMake
 
+class SnakeHistoryKeeper;
+
 class EditGeometricSnakeFactory : public QObject, public gs::EditPluginBase
 {
     Q_OBJECT
@@ -19,6 +21,7 @@ public:
 
 private:
     QAction *editSnake;
+    SnakeHistoryKeeper *keeper; // the undo histories of the meshes the tool left (edit_snake_lifecycle.h)
 };
 
 #endif

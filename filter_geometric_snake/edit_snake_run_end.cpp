@@ -50,7 +50,7 @@ void EditGeometricSnakePlugin::reportRunEnd(tri::SnakeStop why)
     if (!dock) return;
     if (problem) {
         lastError = msg; // said once: the Log has it
-        dock->setStatus(QString("Run stopped after %1 operations (%2 s): %3")
+        showStatus(QString("Run stopped after %1 operations (%2 s): %3")
                             .arg(ops)
                             .arg(wall, 0, 'f', 1)
                             .arg(QString::fromStdString(msg)),

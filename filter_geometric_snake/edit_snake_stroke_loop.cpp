@@ -26,7 +26,7 @@ void EditGeometricSnakePlugin::completeLoop()
         })) {
         currentSample = -1;
         dock->editMode->setChecked(true);
-        dock->setStatus("The stroke is completed into a loop round the part; R runs the snake.", false);
+        showStatus("The stroke is completed into a loop round the part; R runs the snake.", false);
         afterChange(true);
     }
 }

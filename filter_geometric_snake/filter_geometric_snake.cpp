@@ -20,6 +20,7 @@
 #include <vcg/complex/algorithms/stat.h>
 
 #include <vcg_ext/cut/cut_curve_io.h>
+#include <vcg_ext/cut/cut_session_map.h>
 #include <vcg_ext/cut/mesh_cut.h>
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/io/safe_file_write.h>
@@ -786,9 +787,19 @@ bool FilterGeometricSnakePlugin::applyCut(MeshDocument &md, const RichParameterL
 	    tri::MeshCut<CMeshO>::ModeName(p.mode).c_str(), curve.closed ? "closed" : "open", qUtf8Printable(source),
 	    r.addedVertices, r.addedFaces, r.curveVertices, r.facesInside, r.areaInside, r.areaOutside,
 	    timer.nsecsElapsed() * 1e-6, r.msEmbed, r.msSides, r.msCheck, r.msCommit);
-	if (p.mode == tri::CutMode::Select || p.mode == tri::CutMode::CutOpen)
-		Log(GLLogStream::WARNING, "Geometric snake: the cut changed the mesh; the snakes kept on it refer to the "
-		    "mesh as it was.");
+	if ((p.mode == tri::CutMode::Select || p.mode == tri::CutMode::CutOpen) && (r.addedVertices > 0 || r.addedFaces > 0)) {
+		// the edit tool's snakes kept on the mesh: moved onto the new faces
+		const std::string kept = tri::SnakeMeshStore<CMeshO>::Get(m.cm);
+		if (!kept.empty()) {
+			try {
+				tri::SnakeMeshStore<CMeshO>::Set(m.cm,
+				    tri::CutSessionMap<CMeshO>::Map(nlohmann::json::parse(kept), r.points, m.cm).dump());
+			} catch (const std::exception &e) {
+				Log(GLLogStream::WARNING, "Geometric snake: the cut changed the mesh; the snakes kept on it refer to "
+				    "the mesh as it was (%s).", e.what());
+			}
+		}
+	}
 	return true;
 }
 

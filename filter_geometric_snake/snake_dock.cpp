@@ -50,7 +50,8 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     seedMode->setToolTip("Click on the surface to add a seed (the nearest vertex of the clicked triangle);\n"
                          "drag to paint a stroke of seeds; Ctrl+click removes the nearest seed.\n"
                          "Enter builds an open snake, Shift+Enter a closed one; Backspace removes the last seed (S).\n"
-                         "Esc suspends the tool to rotate the view (Esc again resumes).");
+                         "The wheel zooms and the middle button pans the view as always;\n"
+                         "Esc suspends the tool to rotate the view with the left button (Esc again resumes).");
     editMode = new QRadioButton("Edit samples");
     editMode->setToolTip("Drag a sample along the surface (point editing); click selects a sample,\n"
                          "Shift+click pins/unpins it (E). Keys: P pin, I insert, Delete/Backspace delete, Space step,\n"
@@ -64,6 +65,12 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     convergence->setToolTip("Convergence indicator of the selected snake");
     hm->addWidget(convergence);
     top->addLayout(hm);
+    suspended = new QLabel("Suspended (Esc): the mouse turns the view; the panel and the keys still act on the "
+                           "snakes. Esc resumes.");
+    suspended->setWordWrap(true);
+    suspended->setStyleSheet("background: #ffe08a; color: black; padding: 3px;");
+    suspended->setVisible(false);
+    top->addWidget(suspended);
     status = new StatusLine;
     top->addWidget(status);
     QHBoxLayout *hb = new QHBoxLayout;
@@ -147,7 +154,7 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     exportSelected = button("Export selected...", "Write the selected snake to JSON, OBJ or PLY");
     exportAll = button("Export all...", "Write all snakes to JSON, OBJ or PLY");
     addLayer = button("Add as layer", "Add the selected snake's curve to the document as an edge layer");
-    saveSession = button("Save session", "Save snakes, pins and parameters to <mesh>.snakes.json now (also saved automatically)");
+    saveSession = button("Save session", "Save snakes, pins and parameters to <mesh file>.snakes.json next to the mesh now, e.g. fandisk.ply.snakes.json (also saved automatically)");
     lo->addWidget(exportSelected, 0, 0);
     lo->addWidget(exportAll, 0, 1);
     lo->addWidget(addLayer, 1, 0);
@@ -204,12 +211,17 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     // --- cut (issue 34; last and closed, so it moves nothing above it)
     QWidget *gc = section(v, "Cut", false);
     QGridLayout *lc = new QGridLayout(gc);
-    cutSelectInside = button("Select inside", "Select the faces inside the selected closed snake (the side its Balloon inflates), whole faces by their centroid; the mesh is not changed");
-    cutSelectOutside = button("Select outside", "Select the faces on the other side of the selected snake (the inverse selection)");
+    cutSelectInside = button("Select inside", "Embed the selected closed snake into the mesh (vertices where it crosses edges) and select the faces inside it (the side its Balloon inflates)");
+    cutSelectOutside = button("Select outside", "Embed the selected snake and select the faces on its other side (the inverse selection)");
     cutSplit = button("Split into layers", "Add two layers, \"inside\" and \"outside\", cut exactly along the selected snake; this layer is not changed");
+    cutOpen = button("Cut open", "Embed the selected snake and make its edges boundary edges, in this layer (an open snake ending inside the mesh makes a slit)");
+    cutWholeFaces = new QCheckBox("Whole faces only (keep the mesh)");
+    cutWholeFaces->setToolTip("Select inside / outside select the mesh's faces by their centroid's side, without embedding the snake; the tool's undo (Ctrl+Z) takes the selection back");
     lc->addWidget(cutSelectInside, 0, 0);
     lc->addWidget(cutSelectOutside, 0, 1);
     lc->addWidget(cutSplit, 1, 0);
+    lc->addWidget(cutOpen, 1, 1);
+    lc->addWidget(cutWholeFaces, 2, 0, 1, 2);
     v->addStretch(1);
 
     // the wheel edits a spin or combo box only when it has the focus (clicked or tabbed to);
@@ -256,43 +268,6 @@ QWidget *SnakeDock::section(QVBoxLayout *into, const QString &title, bool open)
     into->addWidget(head);
     into->addWidget(body);
     return body;
-}
-
-void SnakeDock::dockInto(QMainWindow *mw, QDockWidget *beside)
-{
-    if (!mw) {
-        show();
-        return;
-    }
-    if (mw->dockWidgetArea(this) == Qt::NoDockWidgetArea || isFloating()) {
-        setFloating(false);
-        if (beside && !beside->isFloating() && mw->dockWidgetArea(beside) != Qt::NoDockWidgetArea) {
-            mw->addDockWidget(mw->dockWidgetArea(beside), this);
-            mw->splitDockWidget(beside, this, Qt::Vertical); // stacked under the layer dialog
-            show();
-            beside->show();
-            // the panel gets most of the height; the layers and the Log keep a third (once
-            // the main window has laid the new dock out)
-            QPointer<SnakeDock> self(this);
-            QPointer<QDockWidget> other(beside);
-            QTimer::singleShot(0, mw, [mw, self, other] {
-                if (!self || !other) return;
-                int h = self->height() + other->height();
-                mw->resizeDocks({other.data(), self.data()}, {h * 3 / 10, h - h * 3 / 10}, Qt::Vertical);
-                // the layer dialog does not shrink below its contents: on a short screen
-                // the panel would be cramped, so it becomes a tab beside the layer dialog
-                if (self->height() < 420) {
-                    mw->tabifyDockWidget(other.data(), self.data());
-                    self->show();
-                    self->raise();
-                }
-            });
-        } else {
-            mw->addDockWidget(Qt::RightDockWidgetArea, this);
-        }
-    }
-    show();
-    raise();
 }
 
 bool SnakeDock::eventFilter(QObject *o, QEvent *e)
@@ -383,7 +358,7 @@ void StatusLine::relayout()
 
 void SnakeDock::setConvergence(int state)
 {
-    static const char *text[] = {"no snake", "moving", "converged", "running", "stopped"};
+    static const char *text[] = {"no snake", "not converged", "converged", "running", "stopped"};
     static const char *style[] = {"color: gray;", "color: #a06000; font-weight: bold;",
                                   "color: #008000; font-weight: bold;", "color: #0050c0; font-weight: bold;",
                                   "color: #b00000; font-weight: bold;"};

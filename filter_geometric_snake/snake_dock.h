@@ -1,8 +1,9 @@
 #ifndef GS_SNAKE_DOCK_H
 #define GS_SNAKE_DOCK_H
 
-// The panel of the Geometric Snake edit tool: a dock of MeshLab's main window (stacked under
-// the layer dialog on the right, or a tab beside it when the screen is short). The status line and the main buttons sit above a scroll
+// The panel of the Geometric Snake edit tool: a dock of MeshLab's main window, in its own dock
+// area (left of the view; MeshLab's layer dialog and Log stay in view on the right), where the
+// user last put it (snake_dock_place.cpp). The status line and the main buttons sit above a scroll
 // area of collapsible sections, so they stay visible. Spin and combo boxes take the mouse
 // wheel only when focused (scrolling the panel never edits a parameter). Widgets only:
 // EditGeometricSnakePlugin connects them to the controller.
@@ -46,9 +47,12 @@ class SnakeDock : public QDockWidget
 public:
     explicit SnakeDock(QWidget *parent);
 
-    /// Docks the panel in `mainWindow`'s right area, below `beside` (MeshLab's layer
-    /// dialog; a tab beside it if there is too little height) if given, else alone.
-    void dockInto(QMainWindow *mainWindow, QDockWidget *beside);
+    /// Shows the panel in `mainWindow` (snake_dock_place.cpp): the first time where the user
+    /// last had it (QSettings), else in the left dock area; on the right it goes beside
+    /// `layers` (MeshLab's layer dialog), never over it, so the Log stays visible.
+    void dockInto(QMainWindow *mainWindow, QDockWidget *layers);
+    /// Remembers where the panel is (area, floating geometry, width) for the next session.
+    void savePlace();
 
     // mode
     QRadioButton *seedMode, *editMode;
@@ -78,15 +82,18 @@ public:
     // output
     QPushButton *exportSelected, *exportAll, *addLayer, *saveSession;
     // cut (edit_geometric_snake_cut.cpp)
-    QPushButton *cutSelectInside, *cutSelectOutside, *cutSplit;
+    QPushButton *cutSelectInside, *cutSelectOutside, *cutSplit, *cutOpen;
+    QCheckBox *cutWholeFaces;
     // status
     StatusLine *status;
+    QLabel *suspended; // shown while MeshLab suspends the tool (Esc)
 
     void setStatus(const QString &text, bool error = false);
     void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running, 4 stopped (snake/stop.h)
 
 protected:
     QWidget *section(QVBoxLayout *into, const QString &title, bool open);
+    bool placed = false; // placed once from the settings; then Qt keeps its place while hidden
     bool eventFilter(QObject *o, QEvent *e) override;
 };
 

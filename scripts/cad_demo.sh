@@ -16,6 +16,11 @@ GS_CAD_SESSION="$work/cad_block.ply.snakes.json" "$build/tests/test_cad_tessella
   --gtest_filter='CadEditTool.*' | grep '^\[cad\]'
 export XDG_RUNTIME_DIR="$work/runtime"; mkdir -p "$XDG_RUNTIME_DIR"; chmod 700 "$XDG_RUNTIME_DIR"
 export HOME="$work"                            # fresh MeshLab settings: default window layout
+# the tool's panel floats over the layer dialog (MeshLab's settings), so the 3D view keeps the
+# default layout's size and place (it docks left of the view otherwise)
+mkdir -p "$work/.config/VCG"
+printf '[GeometricSnake]\nPanel\\area=2\nPanel\\floating=true\nPanel\\geometry=@Rect(880 60 390 820)\n' \
+  > "$work/.config/VCG/MeshLab_64bit_fp.conf"
 LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -f "$work/xauth" -s "-screen 0 1280x1000x24" bash -c '
   meshlab "$0/cad_block.ply" > "$0/meshlab.log" 2>&1 &
   win=""

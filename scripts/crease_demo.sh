@@ -10,6 +10,11 @@ work=$(mktemp -d)
 cp "$here/data/fandisk.ply" "$work/"          # the sidecar file goes next to this copy
 export XDG_RUNTIME_DIR="$work/runtime"; mkdir -p "$XDG_RUNTIME_DIR"; chmod 700 "$XDG_RUNTIME_DIR"
 export HOME="$work"                            # fresh MeshLab settings: default window layout
+# the tool's panel floats over the layer dialog (MeshLab's settings), so the 3D view keeps the
+# default layout's size and place (it docks left of the view otherwise)
+mkdir -p "$work/.config/VCG"
+printf '[GeometricSnake]\nPanel\\area=2\nPanel\\floating=true\nPanel\\geometry=@Rect(880 60 390 820)\n' \
+  > "$work/.config/VCG/MeshLab_64bit_fp.conf"
 GS_SNAKE_AUTOSTART=1 LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s "-screen 0 1280x900x24" bash -c '
   meshlab "$0/fandisk.ply" > "$0/meshlab.log" 2>&1 &
   for i in $(seq 60); do grep -q "Started Mode Geometric Snake" "$0/meshlab.log" 2>/dev/null && break; sleep 0.5; done

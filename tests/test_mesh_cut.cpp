@@ -747,3 +747,147 @@ TEST(MeshCutTest, MeshLabMeshSplitKeepsItsOptionalTextureCoordinates)
             }
     }
 }
+
+TEST(MeshCutTest, NonManifoldVertexAlongTheCutIsRefused)
+{
+    // a regular plate and a fin of one face touching it only at the inner vertex (3,3): two
+    // sheets of faces meet there; the square loop (1,1)-(3,1)-(3,3)-(1,3) runs through it
+    DMesh m;
+    Plate(m, 6, 1.0, 0.0, 1);
+    const CutCurve loop = PolygonCurve(m, {{1, 1}, {3, 1}, {3, 3}, {1, 3}});
+    std::vector<vcg::Point3d> p;
+    std::vector<std::array<int, 3>> t;
+    for (const auto &v : m.vert) p.push_back(v.cP());
+    for (const auto &f : m.face) t.push_back({int(Index(m, f.cV(0))), int(Index(m, f.cV(1))), int(Index(m, f.cV(2)))});
+    const int centre = 3 * 7 + 3;
+    p.push_back(vcg::Point3d(3.5, 3.5, 1.0));
+    p.push_back(vcg::Point3d(3.2, 3.8, 1.0));
+    t.push_back({centre, int(p.size()) - 2, int(p.size()) - 1});
+    Build(m, p, t); // the plate's faces keep their indices: the loop is still on them
+    const std::string before = Snapshot(m);
+    for (CutMode mode : {CutMode::Select, CutMode::SelectOnly, CutMode::CutOpen}) {
+        Cut::Param prm;
+        prm.mode = mode;
+        try {
+            Cut::Apply(m, {loop}, prm);
+            ADD_FAILURE() << "a cut through a non-manifold vertex, mode " << Cut::ModeName(mode);
+        } catch (const SnakeError &e) {
+            EXPECT_NE(std::string(e.what()).find("separate sheets of faces meet"), std::string::npos) << e.what();
+        }
+        EXPECT_EQ(Snapshot(m), before);
+    }
+    DMesh in, out;
+    EXPECT_THROW(Cut::Split(m, {loop}, Cut::Param(), in, out), SnakeError);
+    EXPECT_EQ(Snapshot(m), before);
+    EXPECT_EQ(in.fn + out.fn, 0);
+    // the same loop moved off that vertex is cut
+    const CutCurve away = PolygonCurve(m, {{1, 1}, {2.5, 1}, {2.5, 2.5}, {1, 2.5}});
+    Cut::Apply(m, {away}, Cut::Param());
+    EXPECT_NEAR(Area(m, true), 2.25, 1e-12);
+}
+
+TEST(MeshCutTest, NewVerticesInterpolateNormalsColourAndQuality)
+{
+    // per-vertex attributes linear in x and y: normal (x, y, 10) (not unit), colour (10x, 10y,
+    // 7, 255), quality x - 2y. Linear interpolation in the face a new vertex lies in gives the
+    // same functions at it exactly (up to round-off); the normal is then normalised.
+    DMesh m;
+    Plate(m, 10, 1.0, 0.3, 4);
+    for (auto &v : m.vert) {
+        const double x = v.P()[0], y = v.P()[1];
+        v.N() = vcg::Point3d(x, y, 10);
+        v.C() = vcg::Color4b((unsigned char)std::lround(10 * x), (unsigned char)std::lround(10 * y), 7, 255);
+        v.Q() = x - 2 * y;
+    }
+    const size_t vn = m.vert.size();
+    const CutCurve c = PolygonCurve(m, {{2.3, 2.7}, {8.6, 3.1}, {9.2, 8.4}, {3.1, 9.0}});
+    const Cut::Result r = Cut::Apply(m, {c}, Cut::Param());
+    ASSERT_GT(r.addedVertices, 20);
+    for (size_t i = vn; i < m.vert.size(); ++i) {
+        const auto &v = m.vert[i];
+        const double x = v.cP()[0], y = v.cP()[1];
+        const vcg::Point3d n = vcg::Point3d(x, y, 10).Normalize();
+        EXPECT_NEAR((v.cN() - n).Norm(), 0, 1e-12) << "vertex " << i;
+        EXPECT_NEAR(v.cQ(), x - 2 * y, 1e-12) << "vertex " << i;
+        EXPECT_EQ(v.cC()[2], 7);
+        EXPECT_EQ(v.cC()[3], 255);
+        EXPECT_NEAR(v.cC()[0], 10 * x, 1.0) << "vertex " << i; // bytes: inputs and output rounded
+        EXPECT_NEAR(v.cC()[1], 10 * y, 1.0) << "vertex " << i;
+    }
+}
+
+TEST(MeshCutTest, SurfacePointsOfTheMeshBeforeTheCutMapOntoItAfter)
+{
+    // points of the user's snakes are face + barycentric of the mesh before the cut: the map
+    // gives the same points in space on the faces after it, inside their faces; the curve's own
+    // points land on the embedded curve's vertices
+    for (CutMode mode : {CutMode::Select, CutMode::CutOpen}) {
+        DMesh m;
+        Plate(m, 12, 1.0, 0.3, 21);
+        const CutCurve c = PolygonCurve(m, {{2.3, 2.7}, {8.6, 3.1}, {9.2, 8.4}, {5.5, 6.1}, {3.1, 9.0}});
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> U(0, 1);
+        std::vector<SurfacePoint> pts = c.points;
+        for (int i = 0; i < 3000; ++i) {
+            double a = U(rng), b = U(rng);
+            if (a + b > 1) { a = 1 - a; b = 1 - b; }
+            pts.push_back(SurfacePoint(int(rng() % m.face.size()), vcg::Point3d(a, b, 1 - a - b)));
+        }
+        std::vector<vcg::Point3d> xyz;
+        for (const auto &p : pts) xyz.push_back(p.Pd(m));
+        Cut::Param prm;
+        prm.mode = mode;
+        const Cut::Result r = Cut::Apply(m, {c}, prm);
+        ASSERT_GT(r.points.SplitFaces(), 20u);
+        std::vector<SurfacePoint> mapped = pts;
+        r.points.MapAll(mapped);
+        int moved = 0;
+        for (size_t i = 0; i < pts.size(); ++i) {
+            const SurfacePoint &q = mapped[i];
+            ASSERT_TRUE(q.OnMesh(m)) << i;
+            for (int k = 0; k < 3; ++k) EXPECT_GE(q.bary[k], 0.0);
+            EXPECT_NEAR(q.bary[0] + q.bary[1] + q.bary[2], 1.0, 1e-15);
+            EXPECT_LT((q.Pd(m) - xyz[i]).Norm(), 1e-12) << "point " << i << " mode " << Cut::ModeName(mode);
+            moved += q.face != pts[i].face;
+            if (i < c.points.size()) // on the curve: at a vertex of the mesh after the cut
+                EXPECT_NEAR(std::max(q.bary[0], std::max(q.bary[1], q.bary[2])), 1.0, 1e-9) << "curve point " << i;
+        }
+        EXPECT_GT(moved, 100); // many points were in split faces and went to added sub-faces
+    }
+    // the select-only mode does not change the mesh: its map is the identity
+    DMesh m;
+    Plate(m, 8, 1.0, 0.3, 2);
+    Cut::Param only;
+    only.mode = CutMode::SelectOnly;
+    const Cut::Result r = Cut::Apply(m, {PolygonCurve(m, {{2.3, 2.7}, {6.6, 3.1}, {3.1, 6.0}})}, only);
+    EXPECT_EQ(r.points.SplitFaces(), 0u);
+    const SurfacePoint p(17, vcg::Point3d(0.2, 0.3, 0.5));
+    EXPECT_EQ(r.points.Map(p).face, 17);
+}
+
+TEST(MeshCutTest, ACurveCutAgainRunsAlongTheEdgesOfItsFirstCut)
+{
+    // the edit tool: Select inside embeds the snake; the curve traced again on the cut mesh runs
+    // along its edges: selecting again adds nothing, cutting open adds a copy of each curve vertex
+    DMesh m;
+    Plate(m, 10, 1.0, 0.0, 1);
+    const double before = Area(m);
+    const std::vector<vcg::Point2d> square = {{2.5, 2.5}, {7.5, 2.5}, {7.5, 7.5}, {2.5, 7.5}};
+    Cut::Apply(m, {PolygonCurve(m, square)}, Cut::Param());
+    const CutCurve c = PolygonCurve(m, square);
+    const size_t vn = m.vert.size();
+    const Cut::Result again = Cut::Apply(m, {c}, Cut::Param());
+    EXPECT_EQ(m.vert.size(), vn);
+    EXPECT_EQ(again.addedVertices, 0);
+    EXPECT_NEAR(again.areaInside, 25, 1e-9);
+    Cut::Param open;
+    open.mode = CutMode::CutOpen;
+    const Cut::Result o = Cut::Apply(m, {c}, open);
+    EXPECT_EQ(o.addedVertices, o.curveVertices); // one copy of each curve vertex, nothing else
+    ExpectValid(m, before);
+    UpdateTopology<DMesh>::FaceFace(m);
+    int border = 0;
+    for (auto &f : m.face)
+        for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
+    EXPECT_EQ(border, 40 + 2 * o.curveVertices); // the plate's rim and both lips of the square
+}

@@ -398,3 +398,30 @@ TEST(SeedPath, PointsOnDisconnectedPiecesAreRefused)
         EXPECT_NE(std::string(e.what()).find("different connected components"), std::string::npos) << e.what();
     }
 }
+
+// A MeshIndex kept across paths (the edit tool's Builds, issue 37) gives the paths built
+// without one, point for point, for both costs; an index of a mesh that changed is not used.
+TEST(SeedPath, KeptMeshIndexGivesTheSamePaths)
+{
+    CMeshO m;
+    gs_test::MakeIcosphere(m, 4);
+    typedef vcg::tri::SeedPath<CMeshO> P;
+    vcg::tri::FeatureEnergy<CMeshO>::Compute(m, vcg::tri::FeatureEnergyType::NormalVariation, 1);
+    const P::MeshIndex index(m);
+    EXPECT_TRUE(index.Matches(m));
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> face(0, int(m.face.size()) - 1);
+    for (int trial = 0; trial < 10; ++trial) {
+        std::vector<vcg::tri::SurfacePoint> seeds;
+        for (int k = 0; k < 3; ++k) seeds.emplace_back(face(rng), vcg::Point3d(0.2, 0.3, 0.5));
+        for (SeedPathCost cost : {SeedPathCost::Length, SeedPathCost::Feature}) {
+            const P::PointResult a = P::ComputeFromPoints(m, seeds, trial % 2 == 1, cost);
+            const P::PointResult b = P::ComputeFromPoints(m, seeds, trial % 2 == 1, cost, 0.05, &index);
+            ASSERT_EQ(a.points.size(), b.points.size()) << trial;
+            for (size_t i = 0; i < a.points.size(); ++i) EXPECT_EQ(a.points[i].Pd(m), b.points[i].Pd(m)) << trial << " " << i;
+            EXPECT_EQ(a.vertices, b.vertices);
+        }
+    }
+    vcg::tri::Allocator<CMeshO>::AddVertices(m, 1);
+    EXPECT_FALSE(index.Matches(m));
+}

@@ -5,6 +5,8 @@
 #include <fstream>
 
 #include <snake_test_util.h>
+#include <vcg_ext/cut/cut_session_map.h>
+#include <vcg_ext/cut/mesh_cut.h>
 #include <vcg_ext/session/controller.h>
 
 using namespace vcg::tri;
@@ -614,4 +616,152 @@ TEST(SnakeController, VertexSeedWithoutFacesIsRefused)
     }
     EXPECT_EQ(c.SnakeCount(), 0);
     EXPECT_EQ(c.Seeds().size(), 2u);
+}
+
+// The mesh's selection changed through the controller (the Cut section's Select inside) is one
+// undo step among the snakes' own, in order; the snakes are untouched by it.
+TEST(SnakeController, SelectionChangesAreUndoneInOrderWithTheSnakes)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    c.SetSeeds(EdgeSeeds(m, 2.0));
+    c.CloseSeeds(false);
+    c.Run(2000);
+    ASSERT_EQ(c.UndoLabel(), "run");
+    const std::string ran = c.ToJson().dump();
+    auto selected = [&m] {
+        std::vector<int> f;
+        for (size_t i = 0; i < m.face.size(); ++i)
+            if (m.face[i].IsS()) f.push_back(int(i));
+        return f;
+    };
+    auto selectEvery = [&m](int step) {
+        for (size_t i = 0; i < m.face.size(); ++i) (i % step == 0) ? m.face[i].SetS() : m.face[i].ClearS();
+        for (auto &v : m.vert) v.ClearS();
+        for (auto &f : m.face)
+            if (f.IsS())
+                for (int k = 0; k < 3; ++k) f.V(k)->SetS();
+    };
+    const long rev0 = c.SelectionRevision();
+    c.ChangeSelection("select inside", [&] { selectEvery(3); });
+    const std::vector<int> sel3 = selected();
+    ASSERT_FALSE(sel3.empty());
+    EXPECT_EQ(c.UndoLabel(), "select inside");
+    EXPECT_EQ(c.ToJson().dump(), ran);
+    EXPECT_EQ(c.SelectionRevision(), rev0 + 1);
+    c.TogglePin(0); // a change of the snake after it
+    const std::string pinned = c.ToJson().dump();
+    ASSERT_NE(pinned, ran);
+
+    ASSERT_TRUE(c.Undo()); // the pin; the selection stays
+    EXPECT_EQ(c.ToJson().dump(), ran);
+    EXPECT_EQ(selected(), sel3);
+    ASSERT_TRUE(c.Undo()); // the selection
+    EXPECT_TRUE(selected().empty());
+    for (const auto &v : m.vert) EXPECT_FALSE(v.IsS());
+    EXPECT_EQ(c.ToJson().dump(), ran);
+    EXPECT_EQ(c.UndoLabel(), "run");
+    EXPECT_GT(c.SelectionRevision(), rev0 + 1);
+    ASSERT_TRUE(c.Redo());
+    EXPECT_EQ(selected(), sel3);
+    ASSERT_TRUE(c.Redo());
+    EXPECT_EQ(c.ToJson().dump(), pinned);
+    EXPECT_EQ(selected(), sel3);
+
+    // a second selection over the first: undo goes back to the first, not to none
+    c.ChangeSelection("select outside", [&] { selectEvery(5); });
+    ASSERT_TRUE(c.Undo());
+    EXPECT_EQ(selected(), sel3);
+    ASSERT_TRUE(c.Redo());
+    EXPECT_NE(selected(), sel3);
+
+    // no change, no step; a throwing change leaves the selection and the history as they were
+    const size_t steps = c.UndoSteps();
+    const std::vector<int> now = selected();
+    c.ChangeSelection("same", [] {});
+    EXPECT_EQ(c.UndoSteps(), steps);
+    EXPECT_THROW(c.ChangeSelection("bad", [&] {
+        selectEvery(2);
+        throw SnakeError("refused");
+    }),
+                 SnakeError);
+    EXPECT_EQ(selected(), now);
+    EXPECT_EQ(c.UndoSteps(), steps);
+}
+
+// A cut embeds the snake into the mesh (new vertices and faces): the session saved before it,
+// mapped through the cut, restores on the mesh after it with every sample where it was.
+TEST(SnakeController, SessionMapsOntoTheMeshAfterACut)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    Controller c(m);
+    c.SetSeeds(gs_test::NearestVertices(m, {vcg::Point3d(1, -0.5, -0.5), vcg::Point3d(1, 0.5, -0.5),
+                                            vcg::Point3d(1, 0.5, 0.5), vcg::Point3d(1, -0.5, 0.5)}));
+    c.CloseSeeds(true);
+    c.Run(40); // the samples leave the vertices
+    const std::vector<vcg::Point3d> pos = c.Get(0).positions();
+    int inFaces = 0;
+    for (const auto &s : c.Get(0).Samples())
+        inFaces += std::max(s.p.bary[0], std::max(s.p.bary[1], s.p.bary[2])) < 1 - 1e-9;
+    ASSERT_GT(inFaces, 3);
+    const Controller::json before = c.ToJson();
+    CutCurve curve;
+    curve.points = c.Get(0).Polyline();
+    curve.closed = true;
+    const size_t fn = m.face.size();
+    const MeshCut<CMeshO>::Result r = MeshCut<CMeshO>::Apply(m, {curve}, MeshCut<CMeshO>::Param());
+    ASSERT_GT(m.face.size(), fn);
+    EXPECT_THROW(Controller(m).FromJson(before), SnakeError); // the old session: another mesh now
+    UpdateTopology<CMeshO>::FaceFace(m);
+    UpdateTopology<CMeshO>::VertexFace(m);
+    const Controller::json after = CutSessionMap<CMeshO>::Map(before, r.points, m);
+    Controller d(m);
+    d.FromJson(after);
+    ASSERT_EQ(d.SnakeCount(), 1);
+    const std::vector<vcg::Point3d> now = d.Get(0).positions();
+    ASSERT_EQ(now.size(), pos.size());
+    for (size_t i = 0; i < pos.size(); ++i) EXPECT_LT((now[i] - pos[i]).Norm(), 1e-6) << "sample " << i;
+    int moved = 0;
+    for (size_t i = 0; i < d.Get(0).Samples().size(); ++i) moved += d.Get(0).Samples()[i].p.face != c.Get(0).Samples()[i].p.face;
+    EXPECT_GT(moved, 0); // samples in split faces went to their sub-faces
+}
+
+// The edit tool prepares the energy and the surface on another thread when it starts (issue
+// 37): the snake built afterwards is the one built without it, the energy settings chosen
+// meanwhile win, and a controller dropped while preparing waits for the thread (ASan).
+TEST(SnakeController, PreparingInBackgroundBuildsTheSameSnake)
+{
+    CMeshO m;
+    MakeCube(m, 4);
+    std::vector<vcg::Point3d> plain;
+    {
+        Controller c(m);
+        c.SetSeeds(EdgeSeeds(m, 2.0));
+        c.CloseSeeds(false);
+        c.Run(50);
+        plain = c.Get(0).positions();
+    }
+    Controller c(m);
+    c.PrepareInBackground();
+    c.PrepareInBackground(); // once
+    c.SetSeeds(EdgeSeeds(m, 2.0)); // seeds are placed meanwhile
+    c.CloseSeeds(false);
+    EXPECT_TRUE(c.HasSurface());
+    EXPECT_TRUE(c.EnergyComputed());
+    c.Run(50);
+    const std::vector<vcg::Point3d> pre = c.Get(0).positions();
+    ASSERT_EQ(pre.size(), plain.size());
+    for (size_t i = 0; i < pre.size(); ++i) EXPECT_LT((pre[i] - plain[i]).Norm(), 1e-12) << i;
+
+    Controller d(m);
+    d.PrepareInBackground();
+    d.SetEnergySettings(FeatureEnergyType::Crease, 0); // waits, then recomputes with these
+    EXPECT_EQ(d.EnergyType(), FeatureEnergyType::Crease);
+    EXPECT_TRUE(d.HasSurface());
+    {
+        Controller dropped(m);
+        dropped.PrepareInBackground();
+    }
 }

@@ -7,7 +7,7 @@ user's first steps too, as tests/host/test_edit_gui.py does them in MeshLab 2020
 docks in the main window, four clicks on the cube's front face and Enter build a snake, R runs it
 onto the cube's edge (screenshots with xwd, tests/debian13/xwd_image.py).
 
-    xvfb-run -n N -s "-screen 0 1280x1024x24" python3 gui_in_root.py MESH WORK_DIR [VERSION] [--clicks]
+    xvfb-run -n N -s "-screen 0 1600x1024x24" python3 gui_in_root.py MESH WORK_DIR [VERSION] [--clicks]
     (VERSION: MeshLab's, e.g. 2022.02 (default) or 2025.07; its main window's title starts with it)
 """
 import os
@@ -65,7 +65,7 @@ def started_only():
 
 
 def with_clicks():
-    """tests/host/gui.py's MeshLab (window at 0,0, 1280x1000, fresh settings, the tool's JSON
+    """tests/host/gui.py's MeshLab (window at 0,0, 1600x1000, fresh settings, the tool's JSON
     auto-exported after every change), the tool started by GS_SNAKE_AUTOSTART, not by the menu."""
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     import xwd_image  # puts tests/host (gui.py) on the path

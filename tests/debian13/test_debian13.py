@@ -196,7 +196,7 @@ def filters():
 
 
 def gui():
-    rc, text = in_root(*xvfb_run("1280x1024x24"), "python3", "/opt/gs/src/tests/debian13/gui_in_root.py",
+    rc, text = in_root(*xvfb_run("1600x1024x24"), "python3", "/opt/gs/src/tests/debian13/gui_in_root.py",
                        "/opt/gs/src/data/" + ICOCUBE, "/opt/gs/gui", VERSION, *(["--clicks"] if CLICKS else []))
     print(text)
     check(rc == 0, "MeshLab %s's GUI loaded the plugins and started the edit tool%s"

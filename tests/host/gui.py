@@ -4,7 +4,8 @@ server (Xvfb), driven by xdotool and photographed with ImageMagick's `import`.
 - checks and logging: check() records failures, finish() prints the verdict and the exit status;
 - the X server: xdo(), screenshot(), Image (a screenshot's pixels), window_geometry();
 - MeshLab: the MeshLab class starts it on a mesh with fresh settings and a Log file, starts the
-  Geometric Snake tool from the Edit menu; its GL area and panel positions in the 1280x1000 window;
+  Geometric Snake tool from the Edit menu; its 3D view and panel positions (the tool's Log lines)
+  in the 1600x1000 window (narrower on a narrower screen);
 - the tool's JSON (written after every change to $GS_SNAKE_AUTOEXPORT) and its Log lines;
 - the cube's geometry (data/icocube.ply, [-1,1]^3): distances to its edges, as the mesh has them.
 
@@ -24,6 +25,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.environ.get("GS_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
 WORK = None  # the test's work folder (artifacts: screenshots, JSON, MeshLab's Log); set by start()
+VIEW = None  # the 3D view (x, y, w, h) on screen, from the tool's Log once it has started
 MAGENTA = (255, 0, 255)  # the selected snake's colour (edit_geometric_snake.cpp)
 failures = []
 
@@ -247,7 +249,7 @@ def wait_json(path, pred, timeout):
 
 # ------------------------------------------------------------------ MeshLab
 class MeshLab:
-    """MeshLab on `mesh`, its window at 0,0 and 1280x1000, fresh settings, its Log (stdout) in
+    """MeshLab on `mesh`, its window at 0,0 and 1600x1000, fresh settings, its Log (stdout) in
     meshlab_<tag>.log. With `autoexport` the tool writes its JSON to WORK/auto.json after every
     change (the test hook $GS_SNAKE_AUTOEXPORT)."""
 
@@ -274,7 +276,8 @@ class MeshLab:
             raise RuntimeError("MeshLab window did not appear")
         time.sleep(2)
         xdo("windowmove", self.win, 0, 0)
-        xdo("windowsize", self.win, 1280, 1000)
+        screen = re.match(r"(\d+) (\d+)", xdo("getdisplaygeometry"))
+        xdo("windowsize", self.win, min(1600, int(screen.group(1))) if screen else 1280, 1000)
         time.sleep(2)
 
     def log_text(self):
@@ -287,9 +290,14 @@ class MeshLab:
         time.sleep(1)
         screenshot("edit_menu.png")
         xdo("mousemove", 141, 84, "click", 1)
+        global VIEW
         for _ in range(20):
             time.sleep(0.5)
             if "Started Mode Geometric Snake" in self.log_text():
+                # where the 3D view is, once the main window has laid the panel out
+                m = wait_for(lambda: list(re.finditer(r"3D view at (-?\d+),(-?\d+) size (\d+)x(\d+)", self.log_text())), 3)
+                if m:
+                    VIEW = tuple(int(m[-1].group(k)) for k in range(1, 5))
                 return True
         return False
 
@@ -306,7 +314,11 @@ class MeshLab:
 
 
 def gl_box(img):
-    """The GL area: left of the layer panel and above the info overlay (found by its mesh pixels)."""
+    """The 3D view above MeshLab's info overlay (~100 px high), as the tool's Log says; else
+    the view of a 1280x1000 window with the panel as a tab on the right (before issue 37)."""
+    if VIEW:
+        x, y, w, h = VIEW
+        return (max(0, x), max(0, y), min(img.w, x + w), min(img.h, y + h - 105))
     return (0, 70, 850, 860)
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """End-to-end GUI test of the Geometric Snake edit tool in the real MeshLab.
 
-Run under an X server (xvfb-run -a -s "-screen 0 1280x1024x24" python3 test_edit_gui.py ...):
+Run under an X server (xvfb-run -a -s "-screen 0 1600x1024x24" python3 test_edit_gui.py ...):
 opens data/icocube.ply (cube [-1,1]^3) in MeshLab, starts the tool from the Edit menu,
 clicks four seeds two edge lengths below the top edge of the front face, closes them
 (Enter), runs the snake (R) and checks from the exported JSON that it converged onto the
@@ -133,7 +133,8 @@ def main():
         img = Image(screenshot("05_restored.png"))
         n = img.count(MAGENTA, gl_box(img))
         check(n > 300, "the snake is restored and drawn after restarting MeshLab (%d px)" % n)
-        xdo("mousemove", 300, 600, "click", 1)  # focus the 3D view (a click away from the snake does nothing)
+        x0, y0, x1, y1 = gl_box(img)
+        xdo("mousemove", x0 + 30, (y0 + y1) // 2, "click", 1)  # focus the 3D view (a click away from the snake does nothing)
         time.sleep(0.5)
         xdo("key", "space")  # one step: the auto-export shows the restored snake
         s = wait_json(auto, lambda s: len(s) == 1, 10)

@@ -4,8 +4,9 @@
 Run under an X server (CTest: xvfb-run ... test_edit_gui_cut.py <work folder>): a flat 10 x 10
 plate with a session beside it holding a closed square snake around [2.5, 7.5]^2. The tool starts
 and restores the snake; the Cut section (closed at the bottom of the panel) is opened; "Select
-inside" selects the faces inside the square (the Log line and red selected faces in the view),
-"Select outside" the others, "Split into layers" adds the two layers (the Log line).
+inside" embeds the square into the mesh and selects exactly its inside (area 25 of 100: the Log
+line, and red selected faces in the view), "Select outside" the others, "Split into layers" adds
+the two layers (the Log line), "Cut open" makes the square's edges boundary edges.
 """
 import json
 import os
@@ -49,16 +50,21 @@ def main():
         g.xdo("mousemove", px + 37, py + 678, "click", 1)
         time.sleep(1)
         g.screenshot("02_cut_open.png")
-        inside_box = (330, 420, 200, 200)   # inside the square snake, in the 3D view
-        outside_box = (175, 270, 90, 90)    # the plate outside it
+        vx0, vy0, vx1, _ = g.gl_box(g.Image(os.path.join(WORK, "01_started.png")))
+        cx, cy = (vx0 + vx1) // 2, vy0 + 448  # the middle of the 3D view (896 px high)
+        inside_box = (cx - 104, cy - 98, 200, 200)  # inside the square snake, in the 3D view
+        outside_box = (cx - 259, cy - 248, 90, 90)  # the plate outside it
         # Select inside: the Log line, and the faces inside drawn selected (red)
         g.xdo("mousemove", px + 108, py + 716, "click", 1)
         time.sleep(2)
         g.screenshot("03_inside.png")
-        m = re.search(r"Selected the inside of snake 1: (\d+) faces", ml.log_text())
-        check(bool(m), "Select inside says what it selected")
+        m = re.search(r"Selected the inside of snake 1: (\d+) faces \(area ([0-9.]+) of ([0-9.]+)\)\. The snake was "
+                      r"embedded into the mesh: (\d+) vertices and (\d+) faces added", ml.log_text())
+        check(bool(m), "Select inside embeds the snake and says what it selected")
         if m:
-            check(40 <= int(m.group(1)) <= 60, "about the square's 25 cells of 2 faces are selected (%s)" % m.group(1))
+            check(float(m.group(2)) == 25 and float(m.group(3)) == 100,
+                  "exactly the square's inside is selected: %s faces, area %s of %s (%s vertices, %s faces added)"
+                  % m.groups())
         shot = os.path.join(WORK, "03_inside.png")
         ri, ro = selected_pixels(shot, *inside_box), selected_pixels(shot, *outside_box)
         check(ri > 15000 and ro < 100, "the inside is drawn selected, the outside not (%d, %d tinted pixels)" % (ri, ro))
@@ -77,6 +83,14 @@ def main():
         m = re.search(r"Split along snake 1 into layers \"plate inside\" \((\d+) faces\) and \"plate outside\" "
                       r"\((\d+) faces\)", ml.log_text())
         check(bool(m), "Split into layers adds the inside and outside layers")
+        # Cut open: the square's edges become boundary edges of this layer
+        g.xdo("mousemove", px + 302, py + 747, "click", 1)
+        time.sleep(3)
+        g.screenshot("06_cut_open.png")
+        m = re.search(r"Cut open along snake 1: its (\d+) vertices on the mesh are on the boundary now \((\d+) vertices",
+                      ml.log_text())
+        check(bool(m) and int(m.group(2)) >= int(m.group(1)),
+              "Cut open gives the curve's vertices a copy on the other side (%s)" % (str(m.groups()) if m else "no Log line"))
     finally:
         ml.kill()
     return g.finish()

@@ -101,7 +101,8 @@ def main():
             # down through the middle: the top of the cube turns towards the viewer (seen in
             # perspective from below its plane, it shows once the turn passes ~20 degrees; then
             # it grows fast: smaller turns)
-            g.drag(412, 400, 0, 8 if t < 12 else 3, 2)
+            x0, _, x1, _ = g.gl_box(img)
+            g.drag((x0 + x1) // 2 - 22, 400, 0, 8 if t < 12 else 3, 2)
             time.sleep(0.5)
         xdo("key", "Escape")  # resumes the tool
         time.sleep(0.5)

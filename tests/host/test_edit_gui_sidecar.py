@@ -56,7 +56,8 @@ def main():
             reds = red_pixels(os.path.join(WORK, "01_started.png"), px, py + 20, pw, 120)
             check(reds > 40, "the panel's status line shows the warning in red (%d red pixels)" % reds)
 
-        g.xdo("mousemove", 425, 465, "click", 1)  # a seed on the cube (middle of the 3D view)
+        x0, y0, x1, y1 = g.gl_box(g.Image(os.path.join(WORK, "01_started.png")))
+        g.xdo("mousemove", (x0 + x1) // 2, (y0 + y1) // 2, "click", 1)  # a seed on the cube (middle of the 3D view)
         time.sleep(2)
         g.screenshot("02_seed.png")
         g.xdo("mousemove", 70, 10, "click", 1)  # the same menu entry again ends the tool (it saves)

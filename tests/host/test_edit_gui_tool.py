@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """GUI tests of the Geometric Snake edit tool's keys, undo, Run and panel in the real MeshLab.
 
-Run under an X server (xvfb-run -a -s "-screen 0 1280x1024x24" python3 test_edit_gui_tool.py WORK):
+Run under an X server (xvfb-run -a -s "-screen 0 1600x1024x24" python3 test_edit_gui_tool.py WORK):
 1. Data safety: all faces selected (Ctrl+Shift+A), the tool started, a snake built, a sample
    clicked, then Delete, Ctrl+Del and Shift+Del (MeshLab's shortcuts for deleting selected
    faces and vertices): the mesh keeps all its faces (no delete filter in the Log, the cube is
@@ -9,8 +9,8 @@ Run under an X server (xvfb-run -a -s "-screen 0 1280x1024x24" python3 test_edit
 2. Undo in user units: Run to convergence, drag a sample, Run again; Ctrl+Z takes back the
    second Run, Ctrl+Z the drag: the exported JSON equals the converged state before the drag
    exactly; a third Ctrl+Z takes back the whole first Run; Ctrl+Y returns to the converged state.
-3. The panel is a dock inside MeshLab's main window (no top-level window of its own), on the
-   right, beside the 3D view, drawn in the screenshot.
+3. The panel is a dock inside MeshLab's main window (no top-level window of its own), beside
+   the 3D view (left of it), drawn in the screenshot.
 4. Wall time: a Run of at least 300 operations (the session restored with the snake as built
    and a convergence window of 300 operations) takes at most 2x its compute time + 0.5 s, both
    read from the tool's own Log line of that Run (the better of two Runs, Ctrl+Z between them:
@@ -112,7 +112,7 @@ def main():
             inside = px >= wx and py >= wy and px + pw <= wx + ww + 2 and py + ph <= wy + wh + 2
             check(inside, "the panel (%d,%d %dx%d) lies inside the main window (%d,%d %dx%d)" % (
                 px, py, pw, ph, wx, wy, ww, wh))
-            check(px > wx + ww // 2 and ph >= 300, "the panel is on the right, %d px high" % ph)
+            check(px + pw < wx + ww // 2 and ph >= 300, "the panel is on the left, %d px high" % ph)
             img = g.Image(g.screenshot("13_dock.png"))
             # the panel is drawn there: Qt's light window colour, not the 3D view's blue
             pts = [(x, y) for x in range(px + 5, px + pw - 5, 7) for y in range(py + 5, py + ph - 5, 7)
@@ -121,7 +121,7 @@ def main():
             check(pts and light > 0.5 * len(pts), "the screenshot shows the panel there (%d%% light pixels)" % (
                 100 * light // max(1, len(pts))))
             gx0, gy0, gx1, gy1 = g.gl_box(img)
-            check(px >= gx1 - 40, "the panel does not cover the 3D view")
+            check(px + pw <= gx0 or px >= gx1, "the panel does not cover the 3D view")
 
         # ---------------------------------------------------------------- 2. undo units
         xdo("key", "r")
@@ -242,15 +242,13 @@ def main():
         g.screenshot("16_wall_time.png")
 
         # ------------------------------------------------------------ 5. layers
-        # (fixed positions in this 1280x1000 window: the panel is the raised tab on the right)
-        xdo("mousemove", 976, 662, "click", 1)  # Output > Add as layer
+        # (fixed positions in this 1600x1000 window: the panel on the left, the layers on the right)
+        xdo("mousemove", 92, 660, "click", 1)  # Output > Add as layer
         check(wait_for(lambda: "Geometric snake: added layer icocube snake 2" in ml.log_text(), 5),
               "Add as layer adds the selected (second) curve as a new layer")
-        xdo("mousemove", 909, 951, "click", 1)  # the Project_1 tab: the layer dialog comes up
-        time.sleep(0.5)
         nlines = len(run_lines(ml.log_text()))
         xdo("key", "r")  # the tool owns R anywhere in the main window: a Run starts
-        xdo("mousemove", 993, 145, "click", 1)  # at once the new edge layer: MeshLab restarts the tool on it
+        xdo("mousemove", 1313, 145, "click", 1)  # at once the new edge layer: MeshLab restarts the tool on it
         time.sleep(1.5)
         text = ml.log_text()
         ended = run_lines(text)[nlines:]
@@ -258,7 +256,7 @@ def main():
         check(len(ended) == 1 and ended[0][0] == "stopped" and ended[0][1] < 300,
               "switching layers during a Run stops it (%s)" % (ended,))
         check("the current layer has no faces" in text, "the panel follows: it says the edge layer has no faces")
-        xdo("mousemove", 963, 114, "click", 1)  # back to the cube
+        xdo("mousemove", 1283, 114, "click", 1)  # back to the cube
         time.sleep(1.5)
         img = g.Image(g.screenshot("17_back_on_cube.png"))
         n = img.count(g.MAGENTA, g.gl_box(img))

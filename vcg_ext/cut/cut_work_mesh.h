@@ -73,6 +73,17 @@ public:
 
     int VertexCount() const { return int(pos.size()); }
 
+    /// Barycentric coordinates of x in triangle (a, b, c) (x in its plane, up to round-off).
+    static vcg::Point3d Bary(const vcg::Point3d &a, const vcg::Point3d &b, const vcg::Point3d &c, const vcg::Point3d &x)
+    {
+        const vcg::Point3d n = (b - a) ^ (c - a);
+        const double nn = n * n;
+        if (!(nn > 0)) return vcg::Point3d(1.0 / 3, 1.0 / 3, 1.0 / 3);
+        vcg::Point3d l(((c - b) ^ (x - b)) * n / nn, ((a - c) ^ (x - c)) * n / nn, 0);
+        l[2] = 1 - l[0] - l[1];
+        return l;
+    }
+
     /// The faces around vertex v now.
     const std::vector<int> &Faces(int v) const
     {

@@ -19,6 +19,7 @@
 #include <vcg_ext/cut/cut_check.h>
 #include <vcg_ext/cut/cut_commit.h>
 #include <vcg_ext/cut/cut_open.h>
+#include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/cut/cut_sides.h>
 #include <vcg_ext/cut/cut_work_mesh.h>
 #include <vcg_ext/snake/error.h>
@@ -62,6 +63,9 @@ public:
         int facesInside = 0, facesOutside = 0;
         double areaInside = 0, areaOutside = 0;
         bool chosenLeft = true;
+        /// Select and CutOpen: surface points of the mesh before the cut to the mesh after it
+        /// (the user's snakes); SelectOnly and Split leave the mesh as it was (an empty map).
+        CutPointMap points;
         double msEmbed = 0, msSides = 0, msCheck = 0, msCommit = 0, msSplit = 0;
     };
 
@@ -85,9 +89,11 @@ public:
         if (p.mode == CutMode::CutOpen) {
             CutOpen::Open(wk.w, wk.curves, wk.curveEdges);
             CutCheck::AfterOpen(wk.w, wk.curves, wk.totalArea);
+            r.addedVertices = int(wk.w.pos.size()) - wk.w.vn0; // with the copies of the curve's vertices
         }
         r.msCheck += ms(t0);
         t0 = clock::now();
+        r.points.Build(m, wk.w);
         CutCommit<MeshType>::Commit(m, wk.w);
         r.msCommit = ms(t0);
         markSides(m, wk);
@@ -102,27 +108,49 @@ public:
             throw SnakeError("Cut: the mesh has deleted vertices or faces; compact it first. The mesh was not changed.");
         Work wk = prepare(m, curves, p);
         auto t0 = clock::now();
-        MeshType cut;
-        inside.Clear();
-        outside.Clear();
-        // the optional components MeshLab's meshes hold (texture coordinates, face colour and
-        // quality) come along into the copy and the parts
-        for (MeshType *d : {&cut, &inside, &outside}) EnableLike(*d, m);
-        vcg::tri::Append<MeshType, MeshType>::MeshCopy(cut, m);
-        CutCommit<MeshType>::Commit(cut, wk.w);
+        // each part is written straight from the user's mesh and the work mesh: its faces and
+        // the vertices they use, nothing else (no copy of the whole mesh)
+        const CutWorkMesh &w = wk.w;
+        const CutCommit<MeshType> src(m, w);
+        const auto &lab = wk.sides.label;
+        Result &r = wk.r;
+        r.faceSide.assign(w.face.size(), 0);
+        std::vector<int> partFaces[2];
+        for (size_t f = 0; f < w.face.size(); ++f) {
+            if (w.face[f].parent < 0) continue;
+            const int in = lab[f] == wk.chosen;
+            r.faceSide[f] = in;
+            partFaces[in ? 0 : 1].push_back(int(f));
+        }
+        r.facesInside = int(partFaces[0].size());
+        r.facesOutside = int(partFaces[1].size());
         wk.r.msCommit = ms(t0);
         t0 = clock::now();
-        markSides(cut, wk);
+        std::vector<int> vmap(w.pos.size(), -1);
         for (int part = 0; part < 2; ++part) {
             MeshType &dst = part == 0 ? inside : outside;
-            for (size_t f = 0; f < cut.face.size(); ++f)
-                if (!cut.face[f].IsD()) {
-                    if ((wk.r.faceSide[f] == 1) == (part == 0)) cut.face[f].SetS();
-                    else cut.face[f].ClearS();
+            dst.Clear();
+            // the optional components MeshLab's meshes hold (texture coordinates, face colour
+            // and quality) come along into the parts
+            EnableLike(dst, m);
+            std::vector<int> verts;
+            for (int f : partFaces[part])
+                for (int k = 0; k < 3; ++k) {
+                    const int v = w.face[f].v[k];
+                    if (vmap[v] < 0) {
+                        vmap[v] = int(verts.size());
+                        verts.push_back(v);
+                    }
                 }
-            vcg::tri::UpdateSelection<MeshType>::VertexClear(cut);
-            vcg::tri::UpdateSelection<MeshType>::VertexFromFaceLoose(cut);
-            vcg::tri::Append<MeshType, MeshType>::Mesh(dst, cut, true);
+            if (!verts.empty()) vcg::tri::Allocator<MeshType>::AddVertices(dst, verts.size());
+            for (size_t i = 0; i < verts.size(); ++i) src.Vertex(dst.vert[i], verts[i]);
+            if (!partFaces[part].empty()) vcg::tri::Allocator<MeshType>::AddFaces(dst, partFaces[part].size());
+            for (size_t i = 0; i < partFaces[part].size(); ++i) {
+                const CutWorkMesh::Face &wf = w.face[partFaces[part][i]];
+                src.Face(dst.face[i], partFaces[part][i], &dst.vert[vmap[wf.v[0]]], &dst.vert[vmap[wf.v[1]]],
+                         &dst.vert[vmap[wf.v[2]]], true);
+            }
+            for (int v : verts) vmap[v] = -1; // (the other part reuses the map)
             vcg::tri::UpdateSelection<MeshType>::Clear(dst);
             vcg::tri::UpdateBounding<MeshType>::Box(dst);
         }

@@ -29,11 +29,32 @@ public:
     typedef SnakeSurface<MeshType> Surface;
 
     explicit SnakeEnergySource(MeshType &m) : mesh(m) {}
+    // the preparation thread refers to the members (it ends with the object: see `preparing`)
+    SnakeEnergySource(const SnakeEnergySource &) = delete;
+    SnakeEnergySource &operator=(const SnakeEnergySource &) = delete;
+
+    /// Computes the energy with the current settings (if it is not computed yet) and builds the
+    /// surface on another thread, so that the first snake does not wait for them (issue 37: on
+    /// 1.2M faces about a second, while the user is still placing seeds). Every other member
+    /// but the const ones waits for it first; until then SurfacePtr() is empty. Meanwhile
+    /// the thread writes the vertex quality and reads the rest of the mesh: the caller changes
+    /// neither (the edit tool: MeshLab ends the tool before a filter, and the end waits).
+    void PrepareInBackground()
+    {
+        if (preparing.valid() || (computed && surface)) return;
+        preparing = std::async(std::launch::async, [this] {
+            if (!computed) FeatureEnergy<MeshType>::Compute(mesh, type, smooth, angle);
+            auto s = std::make_shared<Surface>(mesh);
+            applyField(*s);
+            return s;
+        });
+    }
 
     /// Computes the feature energy into the vertex quality (low = feature). Throws on a bad
     /// type or smoothing, or an unusable mesh.
     void Compute(FeatureEnergyType t, int smoothing)
     {
+        join();
         checkSettings(t, smoothing);
         FeatureEnergy<MeshType>::Compute(mesh, t, smoothing, angle);
         fromQuality = false;
@@ -53,6 +74,7 @@ public:
     /// Throws what either throws, after both have ended.
     void ComputeBeside(const std::function<void()> &adjacency)
     {
+        join();
         if (computed || mesh.fn <= MeshValidation<MeshType>::ConcurrentFaces()) {
             adjacency();
             if (!computed) Compute(type, smooth);
@@ -65,6 +87,7 @@ public:
     /// The current vertex quality is the energy (low = feature).
     void UseQuality()
     {
+        join();
         fromQuality = true;
         computed = true;
         if (surface) surface->SetEnergyFromQuality();
@@ -73,6 +96,7 @@ public:
     /// Dihedral angle (degrees) above which an edge is a crease; recomputes a crease energy.
     bool SetCreaseAngle(double deg)
     {
+        join();
         if (!std::isfinite(deg) || deg <= 0 || deg >= 180)
             throw SnakeError("Geometric snake: the crease angle must be between 0 and 180 degrees.");
         const bool changed = deg != angle;
@@ -84,6 +108,7 @@ public:
     /// The settings used when the energy is computed on demand; recomputes it if it was computed.
     bool SetSettings(FeatureEnergyType t, int smoothing)
     {
+        join();
         checkSettings(t, smoothing);
         const bool recompute = computed && (t != type || smoothing != smooth);
         if (recompute) Compute(t, smoothing);
@@ -95,6 +120,7 @@ public:
     /// what the quality holds now.
     bool Apply(bool quality, FeatureEnergyType t, int smoothing, double crease)
     {
+        join();
         bool changed = false;
         if (quality) {
             if (!fromQuality) UseQuality(), changed = true;
@@ -111,6 +137,7 @@ public:
     /// The shared surface; computes the energy first if that was not done yet.
     const std::shared_ptr<Surface> &EnsureSurface()
     {
+        join();
         if (!computed) Compute(type, smooth);
         if (!surface) {
             surface = std::make_shared<Surface>(mesh);
@@ -124,6 +151,7 @@ public:
     /// or, for the crease energy (read at the samples), that it found no crease at all.
     std::vector<std::string> Warnings()
     {
+        join();
         Surface &s = *EnsureSurface();
         if (fromQuality || type != FeatureEnergyType::Crease) return s.Warnings();
         const auto *f = dynamic_cast<const CreaseEnergyField<MeshType> *>(&s.EnergyField());
@@ -176,6 +204,20 @@ private:
     double angle = CreaseEnergy<MeshType>::DefaultAngle();
     bool computed = false;
     bool fromQuality = false;
+    // PrepareInBackground's thread; last, so that it ends before the members it uses go
+    std::future<std::shared_ptr<Surface>> preparing;
+
+    /// Takes the surface PrepareInBackground made (waiting for it); rethrows its error.
+    void join()
+    {
+        if (!preparing.valid()) return;
+        std::shared_ptr<Surface> s = preparing.get();
+        if (!computed) {
+            computed = true;
+            fromQuality = false;
+        }
+        if (!surface) surface = std::move(s);
+    }
 
     static void checkSettings(FeatureEnergyType t, int smoothing)
     {
@@ -186,12 +228,14 @@ private:
     /// interpolated from the vertex values the quality holds (those are for display).
     void applyField()
     {
-        if (!surface) return;
+        if (surface) applyField(*surface);
+    }
+    void applyField(Surface &s) const
+    {
         const int capture = CaptureSmoothingFor(fromQuality, type);
-        if (surface->CaptureSmoothing() != capture) surface->SetCaptureSmoothing(capture);
+        if (s.CaptureSmoothing() != capture) s.SetCaptureSmoothing(capture);
         if (fromQuality || type != FeatureEnergyType::Crease) return;
-        surface->SetEnergyField(std::make_shared<CreaseEnergyField<MeshType>>(
-            mesh, angle, CreaseEnergyField<MeshType>::Widths(mesh, smooth)));
+        s.SetEnergyField(std::make_shared<CreaseEnergyField<MeshType>>(mesh, angle, CreaseEnergyField<MeshType>::Widths(mesh, smooth)));
     }
 };
 

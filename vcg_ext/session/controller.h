@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <future>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -38,6 +39,7 @@
 #include <vcg_ext/paths/seed_path.h>
 #include <vcg_ext/paths/seed_points.h>
 #include <vcg_ext/paths/stroke_loop.h>
+#include <vcg_ext/session/mesh_selection_memento.h>
 #include <vcg_ext/session/session_file.h>
 #include <vcg_ext/session/session_history.h>
 #include <vcg_ext/session/sidecar.h>
@@ -108,6 +110,18 @@ public:
     void SetEnergySettings(FeatureEnergyType type, int smoothing)
     {
         if (energy.SetSettings(type, smoothing)) energyChanged();
+    }
+    /// Computes the energy and builds the shared surface on another thread, for the snakes to
+    /// come (SnakeEnergySource::PrepareInBackground): the edit tool starts it when it starts,
+    /// so that Build does not wait for them. The mesh must not change until a call that uses
+    /// the energy (those wait for it).
+    void PrepareInBackground()
+    {
+        energy.PrepareInBackground();
+        if (!pathIndex && !pathIndexReady.valid()) {
+            MeshType *m = &mesh;
+            pathIndexReady = std::async(std::launch::async, [m] { return std::make_shared<const PathIndex>(*m); });
+        }
     }
     /// The shared surface; computes the energy first if that was not done yet.
     Surface &EnsureSurface() { return *energy.EnsureSurface(); }
@@ -203,7 +217,7 @@ public:
         if (seedList.AtVertices())
             sn->InitFromSeeds(seedList.Vertices(), closed, seedCost, LengthScale());
         else
-            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale());
+            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale(), &seedPathIndex());
         addSnake(std::move(sn), true);
         return selected;
     }
@@ -215,7 +229,7 @@ public:
         EnsureSurface();
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale());
+        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(), &seedPathIndex());
         addSnake(std::move(sn), false);
         return selected;
     }
@@ -413,16 +427,43 @@ public:
     /// Returns to the session as it was before the last action (all snakes, seeds, selection).
     bool Undo()
     {
-        if (!history.Undo(makeSnake())) return false;
+        if (!history.Undo(makeSnake(), saveSelection(), loadSelection())) return false;
         touch("undo");
         return true;
     }
     bool Redo()
     {
-        if (!history.Redo(makeSnake())) return false;
+        if (!history.Redo(makeSnake(), saveSelection(), loadSelection())) return false;
         touch("redo");
         return true;
     }
+    /// A change of the mesh's face and vertex selection made by `change()` (e.g. a cut's Select
+    /// inside): one undo step that brings the selection back. Nothing is recorded if change()
+    /// leaves the selection as it was, or throws (the selection is then put back).
+    template <class Change>
+    void ChangeSelection(const std::string &label, Change change)
+    {
+        auto before = std::make_shared<const Selection>(Selection::Save(mesh));
+        try {
+            change();
+        } catch (...) {
+            before->Restore(mesh);
+            throw;
+        }
+        if (Selection::Save(mesh) == *before) return;
+        history.RecordMesh(label, std::move(before));
+        ++selectionRevision;
+        touch(label.c_str());
+    }
+    /// Increases whenever the controller changes the mesh's selection (ChangeSelection, or an
+    /// undo / redo of it): the view redraws the selection then.
+    long SelectionRevision() const { return selectionRevision; }
+    /// The undo history, to keep while the edit tool is away (SnakeKeptHistories): taken out
+    /// (this controller's history is left empty) and adopted by the next controller on the same
+    /// mesh once it has restored the session this one saved.
+    typedef typename SnakeSessionHistory<Snake, SnakeSeedList<MeshType>, MeshSelectionMemento<MeshType>>::KeptSteps KeptHistory;
+    KeptHistory TakeHistory() { return history.Take(); }
+    void AdoptHistory(KeptHistory h) { history.Adopt(std::move(h)); }
     /// Memory bound of the history (default 100 MB) and its current estimate.
     void SetUndoLimit(size_t bytes) { history.SetLimit(bytes); }
     size_t UndoBytes() const { return history.Bytes(); }
@@ -577,7 +618,30 @@ private:
     SnakeAutosave autosave;
     double computeMs = 0;
 
-    SnakeSessionHistory<Snake, SnakeSeedList<MeshType>> history{{snakes, selected, seedList, params}};
+    typedef MeshSelectionMemento<MeshType> Selection;
+    SnakeSessionHistory<Snake, SnakeSeedList<MeshType>, Selection> history{{snakes, selected, seedList, params}};
+    long selectionRevision = 0;
+    auto saveSelection()
+    {
+        return [this] { return std::make_shared<const Selection>(Selection::Save(mesh)); };
+    }
+    auto loadSelection()
+    {
+        return [this](const Selection &s) {
+            if (s.Restore(mesh)) ++selectionRevision;
+        };
+    }
+    // what the seed paths search on, per mesh (SeedPath::MeshIndex): kept across Builds
+    typedef typename SeedPath<MeshType>::MeshIndex PathIndex;
+    std::shared_ptr<const PathIndex> pathIndex;
+    std::future<std::shared_ptr<const PathIndex>> pathIndexReady; // PrepareInBackground's; last: ends first
+
+    const PathIndex &seedPathIndex()
+    {
+        if (pathIndexReady.valid()) pathIndex = pathIndexReady.get();
+        if (!pathIndex || !pathIndex->Matches(mesh)) pathIndex = std::make_shared<const PathIndex>(mesh);
+        return *pathIndex;
+    }
 
     bool record(const char *label) { return history.Record(label); }
     // builds the snakes an undo brings back

@@ -10,6 +10,10 @@
 // The history works on the session it is given (Live: references to its owner's members) and
 // must be told of every change: Record before it (the first change of an action pushes the
 // step), SnakeAdded / SnakeRemoved / AllChanged when snakes come, go or all change.
+//
+// A step may also hold a state of the mesh outside the snakes (MeshStateType, e.g. its
+// selection), saved only by the actions that change it (RecordMesh): undoing or redoing such a
+// step saves the mesh state it replaces and restores the step's.
 
 #include <algorithm>
 #include <memory>
@@ -22,7 +26,13 @@
 namespace vcg {
 namespace tri {
 
-template <class SnakeType, class SeedListType>
+/// No mesh state in the history.
+struct NoMeshState
+{
+    size_t Bytes() const { return 0; }
+};
+
+template <class SnakeType, class SeedListType, class MeshStateType = NoMeshState>
 class SnakeSessionHistory
 {
 public:
@@ -55,6 +65,15 @@ public:
         lastPushed = s.snakes;
         selectedChanged();
         return true;
+    }
+    /// Pushes a step of its own for a change of the mesh state, made already: `before` is the
+    /// state it replaced (the snakes, seeds and parameters are unchanged by it).
+    void RecordMesh(const std::string &label, std::shared_ptr<const MeshStateType> before)
+    {
+        Session s = snapshot();
+        s.mesh = std::move(before);
+        undo.Push(s, bytes(s, &lastPushed), label);
+        lastPushed = s.snakes;
     }
     /// Takes back the step the last Record pushed (the change it announced did nothing).
     void DropLast() { undo.DropLast(); }
@@ -96,15 +115,27 @@ public:
 
     /// Returns the session to the state before the last action. `make(params)` builds a snake
     /// for a snapshot that holds more snakes than the session has now.
+    /// With mesh states: `save()` gives the mesh's state now (a shared_ptr to MeshStateType),
+    /// `load(state)` sets it.
+    template <class MakeSnake, class SaveMesh, class LoadMesh>
+    bool Undo(MakeSnake make, SaveMesh save, LoadMesh load)
+    {
+        return swap(make, save, load, false);
+    }
+    template <class MakeSnake, class SaveMesh, class LoadMesh>
+    bool Redo(MakeSnake make, SaveMesh save, LoadMesh load)
+    {
+        return swap(make, save, load, true);
+    }
     template <class MakeSnake>
     bool Undo(MakeSnake make)
     {
-        return swap(make, false);
+        return Undo(make, noSave, noLoad);
     }
     template <class MakeSnake>
     bool Redo(MakeSnake make)
     {
-        return swap(make, true);
+        return Redo(make, noSave, noLoad);
     }
 
 private:
@@ -115,8 +146,34 @@ private:
         int selected = -1;
         SeedListType seeds;
         SnakeParams params;
+        std::shared_ptr<const MeshStateType> mesh; ///< the mesh's state, if the step changed it
     };
+    static std::shared_ptr<const MeshStateType> noSave() { return nullptr; }
+    static void noLoad(const MeshStateType &) {}
 
+public:
+    /// The recorded steps, pure data (the snakes' mementos, seeds, parameters): taken out when
+    /// the edit tool leaves the mesh and adopted by the next session on it (SnakeKeptHistories),
+    /// so Undo goes on across MeshLab ending and restarting the tool.
+    typedef SnakeUndo<Session> KeptSteps;
+    /// Takes the steps out; the history is left empty.
+    KeptSteps Take()
+    {
+        KeptSteps s = std::move(undo);
+        undo = KeptSteps(s.Limit());
+        Clear();
+        return s;
+    }
+    /// Goes on with `s`, steps of this session (the current state is where they left off).
+    void Adopt(KeptSteps s)
+    {
+        s.SetLimit(undo.Limit());
+        undo = std::move(s);
+        AllChanged();
+        lastPushed.clear();
+    }
+
+private:
     Live cur;
     SnakeUndo<Session> undo;
     // saved[k]: snake k's memento while it is unchanged (nullptr: changed since), shared by
@@ -134,7 +191,7 @@ private:
     Session snapshot()
     {
         saved.resize(cur.snakes.size());
-        Session s{{}, cur.selected, cur.seeds, cur.params};
+        Session s{{}, cur.selected, cur.seeds, cur.params, nullptr};
         for (size_t k = 0; k < cur.snakes.size(); ++k) {
             if (!saved[k]) saved[k] = std::make_shared<const typename SnakeType::Memento>(cur.snakes[k]->Save());
             s.snakes.push_back(saved[k]);
@@ -159,20 +216,24 @@ private:
         cur.seeds = s.seeds;
         cur.params = s.params;
     }
-    template <class MakeSnake>
-    bool swap(MakeSnake &make, bool redo)
+    template <class MakeSnake, class SaveMesh, class LoadMesh>
+    bool swap(MakeSnake &make, SaveMesh &save, LoadMesh &load, bool redo)
     {
+        const Session *next = undo.Peek(redo);
+        if (!next) return false;
         Session s = snapshot();
+        if (next->mesh) s.mesh = save(); // the step changes the mesh: its state now goes the other way
         const size_t b = bytes(s);
         if (!(redo ? undo.Redo(s, b) : undo.Undo(s, b))) return false;
         restore(s, make);
+        if (s.mesh) load(*s.mesh);
         return true;
     }
     // the memory a snapshot adds: its snakes' mementos, except those it shares with
     // `previous` (the snakes the last action did not touch)
     size_t bytes(const Session &s, const std::vector<MementoPtr> *previous = nullptr) const
     {
-        size_t b = sizeof(Session) + s.seeds.Bytes();
+        size_t b = sizeof(Session) + s.seeds.Bytes() + (s.mesh ? s.mesh->Bytes() : 0);
         for (const auto &m : s.snakes)
             if (!previous || std::find(previous->begin(), previous->end(), m) == previous->end()) b += m->Bytes();
         return b;

@@ -52,6 +52,13 @@ public:
     size_t Limit() const { return limit; }
     void SetLimit(size_t bytes) { limit = bytes; }
 
+    /// The state the next Undo / Redo would bring back (nullptr if none).
+    const State *Peek(bool redoSide) const
+    {
+        const std::deque<Entry> &d = redoSide ? redo : undo;
+        return d.empty() ? nullptr : &d.back().state;
+    }
+
     /// Swaps `current` (costing `bytes`) with the state before the newest action.
     bool Undo(State &current, size_t bytes)
     {

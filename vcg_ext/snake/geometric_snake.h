@@ -72,10 +72,12 @@ public:
     /// Seeds given as surface points (face + barycentric, e.g. snapped from coordinates or a
     /// Pick Points file): the curve starts and ends exactly at them (SeedPath::ComputeFromPoints).
     /// `lengthScale`: the snake's length unit (see LengthScale()); 0 = from the path's faces.
+    /// `index`: the mesh's SeedPath::MeshIndex, if the caller keeps one (else built here).
     void InitFromSeedPoints(const std::vector<SurfacePoint> &seeds, bool closed, SeedPathCost cost = SeedPathCost::Length,
-                            double lengthScale = 0)
+                            double lengthScale = 0, const typename SeedPath<MeshType>::MeshIndex *index = nullptr)
     {
-        typename SeedPath<MeshType>::PointResult path = SeedPath<MeshType>::ComputeFromPoints(surf->Mesh(), seeds, closed, cost);
+        typename SeedPath<MeshType>::PointResult path =
+            SeedPath<MeshType>::ComputeFromPoints(surf->Mesh(), seeds, closed, cost, 0.05, index);
         InitFromSurfacePath(path.points, closed, lengthScale);
         seedVertices.clear();
         seedPoints.clear();

@@ -1,0 +1,179 @@
+// What the edit tool does per input on a 1.2M-face mesh (issue 37: a seed click took 0.65-1.04 s
+// to show, Build 1.77 s; targets 100 ms and 300 ms). bunny00 midpoint-subdivided twice.
+//
+// BM_PickGrid      the uniform grid of the faces that picking casts rays on (once per mesh)
+// BM_Prepare       the feature energy and the snake surface (once per mesh; the tool starts it
+//                  on another thread when it starts, SnakeController::PrepareInBackground,
+//                  with the seed paths' SeedPath::MeshIndex)
+// BM_Click         one seed click once both are ready: the ray cast and the seed added
+// BM_Build         Enter with 4 seeds across the bunny once both are ready: the seed path (A*
+//                  between the clicked points), the samples, the session as JSON for autosave
+// BM_BuildCold     the same on a controller that has not prepared (what the first Build cost
+//                  before; every Build paid the seed path's O(mesh) part)
+// Run: build/bench/bench_edit_response --benchmark_repetitions=5 and read the medians.
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include <snake_bench_util.h>
+#include <vcg/complex/algorithms/closest.h>
+#include <vcg/space/index/grid_static_ptr.h>
+#include <vcg_ext/session/controller.h>
+
+namespace {
+
+using namespace vcg::tri;
+typedef SnakeController<CMeshO> Controller;
+typedef vcg::GridStaticPtr<CFaceO, Scalarm> Grid;
+
+CMeshO &Mesh()
+{
+    static std::unique_ptr<CMeshO> m;
+    if (!m) {
+        m.reset(new CMeshO);
+        const std::string path = std::string(GS_SHARED_MESH_DIR) + "/bunny00.off";
+        if (!gs_test::LoadMesh(*m, path)) {
+            std::fprintf(stderr, "cannot load %s\n", path.c_str());
+            std::exit(1);
+        }
+        gs_test::Subdivide(*m, 1200000);
+        gs_test::EnableSnakeAdjacency(*m);
+    }
+    return *m;
+}
+
+Grid &PickGrid()
+{
+    static std::unique_ptr<Grid> g;
+    if (!g) {
+        g.reset(new Grid);
+        g->Set(Mesh().face.begin(), Mesh().face.end());
+    }
+    return *g;
+}
+
+/// A ray towards the back of the bunny (-z) through (x, y) of its bounding box, as a click
+/// (a little higher where the scan has a hole).
+CFaceO *Click(double fx, double fy, SurfacePoint &sp)
+{
+    CMeshO &m = Mesh();
+    const auto &b = m.bbox;
+    Point3m o;
+    vcg::Ray3<Scalarm> ray;
+    Scalarm t = 0;
+    CFaceO *f = nullptr;
+    for (int k = 0; k < 20 && !f; ++k) {
+        o = Point3m(b.min[0] + fx * b.DimX(), b.min[1] + (fy + 0.02 * k) * b.DimY(), b.max[2] + b.DimZ());
+        ray = vcg::Ray3<Scalarm>(o, Point3m(0, 0, -1));
+        f = vcg::tri::DoRay(m, PickGrid(), ray, Scalarm(3 * b.DimZ()), t);
+    }
+    if (!f) return nullptr;
+    Point3m bary;
+    vcg::InterpolationParameters(vcg::Triangle3<Scalarm>(f->cP(0), f->cP(1), f->cP(2)), o + ray.Direction() * t, bary);
+    sp = SurfacePoint(int(vcg::tri::Index(m, f)), vcg::Point3d::Construct(bary));
+    sp.Normalize();
+    return f;
+}
+
+const double kX[4] = {0.43, 0.45, 0.47, 0.49}; // across the body (~100 samples, as the issue's 92), at 40 % of its height
+const double kY = 0.4;
+
+double BuildOnce(Controller &c, benchmark::State *state = nullptr);
+
+/// A controller as the edit tool has it some seconds after it started: prepared, one Build done.
+Controller &Ready()
+{
+    static std::unique_ptr<Controller> c;
+    if (!c) {
+        c.reset(new Controller(Mesh()));
+        c->PrepareInBackground();
+        c->EnsureSurface();
+        BuildOnce(*c);
+    }
+    return *c;
+}
+
+double BuildOnce(Controller &c, benchmark::State *state)
+{
+    for (double x : kX) {
+        SurfacePoint sp;
+        if (!Click(x, kY, sp)) std::exit(2);
+        c.AddSeedFromPick(sp.face, sp.bary);
+    }
+    if (state) state->ResumeTiming();
+    c.CloseSeeds(false);
+    benchmark::DoNotOptimize(c.ToJson().dump());
+    if (state) state->PauseTiming();
+    const double n = c.SelectedSnake()->SampleCount();
+    c.DeleteSnake(c.Selected());
+    return n;
+}
+
+void BM_PickGrid(benchmark::State &state)
+{
+    for (auto _ : state) {
+        Grid g;
+        g.Set(Mesh().face.begin(), Mesh().face.end());
+    }
+    state.counters["faces"] = Mesh().fn;
+}
+
+void BM_Prepare(benchmark::State &state)
+{
+    for (auto _ : state) {
+        Controller c(Mesh());
+        c.EnsureSurface();
+    }
+}
+
+void BM_Click(benchmark::State &state)
+{
+    Controller &c = Ready();
+    int i = 0;
+    for (auto _ : state) {
+        SurfacePoint sp;
+        if (!Click(kX[i % 4], kY + 0.01 * (i / 4 % 10), sp)) std::exit(2);
+        c.AddSeedFromPick(sp.face, sp.bary);
+        benchmark::DoNotOptimize(c.ToJson().dump());
+        ++i;
+    }
+    c.ClearSeeds();
+}
+
+void BM_Build(benchmark::State &state)
+{
+    Controller &c = Ready();
+    double n = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        n = BuildOnce(c, &state);
+        state.ResumeTiming();
+    }
+    state.counters["samples"] = n;
+}
+
+void BM_BuildCold(benchmark::State &state)
+{
+    double n = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        Controller c(Mesh());
+        n = BuildOnce(c, &state);
+        state.ResumeTiming();
+    }
+    state.counters["samples"] = n;
+}
+
+} // namespace
+
+BENCHMARK(BM_PickGrid)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_Prepare)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_Click)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(40);
+BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
+BENCHMARK(BM_BuildCold)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+BENCHMARK_MAIN();
