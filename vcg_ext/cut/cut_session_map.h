@@ -25,8 +25,10 @@ public:
     static json Map(json session, const CutPointMap &map, const MeshType &m)
     {
         walk(session, map, m);
-        if (session.is_object() && session.contains("mesh"))
-            session["mesh"] = {{"vertices", int(m.vert.size())}, {"faces", int(m.face.size())}};
+        if (session.is_object() && session.contains("mesh") && session["mesh"].is_object()) {
+            session["mesh"]["vertices"] = int(m.vert.size());
+            session["mesh"]["faces"] = int(m.face.size());
+        }
         return session;
     }
 
@@ -47,11 +49,12 @@ private:
             SurfacePoint p(j["face"].get<int>(), vcg::Point3d(j["bary"][0].get<double>(), j["bary"][1].get<double>(),
                                                              j["bary"][2].get<double>()));
             p = map.Map(p);
+            // element by element: the arrays stay the ones the session holds
             j["face"] = p.face;
-            j["bary"] = {p.bary[0], p.bary[1], p.bary[2]};
-            if (j.contains("position") && p.OnMesh(m)) {
+            for (int k = 0; k < 3; ++k) j["bary"][k] = p.bary[k];
+            if (j.contains("position") && j["position"].is_array() && j["position"].size() == 3 && p.OnMesh(m)) {
                 const vcg::Point3d x = p.Pd(m);
-                j["position"] = {x[0], x[1], x[2]};
+                for (int k = 0; k < 3; ++k) j["position"][k] = x[k];
             }
             return;
         }
