@@ -21,11 +21,11 @@ build=${1:-$here/build}
 [ $# -gt 0 ] && shift
 
 # Runtime libraries MeshLab's own plugins link to (Debian only recommends them, and without them
-# MeshLab refuses those plugins at start), per release; forky's GUI test also takes screenshots
+# MeshLab refuses those plugins at start), per release; the GUI tests also take screenshots
 # (xwd, in x11-apps).
 case "$release" in
   trixie) name=debian13
-          libs=(lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 libxerces-c3.2t64) ;;
+          libs=(lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 libxerces-c3.2t64 x11-apps) ;;
   forky)  name=forky
           libs=(lib3ds-1-3 libgmp10 libgomp1 libmpfr6 libmuparser2v5 libopenctm1 libqhull-r8.0 x11-apps) ;;
   *) echo "usage: $0 trixie|forky [BUILD_DIR] [--run CMD... | --prepare-only]" >&2; exit 2 ;;

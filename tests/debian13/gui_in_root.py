@@ -10,7 +10,9 @@ onto the cube's edge (screenshots with xwd, tests/debian13/xwd_image.py).
     xvfb-run -n N -s "-screen 0 1600x1024x24" python3 gui_in_root.py MESH WORK_DIR [VERSION] [--clicks]
     (VERSION: MeshLab's, e.g. 2022.02 (default) or 2025.07; its main window's title starts with it)
 """
+import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -27,6 +29,39 @@ from checks import check, failures  # noqa: E402
 def windows(name):
     out = subprocess.run(["xdotool", "search", "--name", name], capture_output=True, text=True).stdout
     return out.split()
+
+
+def overlap(a, b):
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    return ax < bx + bw and bx < ax + aw and ay < by + bh and by < ay + ah
+
+
+def boxes(text):
+    """The panel, 3D view and layer dialog boxes the tool logs once the main window has laid the
+    panel out (edit_snake_view.cpp): (docked?, panel, view, layer dialog, its state) or None."""
+    p = re.findall(r"panel (docked|floating) in MeshLab's main window at (-?\d+),(-?\d+) size (\d+)x(\d+)", text)
+    v = re.findall(r"3D view at (-?\d+),(-?\d+) size (\d+)x(\d+)", text)
+    l = re.findall(r"layer dialog \(with the Log\) at (-?\d+),(-?\d+) size (\d+)x(\d+), (\w+)", text)
+    if not (p and v and l):
+        return None
+    return (p[-1][0] == "docked", tuple(map(int, p[-1][1:])), tuple(map(int, v[-1])), tuple(map(int, l[-1][:4])), l[-1][4])
+
+
+def check_layout(text):
+    """Issue 37 in this MeshLab: the panel docks in the main window beside the 3D view (left of it
+    by default), and MeshLab's layer dialog with its Log stays visible, not under a tab."""
+    b = boxes(text)
+    if not check(b is not None, "the tool logs where its panel, the 3D view and the layer dialog are"):
+        return None
+    docked, panel, view, layers, state = b
+    print("panel %s, view %s, layer dialog %s (%s)" % (panel, view, layers, state), flush=True)
+    check(docked, "the panel docks in MeshLab %s's main window" % version)
+    check(panel[0] + panel[2] <= view[0] + 2, "the panel is left of the 3D view (its default place)")
+    check(not overlap(panel, view), "the panel does not cover the 3D view")
+    check(state == "visible" and not overlap(panel, layers),
+          "MeshLab's layer dialog, with the Log, stays visible beside the panel (not a tab under it)")
+    return view
 
 
 def started_only():
@@ -50,9 +85,13 @@ def started_only():
         check(bool(main_window), "MeshLab's main window appeared (title 'MeshLab %s...')" % version)
         check(not windows("Error while loading plugins"), "no 'Error while loading plugins' dialog (every plugin loaded)")
         check(started, "the Geometric Snake edit tool started on %s ('Started Mode Geometric Snake')" % os.path.basename(mesh))
-        # the panel docks in MeshLab's main window (and says where in the Log), or floats on its own
-        text = open(logpath, errors="replace").read()
-        check("Geometric snake: panel" in text or bool(windows("^Geometric Snake$")), "the tool's panel is shown")
+        # the panel docks in MeshLab's main window and says where in the Log
+        for _ in range(10):
+            text = open(logpath, errors="replace").read()
+            if boxes(text):
+                break
+            time.sleep(0.5)
+        check_layout(text)
         p.terminate()
         try:
             p.wait(10)
@@ -72,6 +111,13 @@ def with_clicks():
     import gui
     gui.WORK = work
     os.environ["GS_SNAKE_AUTOSTART"] = "1"
+    os.environ["GS_SNAKE_PANEL_STATE"] = state_path = os.path.join(work, "panel.json")  # edit_snake_status.cpp
+
+    def panel_state():
+        try:
+            return json.load(open(state_path))
+        except (OSError, ValueError):
+            return None
     local = os.path.join(work, os.path.basename(mesh))
     with open(mesh, "rb") as s, open(local, "wb") as d:  # the tool autosaves beside the mesh
         d.write(s.read())
@@ -85,9 +131,8 @@ def with_clicks():
         check(not windows("Error while loading plugins"), "no 'Error while loading plugins' dialog (every plugin loaded)")
         check(ml.win is not None and bool(windows("MeshLab " + version[:4])),
               "MeshLab's main window is MeshLab %s's" % version)
-        time.sleep(2)  # the tool logs where its panel is once the main window has laid it out
-        panel = gui.panel_geometry(ml.log_text())
-        check(panel is not None and panel[0], "the tool's panel docks in MeshLab's main window (%s)" % (panel,))
+        # the tool logs where its panel is once the main window has laid it out
+        view = check_layout(gui.wait_for(lambda: (lambda t: t if boxes(t) else None)(ml.log_text()), 5) or ml.log_text())
         img = xwd_image.screenshot("01_started.xwd")
         left, right, top, bottom = gui.front_face_extent(img)
         hpx = (right - left) / 2.0 * h  # the front face spans 2 units
@@ -113,7 +158,22 @@ def with_clicks():
               % (s["stats"]["operations"], sum(dm) / len(dm) / h, max(dm) / h))
         runs = gui.run_lines(ml.log_text())
         check(bool(runs) and runs[-1][0] == "converged", "the Log says the Run converged: %s" % (runs[-1:],))
-        xwd_image.screenshot("02_converged.xwd")
+        # The wheel zooms the view with the tool active (issue 37), and the tool stays active: a
+        # click still places a seed.
+        if view:
+            gui.VIEW = view
+            mesh_pixels = lambda img: sum(1 for y in range(gui.gl_box(img)[1], gui.gl_box(img)[3], 3)
+                                          for x in range(gui.gl_box(img)[0], gui.gl_box(img)[2], 3) if gui.is_mesh(img.px(x, y)))
+            before = mesh_pixels(xwd_image.screenshot("02_converged.xwd"))
+            cx, cy = (left + right) // 2, (top + bottom) // 2
+            gui.xdo("mousemove", cx, cy, "click", 4, "click", 4)
+            time.sleep(1.0)
+            after = mesh_pixels(xwd_image.screenshot("03_after_wheel.xwd"))
+            check(after < 0.8 * before, "the wheel zooms the view with the tool active (mesh pixels %d -> %d)" % (before, after))
+            gui.xdo("mousemove", cx + 40, cy, "click", 1)
+            state = gui.wait_for(lambda: (lambda s: s if s and s.get("seeds") == "1 seed" else None)(panel_state()), 5)
+            check(state is not None, "the tool is still active after the wheel: a click places a seed (%s)"
+                  % ((panel_state() or {}).get("seeds"),))
     finally:
         ml.kill()
         if failures:

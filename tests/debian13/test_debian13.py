@@ -7,11 +7,12 @@ trixie = Debian 13, MeshLab 2022.02 (build/debian13/root); forky = Debian 14, Me
     test_debian13.py BUILD_DIR prepare [RELEASE]  # scripts/debian_root.sh: the cached root, the
                                                   # plugins built and installed in it
     test_debian13.py BUILD_DIR filters [RELEASE]  # that MeshLab's library (gs_meshlab_check) loads
-                                                  # and lists the plugins and applies the filters; the
-                                                  # results equal MeshLab 2020.09's (meshlabserver)
+                                                  # and lists the plugins and applies the filters (the
+                                                  # cut too); the results equal MeshLab 2020.09's
+                                                  # (meshlabserver)
     test_debian13.py BUILD_DIR gui [RELEASE]      # that MeshLab's GUI loads every plugin, the edit
-                                                  # tool starts (forky: and docks, and builds and runs
-                                                  # a snake from clicks)
+                                                  # tool starts, its panel docks beside the view and the
+                                                  # Log, clicks build and run a snake, the wheel zooms
 
 Exit status 0 = pass, 77 = skipped (not root: chroot needs it).
 """
@@ -34,7 +35,7 @@ BUILD = os.path.abspath(sys.argv[1])
 MODE = sys.argv[2]
 RELEASE = sys.argv[3] if len(sys.argv) > 3 else "trixie"
 # release: (folder in the build tree, Debian, MeshLab, the GUI test clicks a snake)
-NAME, DEBIAN, VERSION, CLICKS = {"trixie": ("debian13", "Debian 13", "2022.02", False),
+NAME, DEBIAN, VERSION, CLICKS = {"trixie": ("debian13", "Debian 13", "2022.02", True),
                                  "forky": ("forky", "Debian forky", "2025.07", True)}[RELEASE]
 ROOT = os.path.join(BUILD, NAME, "root")
 SCRIPT = os.path.join(SRC, "scripts", "debian_root.sh")
@@ -146,6 +147,71 @@ def run_2020(seeds):
     return log1 + log2 + log3, quality, j, path
 
 
+def cut_root(mesh, curve, moved):
+    """The cut filter through the root's MeshLab library on mlhost.plate_and_square's plate:
+    select inside, split into two layers, and a curve of another mesh refused."""
+    rc, text = in_root(*xvfb_run("640x480x24"), "env", "LD_LIBRARY_PATH=" + os.path.dirname(PLUGIN_DIR),
+                       "/opt/gs/build/tests/meshlab2022/gs_meshlab_check", PLUGIN_DIR, mesh, os.path.dirname(mesh),
+                       *cli_args([(mlhost.FILTER_CUT, {"CurveFile": curve}),
+                                  (mlhost.FILTER_CUT, {"CurveFile": curve, "Split": True}),
+                                  ("!" + mlhost.FILTER_CUT, {"CurveFile": moved})]))
+    print(text)
+    check(rc == 0, "gs_meshlab_check ran the cut filter in MeshLab %s" % VERSION)
+    return text
+
+
+def cut_2020(mesh, curve):
+    """The same select-inside cut through meshlabserver 2020.09: (vertices, selected vertices,
+    faces, area of the faces it marks inside (face quality 1))."""
+    mlx, out = os.path.join(WORK, "cut.mlx"), os.path.join(WORK, "cut_2020.ply")
+    if os.path.exists(out):
+        os.remove(out)
+    mlhost.write_mlx(mlx, [(mlhost.FILTER_CUT, {"CurveFile": curve})])
+    rc, log = mlhost.run_meshlabserver(["-i", mesh, "-o", out, "-m", "vf", "fq", "-s", mlx])
+    check(rc == 0 and os.path.exists(out), "meshlabserver 2020.09 ran the cut filter")
+    if not os.path.exists(out):
+        return None
+    ply = mlhost.read_ply(out)
+    area = 0.0
+    for f in ply.faces:
+        if f["quality"] == 1:
+            a, b, c = (ply.vertices[i] for i in f["vertex_indices"])
+            area += abs((b["x"] - a["x"]) * (c["y"] - a["y"]) - (c["x"] - a["x"]) * (b["y"] - a["y"])) / 2
+    return (len(ply.vertices), [i for i, v in enumerate(ply.vertices) if v["flags"] & mlhost.SELECTED],
+            len(ply.faces), area)
+
+
+def cut():
+    """Issue 34 in this MeshLab: the cut filter selects the inside of a square loop (area 25
+    exactly), splits the plate into two layers, refuses a curve of another mesh; the selection
+    equals MeshLab 2020.09's."""
+    out = "/opt/gs/cut"
+    shutil.rmtree(ROOT + out, ignore_errors=True)
+    os.makedirs(ROOT + out)
+    _, _, data = mlhost.plate_and_square(ROOT + out)
+    data["samples"][1]["position"] = [9, 9, 9]  # a sample off the plate: "made on another mesh"
+    with open(ROOT + out + "/moved.json", "w") as f:
+        json.dump(data, f)
+    text = cut_root(out + "/plate.ply", out + "/square.json", out + "/moved.json")
+    m = re.search(r"^RESULT 1 layers=1 vertices=(\d+)", text, re.M)
+    sel = re.search(r"^SELECTED 1:(.*)$", text, re.M)
+    faces = re.search(r"^FACES 1: faces=(\d+) selected=(\d+) selected_area=(\S+)", text, re.M)
+    check(re.search(r"Cut \(select\) along a closed snake", text) is not None, VERSION + ": the cut filter logs its select")
+    check(faces is not None and abs(float(faces.group(3)) - 25.0) < 1e-5,
+          VERSION + ": select inside selects the square's inside, area %s (25 exactly)" % (faces.group(3) if faces else None))
+    layers = re.findall(r'^LAYER 2 \d+ "([^"]*)" vertices=(\d+) edges=\d+ faces=(\d+)', text, re.M)
+    check(len(layers) == 2 and all(int(f) > 0 for _, _, f in layers),
+          VERSION + ": split adds two layers with faces: %s" % (layers,))
+    check(re.search(r"^ERROR .*made on another mesh", text, re.M) is not None,
+          VERSION + ": a curve of another mesh is refused (\"made on another mesh\")")
+    r20 = cut_2020(ROOT + out + "/plate.ply", ROOT + out + "/square.json")
+    if r20 and m and sel and faces:
+        mine = (int(m.group(1)), [int(x) for x in sel.group(1).split()], int(faces.group(1)))
+        check(mine == r20[:3], "the same cut as 2020.09: %d vertices, %d selected, %d faces (2020.09: %d, %d, %d)"
+              % (mine[0], len(mine[1]), mine[2], r20[0], len(r20[1]), r20[2]))
+        check(abs(r20[3] - float(faces.group(3))) < 1e-5, "the same inside area as 2020.09 (%.6f)" % r20[3])
+
+
 def raw_range(log):
     m = re.search(r"raw range \[([^,\]]+), ([^\]]+)\]", log)
     return (float(m.group(1)), float(m.group(2))) if m else None
@@ -213,6 +279,7 @@ def main():
         check(False, "the %s root exists (run the prepare step)" % DEBIAN)
     elif MODE == "filters":
         filters()
+        cut()
     elif MODE == "gui":
         gui()
     else:

@@ -8,7 +8,8 @@
 //
 // Prints the plugin list, the Log and one "RESULT" line per filter; after the energy filter
 // writes the per-vertex quality to OUT_DIR/quality_<n>.txt, and after every filter the selected
-// vertices ("SELECTED") and the coordinates of each added layer (OUT_DIR/layer_<n>_<k>.txt). A
+// vertices ("SELECTED"), the selected faces and their area ("FACES") and the coordinates of each
+// added layer (OUT_DIR/layer_<n>_<k>.txt). A
 // filter named "!NAME" must fail (MeshLab's MLException), its message is printed. Exit status 0 = every check held.
 
 #include <cstdio>
@@ -179,6 +180,15 @@ int main(int argc, char **argv)
 		for (size_t i = 0; i < m.vert.size(); ++i)
 			if (!m.vert[i].IsD() && m.vert[i].IsS()) std::printf(" %zu", i);
 		std::printf("\n");
+		// The faces a filter selected (the cut's "select" mode) and their area.
+		int selectedFaces = 0;
+		double selectedArea = 0;
+		for (const auto &f : m.face)
+			if (!f.IsD() && f.IsS()) {
+				++selectedFaces;
+				selectedArea += vcg::DoubleArea(f) / 2;
+			}
+		std::printf("FACES %d: faces=%d selected=%d selected_area=%.9g\n", n, m.fn, selectedFaces, selectedArea);
 		int k = 0;
 		for (MeshModel &layer : md.meshIterator()) {
 			if (k++ == 0) continue;
@@ -187,8 +197,8 @@ int main(int argc, char **argv)
 			l.precision(9);
 			for (const auto &v : layer.cm.vert)
 				if (!v.IsD()) l << v.cP()[0] << " " << v.cP()[1] << " " << v.cP()[2] << "\n";
-			std::printf("LAYER %d %d \"%s\" vertices=%d edges=%d file=%s\n", n, k - 1, qUtf8Printable(layer.label()),
-			            layer.cm.vn, layer.cm.en, qUtf8Printable(lpath));
+			std::printf("LAYER %d %d \"%s\" vertices=%d edges=%d faces=%d file=%s\n", n, k - 1,
+			            qUtf8Printable(layer.label()), layer.cm.vn, layer.cm.en, layer.cm.fn, qUtf8Printable(lpath));
 		}
 	}
 	std::printf("%s: %d check(s) failed\n", failures ? "FAILED" : "OK", failures);
