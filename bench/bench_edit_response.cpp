@@ -32,18 +32,12 @@ typedef vcg::GridStaticPtr<CFaceO, Scalarm> Grid;
 
 CMeshO &Mesh()
 {
-    static std::unique_ptr<CMeshO> m;
-    if (!m) {
-        m.reset(new CMeshO);
-        const std::string path = std::string(GS_SHARED_MESH_DIR) + "/bunny00.off";
-        if (!gs_test::LoadMesh(*m, path)) {
-            std::fprintf(stderr, "cannot load %s\n", path.c_str());
-            std::exit(1);
-        }
-        gs_test::Subdivide(*m, 1200000);
-        gs_test::EnableSnakeAdjacency(*m);
-    }
-    return *m;
+    static CMeshO &m = [] () -> CMeshO & {
+        CMeshO &b = gs_bench::SubdividedBunny(1200000);
+        gs_test::EnableSnakeAdjacency(b);
+        return b;
+    }();
+    return m;
 }
 
 Grid &PickGrid()

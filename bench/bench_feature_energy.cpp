@@ -10,6 +10,7 @@
 #include <common/ml_mesh_type.h>
 
 #include "generated_meshes.h"
+#include "snake_bench_util.h"
 #include "vcg_ext/energy/feature_energy.h"
 #include "vcg_ext/paths/seed_path.h"
 
@@ -18,22 +19,15 @@ namespace {
 using vcg::tri::FeatureEnergyType;
 typedef vcg::tri::FeatureEnergy<CMeshO> FE;
 
-// Loaded and subdivided once (not timed).
+// As a plain MeshLab layer: no optional component needed.
 CMeshO &BigBunny()
 {
-    static std::unique_ptr<CMeshO> m;
-    if (!m) {
-        m.reset(new CMeshO);
-        const std::string path = std::string(GS_SHARED_MESH_DIR) + "/bunny00.off";
-        if (!gs_test::LoadMesh(*m, path)) {
-            std::fprintf(stderr, "cannot load %s\n", path.c_str());
-            std::exit(1);
-        }
-        gs_test::Subdivide(*m, 1000000);
-        m->face.DisableFFAdjacency(); // as a plain MeshLab layer: no optional component needed
-        std::fprintf(stderr, "bunny00 subdivided: %d vertices, %d faces\n", m->vn, m->fn);
-    }
-    return *m;
+    static CMeshO &m = [] () -> CMeshO & {
+        CMeshO &b = gs_bench::SubdividedBunny(1000000);
+        b.face.DisableFFAdjacency();
+        return b;
+    }();
+    return m;
 }
 
 void BM_Energy(benchmark::State &state, FeatureEnergyType type, int steps)

@@ -7,12 +7,35 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <map>
+#include <memory>
+#include <string>
 #include <tuple>
 
 #include <snake_test_util.h>
 
 namespace gs_bench {
+
+/// bunny00 of the shared meshes subdivided to at least `faces` faces (gs_test::Subdivide): the
+/// million-face mesh of the speed goals. Loaded once per size, not timed; exits if it is missing.
+inline CMeshO &SubdividedBunny(int faces)
+{
+    static std::map<int, std::unique_ptr<CMeshO>> meshes;
+    std::unique_ptr<CMeshO> &m = meshes[faces];
+    if (!m) {
+        m.reset(new CMeshO);
+        const std::string path = std::string(GS_SHARED_MESH_DIR) + "/bunny00.off";
+        if (!gs_test::LoadMesh(*m, path)) {
+            std::fprintf(stderr, "cannot load %s\n", path.c_str());
+            std::exit(1);
+        }
+        gs_test::Subdivide(*m, faces);
+        std::fprintf(stderr, "bunny00 subdivided: %d vertices, %d faces\n", m->vn, m->fn);
+    }
+    return *m;
+}
 
 /// Mean distance (in the snake's length unit) of the samples to a polyline.
 inline double MeanDistance(const std::vector<vcg::Point3d> &pts, const std::vector<vcg::Point3d> &line, double unit)

@@ -27,10 +27,10 @@ cd "$here"
 echo "[sanitize] configure + build (build-tsan/, clang, TSan: the tests that use a second thread)"
 CC=clang CXX=clang++ cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGS_SANITIZE_THREAD=ON \
   -DGS_BUILD_PLUGINS=OFF -DGS_BUILD_BENCH=OFF -DGS_BUILD_CLI=OFF -DMESHLAB_SOURCE_DIR="$src"
-cmake --build build-tsan -j2 --target test_feature_energy test_geometric_snake
+cmake --build build-tsan -j2 --target test_feature_energy test_geometric_snake test_snake_controller
 cd build-tsan
 export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:exitcode=66}
 n=$(ctest -N -R 'OnASecondThread$' | sed -n 's/^Total Tests: //p')
-[ "${n:-0}" -ge 3 ] || { echo "[sanitize] expected the *OnASecondThread tests in build-tsan/, found ${n:-0}"; exit 1; }
+[ "${n:-0}" -ge 4 ] || { echo "[sanitize] expected the *OnASecondThread tests in build-tsan/, found ${n:-0}"; exit 1; }
 ctest --output-on-failure -R 'OnASecondThread$' "$@"
 echo "[sanitize] sanitizer unit tests and fuzzers clean"

@@ -43,6 +43,15 @@ std::vector<int> EdgeSeeds(const CMeshO &m, double off)
     return gs_test::NearestVertices(m, pts);
 }
 
+// An open snake built from those seeds, 2 edge lengths off the edge, and run for `ops`
+// operations (none: built only).
+void BuildEdgeSnake(Controller &c, const CMeshO &m, int ops = 0)
+{
+    c.SetSeeds(EdgeSeeds(m, 2.0));
+    c.CloseSeeds(false);
+    if (ops > 0) c.Run(ops);
+}
+
 double MeanEdgeError(Controller &c, int snake)
 {
     auto pos = c.Get(snake).positions();
@@ -213,8 +222,7 @@ TEST(SnakeController, PinHoldsExactlyAndUndoRedoRestore)
     CMeshO m;
     MakeCube(m, 4);
     Controller c(m);
-    c.SetSeeds(EdgeSeeds(m, 2.0));
-    c.CloseSeeds(false);
+    BuildEdgeSnake(c, m);
     Controller::Snake &s = c.Get(0);
     int k = s.SampleCount() / 2;
 
@@ -273,8 +281,7 @@ TEST(SnakeController, UndoTakesBackWholeRunsAndDrags)
     CMeshO m;
     MakeCube(m, 4);
     Controller c(m);
-    c.SetSeeds(EdgeSeeds(m, 2.0));
-    c.CloseSeeds(false);
+    BuildEdgeSnake(c, m);
     const int built = int(c.UndoSteps()); // the seeds, the Build
     EXPECT_EQ(built, 2);
     int ops = c.Run(2000);
@@ -331,8 +338,7 @@ TEST(SnakeController, UndoHistoryIsBoundedByMemory)
     CMeshO m;
     MakeCube(m, 4);
     Controller c(m);
-    c.SetSeeds(EdgeSeeds(m, 2.0));
-    c.CloseSeeds(false);
+    BuildEdgeSnake(c, m);
     for (int i = 0; i < 300; ++i) c.Step();
     EXPECT_EQ(c.UndoSteps(), 302u) << "more than 200 steps are kept under the default 100 MB";
     EXPECT_LT(c.UndoBytes(), size_t(100) << 20);
@@ -580,9 +586,7 @@ TEST(SnakeController, BuildingASecondSnakeKeepsTheFirstConverged)
     CMeshO m;
     MakeCube(m, 4);
     Controller c(m);
-    c.SetSeeds(EdgeSeeds(m, 2.0));
-    c.CloseSeeds(false);
-    c.Run(2000);
+    BuildEdgeSnake(c, m, 2000);
     ASSERT_TRUE(c.Get(0).Converged());
     SnakeParams p = c.Params();
     p.alpha = 0.2;
@@ -625,9 +629,7 @@ TEST(SnakeController, SelectionChangesAreUndoneInOrderWithTheSnakes)
     CMeshO m;
     MakeCube(m, 4);
     Controller c(m);
-    c.SetSeeds(EdgeSeeds(m, 2.0));
-    c.CloseSeeds(false);
-    c.Run(2000);
+    BuildEdgeSnake(c, m, 2000);
     ASSERT_EQ(c.UndoLabel(), "run");
     const std::string ran = c.ToJson().dump();
     auto selected = [&m] {
@@ -730,17 +732,15 @@ TEST(SnakeController, SessionMapsOntoTheMeshAfterACut)
 
 // The edit tool prepares the energy and the surface on another thread when it starts (issue
 // 37): the snake built afterwards is the one built without it, the energy settings chosen
-// meanwhile win, and a controller dropped while preparing waits for the thread (ASan).
-TEST(SnakeController, PreparingInBackgroundBuildsTheSameSnake)
+// meanwhile win, and a controller dropped while preparing waits for the thread (ASan, TSan).
+TEST(SnakeController, PreparingInBackgroundBuildsTheSameSnakeOnASecondThread)
 {
     CMeshO m;
     MakeCube(m, 4);
     std::vector<vcg::Point3d> plain;
     {
         Controller c(m);
-        c.SetSeeds(EdgeSeeds(m, 2.0));
-        c.CloseSeeds(false);
-        c.Run(50);
+        BuildEdgeSnake(c, m, 50);
         plain = c.Get(0).positions();
     }
     Controller c(m);
