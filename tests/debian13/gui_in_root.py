@@ -79,6 +79,7 @@ def view_box(img):
 
 
 def mesh_pixels(img, box):
+    import gui  # tests/host, on the path once with_clicks runs
     x0, y0, x1, y1 = box
     return sum(1 for y in range(y0, y1, 3) for x in range(x0, x1, 3) if gui.is_mesh(img.px(x, y)))
 
