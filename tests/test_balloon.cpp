@@ -1,7 +1,8 @@
 // The side of a closed snake the tool shows as inside (issue 33: GeometricSnake::InsideDirections,
 // the side a negative Balloon deflates the loop towards, a positive one inflates it away from):
 // on a plate with two concentric circular ridges (radii 12 and 28 edge lengths), a loop seeded
-// on the circle of radius 20 either way round has its inside towards the centre.
+// on the circle of radius 20 either way round has its inside towards the centre. And the outcome
+// Balloon's sign gives a loop seeded outside a single ridge (BalloonOutcome).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -85,8 +86,9 @@ std::shared_ptr<Surface> MakeInnerRidge(CMeshO &m)
 // edge lengths outside a ridge (radius 12, seeds on radius 22) ends on the ridge inside it with a
 // negative Balloon (-0.3) and inflates away from it with a positive one (+0.3). Measured (150
 // operations, the limit, for both: a ballooned loop never quite stops; 1.7 s CPU in all): -0.3
-// mean radius 10.7, at most 2.5 off the ridge; +0.3 mean radius 30.7; 0 converges on the ridge after 98 operations
-// (mean radius 11.9, at most 0.41 off: the coarse-to-fine capture reaches it without Balloon).
+// mean radius 10.7, at most 2.5 off the ridge; +0.3 mean radius 30.7; 0 converges on the ridge
+// after 98 operations (mean radius 11.9, at most 0.41 off: the coarse-to-fine capture reaches it
+// without Balloon).
 // Not asserted, as it does not hold today (issue 33): a positive Balloon from 18 edge lengths
 // inside a ridge of radius 28 (seeds on radius 10) passes it (mean radius 31.8, 13.4 off), and a
 // negative one from inside does not leave it (the capture pulls the loop out onto it).

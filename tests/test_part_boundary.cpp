@@ -1,6 +1,7 @@
 // Closed snakes around parts with the part-boundary energy (issue 33): generated surfaces whose
-// part boundary is known exactly (a waist, the rim of a bump, the base of a handle), with and without noise, and a
-// small version of the evaluation on part boundaries drawn by people (bench/eval/gs_parts).
+// part boundary is known exactly (a waist, the rim of a bump, the base of a handle), with and
+// without noise, and a small version of the evaluation on part boundaries drawn by people
+// (bench/eval/gs_parts).
 
 #include <gtest/gtest.h>
 
@@ -317,7 +318,7 @@ TEST(PartBoundaryEnergy, ReadWithoutThePyramid)
 // without noise of 3 % of the tube's radius. Measured: seeded on the slab, mean 0.33-0.57 h, max
 // 0.68-1.02 h off the base; seeded on the handle, mean 0.90-1.20 h, max 1.47-1.77 h: round this
 // sharp right-angle crease the energy is 0 over a band 4 h wide (from 2 h out on the slab to
-// 1 h up the handle, the quadric fit over 3 h; mean energy by 1 h bands), and a loop stops where
+// 2 h up the handle, the quadric fit over 3 h; mean energy by 1 h bands), and a loop stops where
 // it enters the band (a limit of the energy, issue 33). The bounds tell a loop in that band from
 // one left where it was seeded (3 h off).
 TEST(PartBoundaryLoop, SettlesOnTheBaseOfAHandle)
