@@ -14,13 +14,10 @@ base, which converges beside the base, a known weakness: tests/test_part_scans.c
 stops with its reason in the Log, the JSON and in red in the status line. The screenshots of the
 lion's eye are the source of docs/img/part_loop_lion_eye.png.
 """
-import json
 import math
 import os
 import re
-import shutil
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui as g  # noqa: E402  (the MeshLab driver, the tool's JSON and Log)
@@ -89,36 +86,19 @@ def run_case(name, mesh_name, seeds, round_centre):
     src = os.path.join(MESHES, mesh_name)
     if not check(os.path.exists(src), "%s is there" % os.path.normpath(src)):
         return
-    mesh = os.path.join(g.WORK, mesh_name)
-    shutil.copyfile(src, mesh)
-    head = open(mesh).read(200).split()
-    json.dump({"format": "geometric-snake-session", "version": 1,
-               "mesh": {"vertices": int(head[1]), "faces": int(head[2])},
-               "energy": {"type": PART_BOUNDARY, "smoothing": 2}, "seeds": seeds, "snakes": []},
-              open(mesh + ".snakes.json", "w"))
+    mesh = g.session_with_seeds(src, seeds, {"type": PART_BOUNDARY, "smoothing": 2})
     clicks = [off_vertices(mesh)[s] for s in seeds]
     auto = os.path.join(g.WORK, "auto.json")
-    if os.path.exists(auto):
-        os.remove(auto)
     ml = g.MeshLab(mesh, name)
     try:
-        if not check(ml.start_tool(), "%s: the tool starts with the restored seeds and energy" % name):
-            return
-        g.focus_view()
-        xdo("key", "shift+Return")
-        built = wait_for(lambda: g.closed_snake(auto), 30)
-        if not check(bool(built), "%s: Shift+Enter builds a closed snake" % name):
+        built = g.build_closed_from_session(ml, name, auto, "seeds and energy")
+        if not built:
             return
         start = samples(built)[0]
         n = len(start["samples"])
         len0 = length(start["polyline"])
         g.screenshot("%s_built.png" % name)
-        t0 = time.time()
-        xdo("key", "r")
-        lines = wait_for(lambda: run_lines(ml.log_text()), TIME_LIMIT + 20)
-        waited = time.time() - t0
-        time.sleep(1.0)
-        g.screenshot("%s.png" % name)
+        lines, waited = g.run_until_logged(ml, name, TIME_LIMIT + 20)
         if not check(bool(lines), "%s: the Run ends by itself (waited %.1f s)" % (name, waited)):
             xdo("key", "Escape")
             return
@@ -129,8 +109,7 @@ def run_case(name, mesh_name, seeds, round_centre):
         check(ops <= MAX_OPERATIONS and wall <= TIME_LIMIT + 1,
               "%s: within Max operations and the time limit (%d operations, %.1f s)" % (name, ops, wall))
         check(len(run_lines(text)) == 1, "%s: one Run line in the Log" % name)
-        j = wait_for(lambda: (lambda s: s if s and samples(s) and samples(s)[0].get("stats", {}).get("stop") not in
-                              (None, "running") else None)(snakes_of(auto)), 10)
+        j = g.stopped_snake(auto)
         if not check(bool(j), "%s: the snake's JSON after the Run" % name):
             return
         final = samples(j)[0]
