@@ -547,3 +547,13 @@ def build_closed_from_session(ml, name, auto, what="seeds"):
     xdo("key", "shift+Return")
     built = wait_for(lambda: closed_snake(auto), 30)
     return built if check(bool(built), "%s: Shift+Enter builds a closed snake" % name) else None
+
+
+def status_reds(text, name):
+    """Red pixels (the stop colour) in the panel's status line on the screenshot <name>.png, the
+    panel's place read from the Log `text`; None if the Log does not give it (a check failed)."""
+    pg = panel_geometry(text)
+    if not check(bool(pg), "%s: the panel's place is in the Log" % name):
+        return None
+    _, px, py, pw, ph = pg
+    return red_pixels(os.path.join(WORK, "%s.png" % name), px, py + 20, pw, 120)

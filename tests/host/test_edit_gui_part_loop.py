@@ -21,7 +21,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui as g  # noqa: E402  (the MeshLab driver, the tool's JSON and Log)
-from gui import check, log, panel_geometry, red_pixels, run_lines, samples, snakes_of, wait_for, xdo  # noqa: E402
+from gui import check, log, run_lines, samples, snakes_of, wait_for, xdo  # noqa: E402
 
 MESHES = os.path.join(g.DATA, "..", "..", "shared", "data", "meshes")
 MAX_OPERATIONS, TIME_LIMIT = 500, 60.0  # the panel's defaults
@@ -123,11 +123,7 @@ def run_case(name, mesh_name, seeds, round_centre):
         log("%s: %d samples, Run %s after %d operations, compute %.3f s, wall %.3f s, reason %s; length %.2f of "
             "the start's, winding %.2f round the clicks' centre" % (name, n, state, ops, comp, wall, reason, ratio, wind))
         check(stop == reason, "%s: the snake's JSON says the same (stats.stop = %s, Log: %s)" % (name, stop, reason))
-        pg = panel_geometry(text)
-        reds = None
-        if check(bool(pg), "%s: the panel's place is in the Log" % name):
-            _, px, py, pw, ph = pg
-            reds = red_pixels(os.path.join(g.WORK, "%s.png" % name), px, py + 20, pw, 120)
+        reds = g.status_reds(text, name)
         if state == "converged":
             check(ratio > 0.4, "%s: converged round the part, not at a point (length %.2f of the start's)" % (name, ratio))
             if round_centre:

@@ -18,7 +18,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui as g  # noqa: E402  (the MeshLab driver, the tool's JSON and Log)
-from gui import check, log, panel_geometry, red_pixels, run_lines, samples, xdo  # noqa: E402
+from gui import check, log, run_lines, samples, xdo  # noqa: E402
 
 MESHES = os.path.join(g.DATA, "..", "..", "shared", "data", "meshes")
 MAX_OPERATIONS, TIME_LIMIT = 500, 60.0  # the panel's defaults
@@ -65,10 +65,8 @@ def run_case(name, mesh_name, seeds, expect):
         j = g.stopped_snake(auto)
         stop = samples(j)[0]["stats"].get("stop") if j else None
         check(stop == reason, "%s: the snake's JSON says the same (stats.stop = %s)" % (name, stop))
-        pg = panel_geometry(text)
-        if check(bool(pg), "%s: the panel's place is in the Log" % name):
-            _, px, py, pw, ph = pg
-            reds = red_pixels(os.path.join(g.WORK, "%s.png" % name), px, py + 20, pw, 120)
+        reds = g.status_reds(text, name)
+        if reds is not None:
             check(reds > 40, "%s: the status line shows the stop in red (%d red pixels)" % (name, reds))
     finally:
         ml.kill()
