@@ -336,8 +336,8 @@ TEST(PartBoundaryEnergy, ReadWithoutThePyramid)
 // it enters the band (a limit of the energy, issue 33). With noise (the noise differs between
 // gcc and clang, which evaluate its random draws in another order): on the slab mean 0.53-0.57 h,
 // max 0.83-1.02 h with gcc, 0.75-0.81 and 1.32-1.33 h with clang's ASan build; on the handle
-// mean 0.90-1.20 h, max 1.64-1.77 h with gcc, mean 1.30 and 1.58 h, max 1.85 and 4.54 h (one
-// stretch in a noise dent beside the base) with clang. The bounds tell a loop in that band from
+// mean 0.90-1.20 h, max 1.64-1.77 h with gcc, mean 1.30 and 1.58 h, max 1.85 and 4.54 h (a
+// stretch of that loop only) with clang. The bounds tell a loop in that band from
 // one left where it was seeded (3 h off).
 TEST(PartBoundaryLoop, SettlesOnTheBaseOfAHandle)
 {
