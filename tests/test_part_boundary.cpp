@@ -1,6 +1,7 @@
 // Closed snakes around parts with the part-boundary energy (issue 33): generated surfaces whose
-// part boundary is known exactly (a waist, the rim of a bump), with and without noise, and a
-// small version of the evaluation on part boundaries drawn by people (bench/eval/gs_parts).
+// part boundary is known exactly (a waist, the rim of a bump, the base of a handle), with and
+// without noise, and a small version of the evaluation on part boundaries drawn by people
+// (bench/eval/gs_parts).
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,8 @@
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/energy/part_boundary_energy.h>
+#include <vcg/complex/algorithms/create/marching_cubes.h>
+#include <vcg/complex/algorithms/create/mc_trivial_walker.h>
 
 #ifndef GS_SEGMENTATION_DIR
 #define GS_SEGMENTATION_DIR GS_DATA_DIR "/../../shared/data/segmentation"
@@ -106,6 +109,73 @@ double BumpRim()
         if (k < kBest) kBest = k, best = phi;
     }
     return best;
+}
+
+// A torus-like handle joined to a body: the upper half of a torus (axis y, centre-line radius
+// kHandleR in the xz-plane, tube radius kHandleTube) standing on a slab (|x| <= 3.5, |y| <= 2,
+// -1 <= z <= 0), the union of the two solids' signed distances meshed by vcglib's marching
+// cubes (voxel 0.1: slivers and uneven edges, as a reconstructed scan has). The
+// handle meets the slab's top at right angles along two circles of radius kHandleTube round
+// (+-kHandleR, 0, 0) in z = 0: its base loops, concave creases, the exact answer. A loop round one
+// foot does not cut the surface in two (the handle is a handle): nothing inside it to shrink into.
+const double kHandleR = 2.0, kHandleTube = 0.7;
+
+double HandleDistance(const P3 &p)
+{
+    const double torus = std::hypot(std::hypot(p[0], p[2]) - kHandleR, p[1]) - kHandleTube;
+    const double handle = std::max(torus, -p[2] - 0.5); // its upper half (the rest is in the slab)
+    const P3 q(std::fabs(p[0]) - 3.5, std::fabs(p[1]) - 2.0, std::fabs(p[2] + 0.5) - 0.5);
+    const P3 qo(std::max(q[0], 0.0), std::max(q[1], 0.0), std::max(q[2], 0.0));
+    const double slab = qo.Norm() + std::min(std::max(q[0], std::max(q[1], q[2])), 0.0);
+    return std::min(handle, slab);
+}
+
+typedef vcg::SimpleVolume<vcg::SimpleVoxel<float>> Volume;
+
+/// vcglib's TrivialWalker never frees its slice buffers (LeakSanitizer): this one does.
+struct Walker : vcg::tri::TrivialWalker<CMeshO, Volume>
+{
+    ~Walker()
+    {
+        if (_slice_dimension == 0) return;
+        delete[] _x_cs;
+        delete[] _y_cs;
+        delete[] _z_cs;
+        delete[] _x_ns;
+        delete[] _z_ns;
+    }
+};
+
+void MakeHandleOnSlab(CMeshO &m, double noise)
+{
+    typedef vcg::tri::MarchingCubes<CMeshO, Walker> MC;
+    const double step = 0.1;
+    const vcg::Box3f box(vcg::Point3f(-3.83f, -2.27f, -1.35f), vcg::Point3f(3.77f, 2.33f, 2.95f));
+    const vcg::Point3i n(int(std::lround(7.6 / step)) + 1, int(std::lround(4.6 / step)) + 1, int(std::lround(4.3 / step)) + 1);
+    Volume vol;
+    vol.Init(n, box);
+    for (int i = 0; i < n[0]; ++i)
+        for (int j = 0; j < n[1]; ++j)
+            for (int k = 0; k < n[2]; ++k)
+                vol.Val(i, j, k) = float(HandleDistance(P3(box.min[0] + i * step, box.min[1] + j * step, box.min[2] + k * step)));
+    Walker walker;
+    MC mc(m, walker);
+    walker.BuildMesh<MC>(m, vol, mc, 0);
+    vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m);
+    vcg::tri::Clean<CMeshO>::RemoveDegenerateFace(m);
+    vcg::tri::Clean<CMeshO>::RemoveZeroAreaFace(m);
+    vcg::tri::Clean<CMeshO>::RemoveUnreferencedVertex(m);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+    if (noise > 0) gs_test::AddVertexNoise(m, noise * kHandleTube / gs_test::MedianEdgeLength(m), 7);
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+}
+
+/// Distance of x to the handle's base loop round (side * kHandleR, 0, 0).
+double OffHandleBase(const P3 &x, int side)
+{
+    return std::hypot(x[2], std::hypot(x[0] - side * kHandleR, x[1]) - kHandleTube);
 }
 
 } // namespace
@@ -255,4 +325,66 @@ TEST(PartBoundaryEnergy, ReadWithoutThePyramid)
     EXPECT_EQ(src.EnsureSurface()->Levels(), 1);
     src.UseQuality();
     EXPECT_GT(src.EnsureSurface()->Levels(), 1);
+}
+
+// The torus-like handle: closed snakes seeded 3 edge lengths off either base loop, on the handle
+// or on the slab, end round the base loop (length 0.99-1.15 of the base's), with and without
+// noise of 3 % of the tube's radius. Measured without noise: seeded on the slab, mean 0.33-0.49 h,
+// max 0.68-0.89 h off the base; seeded on the handle, mean 1.13-1.17 h, max 1.47-1.50 h: round
+// this sharp right-angle crease the energy is 0 over a band 4 h wide (from 2 h out on the slab to
+// 2 h up the handle, the quadric fit over 3 h; mean energy by 1 h bands), and a loop stops where
+// it enters the band (a limit of the energy, issue 33). With noise (the noise differs between
+// gcc and clang, which evaluate its random draws in another order): on the slab mean 0.53-0.57 h,
+// max 0.83-1.02 h with gcc, 0.75-0.81 and 1.32-1.33 h with clang's ASan build; on the handle
+// mean 0.90-1.20 h, max 1.64-1.77 h with gcc, mean 1.30 and 1.58 h, max 1.85 and 4.54 h (a
+// stretch of that loop only) with clang. The bounds tell a loop in that band from
+// one left where it was seeded (3 h off).
+TEST(PartBoundaryLoop, SettlesOnTheBaseOfAHandle)
+{
+    for (double noise : {0.0, 0.03}) {
+        CMeshO m;
+        MakeHandleOnSlab(m, noise);
+        ASSERT_GT(m.fn, 5000);
+        auto r = vcg::tri::MeshValidation<CMeshO>::Inspect(m);
+        EXPECT_EQ(r.nonManifoldEdges, 0);
+        EXPECT_EQ(r.borderEdges, 0);
+        EXPECT_EQ(r.components, 1);
+        auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+        const double h = surf->MeanEdge();
+        for (int foot : {-1, 1})
+            for (int seedSide : {1, -1}) { // on the handle, on the slab
+                std::vector<P3> pts;
+                for (int i = 0; i < 8; ++i) {
+                    const double a = 2 * M_PI * i / 8;
+                    if (seedSide > 0) { // the tube's cross-section 3 h up the handle from the foot
+                        const double t = 3 * h / kHandleR, rc = kHandleR * std::cos(t);
+                        const P3 c(foot * rc, 0, kHandleR * std::sin(t)), er(foot * std::cos(t), 0, std::sin(t));
+                        pts.push_back(c + er * (kHandleTube * std::cos(a)) + P3(0, kHandleTube * std::sin(a), 0));
+                    } else { // a circle 3 h out from the foot on the slab's top
+                        pts.push_back(P3(foot * kHandleR + (kHandleTube + 3 * h) * std::cos(a),
+                                         (kHandleTube + 3 * h) * std::sin(a), 0));
+                    }
+                }
+                Snake s(surf);
+                s.InitFromSeeds(gs_test::NearestVertices(m, pts), true);
+                s.Run(400);
+                const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
+                double mean = 0, mx = 0;
+                for (const P3 &x : loop) {
+                    const double d = OffHandleBase(x, foot) / h;
+                    mean += d / loop.size();
+                    mx = std::max(mx, d);
+                }
+                const double ratio = gs_parts::LoopLength(loop) / (2 * M_PI * kHandleTube);
+                std::printf("handle (%d faces, h %.3f), noise %.2f, foot %+d, seeds %s: off the base mean %.2f h, max "
+                            "%.2f h, length %.2f of the base's, %d operations, stop %s\n", m.fn, h, noise, foot,
+                            seedSide > 0 ? "on the handle" : "on the slab", mean, mx, ratio, s.Stats().operations,
+                            SnakeStopKey(s.Stats().stop));
+                EXPECT_FALSE(s.Stats().stopped);
+                EXPECT_LT(mean, noise > 0 ? 2.0 : 1.5);
+                EXPECT_LT(mx, noise > 0 ? 5.0 : 2.0);
+                EXPECT_GT(ratio, 0.9);
+                EXPECT_LT(ratio, 1.25);
+            }
+    }
 }

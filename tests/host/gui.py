@@ -500,3 +500,60 @@ def drag(x, y, dx, dy, steps, pause=0.05):
         xdo("mousemove", int(round(x + dx * k / steps)), int(round(y + dy * k / steps)))
         time.sleep(pause)
     xdo("mouseup", 1)
+
+
+def session_with_seeds(src, seeds, energy=None):
+    """A copy of mesh `src` (an OFF file) in the work folder with a session file next to it that
+    holds `seeds` (vertex indices) and, if given, the energy settings (e.g. {"type": 4,
+    "smoothing": 2}), as the tool saves them: the tool restores both when it starts. The copy's path."""
+    mesh = os.path.join(WORK, os.path.basename(src))
+    shutil.copyfile(src, mesh)
+    head = open(mesh).read(200).split()
+    s = {"format": "geometric-snake-session", "version": 1,
+         "mesh": {"vertices": int(head[1]), "faces": int(head[2])}, "seeds": seeds, "snakes": []}
+    if energy:
+        s["energy"] = energy
+    json.dump(s, open(mesh + ".snakes.json", "w"))
+    return mesh
+
+
+def run_until_logged(ml, name, timeout):
+    """Presses R and waits for the tool's Run line in the Log (at most `timeout` s), then
+    photographs the screen (<name>.png): (the run_lines() of the Log, seconds waited)."""
+    t0 = time.time()
+    xdo("key", "r")
+    lines = wait_for(lambda: run_lines(ml.log_text()), timeout)
+    waited = time.time() - t0
+    time.sleep(1.0)
+    screenshot("%s.png" % name)
+    return lines, waited
+
+
+def stopped_snake(auto, timeout=10):
+    """The tool's JSON at `auto` once its snake's stats.stop says why its Run ended, else None."""
+    return wait_for(lambda: (lambda s: s if s and samples(s) and samples(s)[0].get("stats", {}).get("stop") not in
+                             (None, "running") else None)(snakes_of(auto)), timeout)
+
+
+def build_closed_from_session(ml, name, auto, what="seeds"):
+    """Starts the tool (it restores the session's seeds), focuses the view and presses Shift+Enter:
+    the tool's JSON (auto-exported to `auto`) once it holds the closed snake, else None (a check
+    failed)."""
+    if os.path.exists(auto):
+        os.remove(auto)
+    if not check(ml.start_tool(), "%s: the tool starts with the restored %s" % (name, what)):
+        return None
+    focus_view()
+    xdo("key", "shift+Return")
+    built = wait_for(lambda: closed_snake(auto), 30)
+    return built if check(bool(built), "%s: Shift+Enter builds a closed snake" % name) else None
+
+
+def status_reds(text, name):
+    """Red pixels (the stop colour) in the panel's status line on the screenshot <name>.png, the
+    panel's place read from the Log `text`; None if the Log does not give it (a check failed)."""
+    pg = panel_geometry(text)
+    if not check(bool(pg), "%s: the panel's place is in the Log" % name):
+        return None
+    _, px, py, pw, ph = pg
+    return red_pixels(os.path.join(WORK, "%s.png" % name), px, py + 20, pw, 120)

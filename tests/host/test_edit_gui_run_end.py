@@ -12,16 +12,13 @@ The Run must end by itself within Max operations (the panel's default, 500) and 
 snake's JSON (stats.stop) and in red in the panel's status line. Before the fix both Runs never
 ended (the test waits the time limit and a margin, then fails).
 """
-import json
 import os
 import re
-import shutil
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui as g  # noqa: E402  (the MeshLab driver, the tool's JSON and Log)
-from gui import check, log, panel_geometry, red_pixels, run_lines, samples, snakes_of, wait_for, xdo  # noqa: E402
+from gui import check, log, run_lines, samples, xdo  # noqa: E402
 
 MESHES = os.path.join(g.DATA, "..", "..", "shared", "data", "meshes")
 MAX_OPERATIONS, TIME_LIMIT = 500, 60.0  # the panel's defaults
@@ -41,32 +38,16 @@ def run_case(name, mesh_name, seeds, expect):
     src = os.path.join(MESHES, mesh_name)
     if not check(os.path.exists(src), "%s is there" % os.path.normpath(src)):
         return
-    mesh = os.path.join(g.WORK, mesh_name)
-    shutil.copyfile(src, mesh)
-    head = open(mesh).read(200).split()
-    json.dump({"format": "geometric-snake-session", "version": 1,
-               "mesh": {"vertices": int(head[1]), "faces": int(head[2])}, "seeds": seeds, "snakes": []},
-              open(mesh + ".snakes.json", "w"))
+    mesh = g.session_with_seeds(src, seeds)
     auto = os.path.join(g.WORK, "auto.json")
-    if os.path.exists(auto):
-        os.remove(auto)
     ml = g.MeshLab(mesh, name)
     try:
-        if not check(ml.start_tool(), "%s: the tool starts with the restored seeds" % name):
-            return
-        g.focus_view()
-        xdo("key", "shift+Return")
-        built = wait_for(lambda: g.closed_snake(auto), 30)
-        if not check(bool(built), "%s: Shift+Enter builds a closed snake" % name):
+        built = g.build_closed_from_session(ml, name, auto)
+        if not built:
             return
         n = len(samples(built)[0]["samples"])
-        t0 = time.time()
-        xdo("key", "r")
         # before the fix the Run never ended: it is given the time limit and a margin, no more
-        lines = wait_for(lambda: run_lines(ml.log_text()), TIME_LIMIT + 20)
-        waited = time.time() - t0
-        time.sleep(1.0)
-        g.screenshot("%s.png" % name)
+        lines, waited = g.run_until_logged(ml, name, TIME_LIMIT + 20)
         if not check(bool(lines), "%s: the Run ends by itself (waited %.1f s)" % (name, waited)):
             xdo("key", "Escape")
             return
@@ -81,14 +62,11 @@ def run_case(name, mesh_name, seeds, expect):
         check(state == "stopped" and reason in expect,
               "%s: the Log says the Run stopped and why (%s, %s; expected %s)" % (name, state, reason, "/".join(expect)))
         check(len(run_lines(text)) == 1, "%s: one Run line in the Log" % name)
-        j = wait_for(lambda: (lambda s: s if s and samples(s) and samples(s)[0].get("stats", {}).get("stop") not in
-                              (None, "running") else None)(snakes_of(auto)), 10)
+        j = g.stopped_snake(auto)
         stop = samples(j)[0]["stats"].get("stop") if j else None
         check(stop == reason, "%s: the snake's JSON says the same (stats.stop = %s)" % (name, stop))
-        pg = panel_geometry(text)
-        if check(bool(pg), "%s: the panel's place is in the Log" % name):
-            _, px, py, pw, ph = pg
-            reds = red_pixels(os.path.join(g.WORK, "%s.png" % name), px, py + 20, pw, 120)
+        reds = g.status_reds(text, name)
+        if reds is not None:
             check(reds > 40, "%s: the status line shows the stop in red (%d red pixels)" % (name, reds))
     finally:
         ml.kill()

@@ -1,0 +1,265 @@
+// Closed snakes around the parts of real scans (issue 33, observations 1 and 2): lion-head's
+// eyes and bunny00's ear bases, seeded as a user clicks them, a few edge lengths off the rim or
+// base. Before issue 33 both loops shrank to a point or a stub (normal variation marks the whole
+// eye socket and the ear's ridge as feature) and the tool's Run never ended. With the
+// part-boundary energy a loop must end on the rim or base, or stop saying why, never at a point
+// called converged; every Run ends within Max operations and the time limit with its reason, with
+// either energy. Figures: docs/evaluation.md "Eyes, an ear base and a handle".
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include <part_cases.h>
+#include <snake_test_util.h>
+#include <vcg_ext/session/controller.h>
+
+#ifndef GS_SHARED_MESH_DIR
+#define GS_SHARED_MESH_DIR GS_DATA_DIR "/../../shared/data/meshes"
+#endif
+
+using namespace vcg::tri;
+typedef vcg::Point3d P3;
+
+namespace {
+
+struct ScanCase
+{
+    const char *name, *mesh;
+    std::vector<P3> clicks; ///< around the part, in order (see Cases())
+};
+
+/// The frame of the clicks: centre, the normal of their polygon (the area vector, turned to
+/// face like the surface there) and two axes in its plane.
+struct Frame
+{
+    P3 c, n, u, v;
+    Frame(const CMeshO &m, const std::vector<int> &seeds)
+    {
+        c = P3(0, 0, 0);
+        P3 vn(0, 0, 0);
+        for (int s : seeds) c += P3::Construct(m.vert[s].cP()), vn += P3::Construct(m.vert[s].cN());
+        c /= double(seeds.size());
+        n = P3(0, 0, 0);
+        for (size_t i = 0; i < seeds.size(); ++i)
+            n += (P3::Construct(m.vert[seeds[i]].cP()) - c) ^ (P3::Construct(m.vert[seeds[(i + 1) % seeds.size()]].cP()) - c);
+        n.Normalize();
+        if (n * vn < 0) n = -n;
+        u = (std::fabs(n[0]) < 0.9 ? P3(1, 0, 0) : P3(0, 1, 0)) ^ n;
+        u.Normalize();
+        v = n ^ u;
+    }
+    double Angle(const P3 &x) const { return std::atan2((x - c) * v, (x - c) * u); }
+    double Radius(const P3 &x) const { const P3 d = x - c; return std::hypot(d * u, d * v); }
+    double Height(const P3 &x) const { return (x - c) * n; }
+    /// Times the loop winds round the axis through the centre along the normal.
+    double Winding(const std::vector<P3> &loop) const
+    {
+        double w = 0;
+        for (size_t i = 0; i < loop.size(); ++i) {
+            double d = Angle(loop[(i + 1) % loop.size()]) - Angle(loop[i]);
+            while (d > M_PI) d -= 2 * M_PI;
+            while (d < -M_PI) d += 2 * M_PI;
+            w += d;
+        }
+        return w / (2 * M_PI);
+    }
+};
+
+struct Outcome
+{
+    SnakeStop stop = SnakeStop::Running;
+    int operations = 0, samples = 0;
+    double seconds = 0, length0 = 0, length = 0, winding = 0, minRadius = 0, meanRadius = 0, radius0 = 0;
+    double energy0 = 0, energy = 0; ///< mean part-boundary energy along the start and final loops
+    double h = 0;                   ///< mean edge length
+    std::string warning;            ///< the run's last warning
+};
+
+double MeanEnergy(const CMeshO &m, const std::vector<double> &e, const std::vector<P3> &loop)
+{
+    double s = 0;
+    for (const P3 &x : loop) s += e[gs_test::NearestVertex(m, x)];
+    return s / loop.size();
+}
+
+Outcome RunCase(CMeshO &m, const std::vector<int> &seeds, FeatureEnergyType t, const std::vector<double> &partEnergy,
+                const Frame &fr)
+{
+    SnakeController<CMeshO> ctl(m);
+    ctl.SetEnergySettings(t, 2);
+    ctl.SetSeeds(seeds);
+    ctl.CloseSeeds(true);
+    GeometricSnake<CMeshO> &s = ctl.Get(0);
+    Outcome o;
+    o.samples = s.SampleCount();
+    const std::vector<P3> start = s.PolylinePositions();
+    o.length0 = gs_parts::LoopLength(start);
+    for (const P3 &x : start) o.radius0 += fr.Radius(x) / start.size();
+    o.energy0 = MeanEnergy(m, partEnergy, start);
+    SnakeRunLimits lim; // the tool's defaults: 500 operations, 60 s
+    lim.maxOperations = 500;
+    lim.seconds = 60;
+    const auto t0 = SnakeClock::Now();
+    o.stop = s.Run(lim);
+    o.seconds = SnakeClock::MsSince(t0) / 1000;
+    o.operations = s.Stats().operations;
+    const std::vector<P3> loop = s.PolylinePositions();
+    o.length = gs_parts::LoopLength(loop);
+    o.winding = fr.Winding(loop);
+    o.minRadius = 1e300;
+    for (const P3 &x : loop) o.minRadius = std::min(o.minRadius, fr.Radius(x)), o.meanRadius += fr.Radius(x) / loop.size();
+    o.energy = MeanEnergy(m, partEnergy, loop);
+    o.h = ctl.MeanEdge();
+    if (!s.Stats().warnings.empty()) o.warning = s.Stats().warnings.back();
+    return o;
+}
+
+/// Six clicks on a circle of radius r round c, in the plane normal to the surface there (the
+/// mean vertex normal within r/2 of c), as a user clicks round an eye seen from the front.
+std::vector<P3> ClicksRound(const CMeshO &m, const P3 &c, double r)
+{
+    P3 n(0, 0, 0);
+    for (const auto &v : m.vert)
+        if ((P3::Construct(v.cP()) - c).Norm() < r / 2) n += P3::Construct(v.cN());
+    n.Normalize();
+    P3 u = (std::fabs(n[0]) < 0.9 ? P3(1, 0, 0) : P3(0, 1, 0)) ^ n;
+    u.Normalize();
+    const P3 v = n ^ u;
+    std::vector<P3> out;
+    for (int i = 0; i < 6; ++i) out.push_back(c + (u * std::cos(M_PI * i / 3) + v * std::sin(M_PI * i / 3)) * r);
+    return out;
+}
+
+struct Loaded
+{
+    CMeshO m;
+    std::vector<double> partEnergy;
+};
+
+/// The two meshes, loaded once for all the cases.
+Loaded &Mesh(const std::string &name)
+{
+    static std::map<std::string, std::unique_ptr<Loaded>> cache;
+    std::unique_ptr<Loaded> &l = cache[name];
+    if (!l) {
+        l.reset(new Loaded);
+        if (!gs_test::LoadMesh(l->m, std::string(GS_SHARED_MESH_DIR) + "/" + name)) return *l;
+        gs_test::EnableSnakeAdjacency(l->m);
+        vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(l->m);
+        l->partEnergy = PartBoundaryEnergy<CMeshO>::VertexValues(l->m, 2);
+    }
+    return *l;
+}
+
+std::vector<ScanCase> Cases()
+{
+    std::vector<ScanCase> c = {
+        // the six clicks of the issue's observation 1 round lion-head's right eye (vertices 8111,
+        // 1644, 6377, 1581, 8187, 8109 of the file, as in host_edit_gui_run_end), a few edge
+        // lengths outside the eye's rim
+        {"lion-head right eye", "lion-head.off",
+         {P3(0.1352, 0.1436, 0.3102), P3(0.1003, 0.1783, 0.3446), P3(0.0401, 0.1759, 0.3764),
+          P3(0.0167, 0.1395, 0.3717), P3(0.0503, 0.1031, 0.3501), P3(0.1116, 0.1054, 0.3256)}},
+        // the left eye: six clicks at about the right eye's clicks' radius (0.05) round the
+        // left eye's centre, the largest cluster of vertices of part-boundary energy < 0.05 left
+        // of the nose (`geometric-snake energy lion-head.off --type part`, vertices binned on a
+        // 1/12 grid; the right eye's clusters are at (0.04, 0.13, 0.34) and (0.08, 0.14, 0.33))
+        {"lion-head left eye", "lion-head.off", ClicksRound(Mesh("lion-head.off").m, P3(-0.194, 0.112, 0.306), 0.05)},
+        // the four clicks of observation 2 round the base of bunny00's back ear (vertices 29600,
+        // 2997, 4963, 14816)
+        {"bunny00 back ear base", "bunny00.off",
+         {P3(-0.1745, 0.2886, 0.0555), P3(-0.2261, 0.3379, 0.0352), P3(-0.2957, 0.2810, 0.2102),
+          P3(-0.2454, 0.2397, 0.1914)}},
+    };
+    return c;
+}
+
+/// Runs the case's closed snake as the tool does (its controller, the clicks closed into a loop,
+/// Run with the panel's default limits) and prints what it did.
+Outcome RunScan(const ScanCase &sc, FeatureEnergyType t)
+{
+    Loaded &l = Mesh(sc.mesh);
+    if (l.m.fn == 0) return Outcome();
+    const std::vector<int> seeds = gs_test::NearestVertices(l.m, sc.clicks);
+    const Frame fr(l.m, seeds);
+    const Outcome o = RunCase(l.m, seeds, t, l.partEnergy, fr);
+    std::printf("%s, %s: %d samples, %s after %d operations, %.2f s; length %.2f of the start's (%.1f h), winding "
+                "%.2f round the clicks' centre, radius min %.1f h mean %.1f h (start %.1f h), part-boundary energy "
+                "%.2f (start %.2f)\n",
+                sc.name, FeatureEnergyName(t), o.samples, SnakeStopKey(o.stop), o.operations, o.seconds,
+                o.length / o.length0, o.length0 / o.h, o.winding, o.minRadius / o.h, o.meanRadius / o.h,
+                o.radius0 / o.h, o.energy, o.energy0);
+    return o;
+}
+
+/// Every Run ends by itself within the tool's limits and says why; never a point called converged.
+void ExpectEndsWithAReason(const ScanCase &sc, const Outcome &o)
+{
+    EXPECT_NE(o.stop, SnakeStop::Running) << sc.name;
+    EXPECT_LE(o.operations, 500) << sc.name;
+    EXPECT_LT(o.seconds, 60) << sc.name;
+    if (o.stop == SnakeStop::Converged) {
+        EXPECT_GT(o.length, 0.4 * o.length0) << sc.name << ": converged at a point or a stub";
+    } else {
+        EXPECT_TRUE(o.stop == SnakeStop::Collapsed || o.stop == SnakeStop::LeftPart) << sc.name << ": " << SnakeStopKey(o.stop);
+        EXPECT_FALSE(o.warning.empty()) << sc.name << ": a stop without its warning";
+    }
+}
+
+} // namespace
+
+// Lion-head's eyes with the part-boundary energy. The right eye (the issue's six clicks) ends on
+// the eye's rim: a loop round the clicks' centre (winding 1), no point (measured: 0.61 of its
+// start's length, no point nearer the clicks' centre than 1.2 h), in the valley (mean energy 0.05
+// against 0.59 where it started). The left eye (derived clicks) collapses today, 87 operations,
+// and says so (the energy's fault, issue 33: its valley inside the socket is a disc of energy
+// near 0 that holds no loop): it must stop with its warning, never end at a point quietly.
+TEST(PartScans, LionEyesEndOnTheRimOrStopWithAReason)
+{
+    const std::vector<ScanCase> cases = Cases();
+    for (int i : {0, 1}) {
+        const ScanCase &sc = cases[i];
+        ASSERT_GT(Mesh(sc.mesh).m.fn, 0) << sc.mesh;
+        const Outcome o = RunScan(sc, FeatureEnergyType::PartBoundary);
+        ExpectEndsWithAReason(sc, o);
+        if (i == 0 || o.stop == SnakeStop::Converged) {
+            EXPECT_EQ(o.stop, SnakeStop::Converged) << sc.name;
+            EXPECT_NEAR(std::fabs(o.winding), 1.0, 0.01) << sc.name << ": the loop no longer goes round the eye";
+            EXPECT_GT(o.length, 0.4 * o.length0) << sc.name;
+            EXPECT_GT(o.minRadius, 0.5 * o.h) << sc.name << ": the loop passes through the eye's centre";
+            EXPECT_LT(o.energy, 0.2) << sc.name << ": the loop is not in the rim's valley";
+            EXPECT_LT(o.energy, 0.5 * o.energy0) << sc.name;
+        }
+    }
+}
+
+// bunny00's back ear base (the issue's four clicks) with the part-boundary energy: the loop keeps
+// 0.84 of its length and lowers its energy from 0.80 to 0.42, but converges beside the base (it
+// no longer winds round the clicks' centre) and the left-part watch does not see it: today's
+// weakness (issue 33), asserted as what holds: no point, no stub, a reason.
+TEST(PartScans, BunnyEarBaseKeepsItsLengthAndEnds)
+{
+    const ScanCase sc = Cases()[2];
+    ASSERT_GT(Mesh(sc.mesh).m.fn, 0) << sc.mesh;
+    const Outcome o = RunScan(sc, FeatureEnergyType::PartBoundary);
+    ExpectEndsWithAReason(sc, o);
+    EXPECT_GT(o.length, 0.6 * o.length0) << sc.name;
+    EXPECT_LT(o.energy, 0.75 * o.energy0) << sc.name;
+}
+
+// The documented behaviour of normal variation round a part (README "Snaking around a part"): it
+// marks the whole socket or ridge as feature, the loop shrinks into it and the Run stops as
+// collapsing (measured: the eyes after 4 and 7 operations, the ear base after 350), with its
+// warning; before issue 33 the tool's Run went on for 237,068 operations.
+TEST(PartScans, NormalVariationStopsInsteadOfEndingAtAPoint)
+{
+    for (const ScanCase &sc : Cases()) {
+        ASSERT_GT(Mesh(sc.mesh).m.fn, 0) << sc.mesh;
+        const Outcome o = RunScan(sc, FeatureEnergyType::NormalVariation);
+        ExpectEndsWithAReason(sc, o);
+        EXPECT_NE(o.stop, SnakeStop::Converged) << sc.name << ": the loop settled round the part with normal variation?";
+    }
+}
