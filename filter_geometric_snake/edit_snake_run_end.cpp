@@ -8,6 +8,7 @@
 #include "snake_dock.h"
 
 #include <vcg_ext/session/param_defs.h>
+#include <vcg_ext/snake/valley_loop.h>
 
 using namespace vcg;
 
@@ -40,6 +41,8 @@ void EditGeometricSnakePlugin::reportRunEnd(tri::SnakeStop why)
     const int ops = s->Stats().operations - runOps0;
     const double compute = (ctl->ComputeMs() - runCompute0) / 1000.0, wall = runClock.elapsed() / 1000.0;
     s->EndRun(why, runLimits().Message(why, ops, wall));
+    // a converged part-boundary loop ends on the cheapest edge loop round it, as in the filters
+    tri::ValleyLoop<CMeshO>::FinishRun(*s, ctl->EnergyType(), ctl->EnergyFromQuality());
     const std::string &msg = s->Stats().stopMessage;
     const bool problem = tri::SnakeStopIsProblem(why);
     // the Log line the GUI tests read: the end, compute time vs wall time, the reason

@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include <part_cases.h>
+#include <vcg_ext/snake/valley_loop.h>
 #include <snake_test_util.h>
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/energy/feature_energy.h>
@@ -75,6 +76,7 @@ LoopResult RunLoop(std::shared_ptr<Surface> surf, const std::vector<int> &seeds,
     Snake s(surf);
     s.InitFromSeeds(seeds, true);
     s.Run(400);
+    ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false); // as every host does
     const double h = surf->MeanEdge();
     LoopResult r;
     const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
@@ -237,8 +239,11 @@ TEST(PartBoundaryLoop, SettlesOnTheWaistFromEitherSide)
                         "waist's, stopped %d\n", noise, side < 0 ? "above" : "below", r.meanOff, r.maxOff,
                         r.lengthRatio, int(r.stopped));
             EXPECT_FALSE(r.stopped);
+            // measured with the valley loop of edges at the end (snake/valley_loop.h): mean 0.15 h,
+            // max 0.67 h without noise, 0.26 / 1.06 h with (the icosphere's edges zigzag across
+            // the waist; the snake's own loop: 0.00 / 0.04 h, 0.14-0.16 / 0.49-0.51 h)
             EXPECT_LT(r.meanOff, 0.5);
-            EXPECT_LT(r.maxOff, 1.0);
+            EXPECT_LT(r.maxOff, noise > 0 ? 1.5 : 1.0);
             EXPECT_GT(r.lengthRatio, 0.9);
         }
     }
@@ -267,8 +272,10 @@ TEST(PartBoundaryLoop, SettlesOnTheRimOfABump)
             // gcc, and for the loop seeded outside mean 1.25 h, max 4.06 h, 1.36 of the rim's
             // length with clang's ASan build: on noise that loop's excursion depends on rounding
             // (a weakness, issue 33), so its bounds only tell it from a loop off the rim.
+            // With the valley loop of edges at the end (snake/valley_loop.h): mean 0.88-0.89 h, max
+            // 1.55 h without noise, 0.78-0.79 / 1.65 h with (gcc Release): edges zigzag across the rim.
             EXPECT_LT(r.meanOff, noise > 0 ? 1.5 : 1.0);
-            EXPECT_LT(r.maxOff, noise > 0 ? 5.0 : 1.0);
+            EXPECT_LT(r.maxOff, noise > 0 ? 5.0 : 2.0);
             EXPECT_GT(r.lengthRatio, 0.85);
         }
     }
@@ -293,6 +300,7 @@ TEST(PartBoundaryBenchmark, TeddyPartsCapturedByThePartBoundaryEnergyOnly)
                 s.InitFromSeeds(seeds, true);
                 const double L0 = gs_parts::LoopLength(s.PolylinePositions());
                 s.Run(400);
+                ValleyLoop<CMeshO>::FinishRun(s, t, false); // as every host does (nothing for normal variation)
                 const std::vector<P3> loop = s.PolylinePositions();
                 const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
                 ++cases;
@@ -387,4 +395,47 @@ TEST(PartBoundaryLoop, SettlesOnTheBaseOfAHandle)
                 EXPECT_LT(ratio, 1.25);
             }
     }
+}
+
+// The end of a converged part-boundary loop (snake/valley_loop.h): the cheapest edge loop round
+// it replaces it, on the waist's valley, and the run's end stays (converged: a new Run does not
+// move it, one undo step returns the state before the Run); other energies, open snakes and runs
+// that did not converge are left as they are.
+TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
+{
+    CMeshO m;
+    MakeRevolved(m, Waist, 0.0);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const double h = surf->MeanEdge();
+    Snake s(surf);
+    s.InitFromSeeds(RingSeeds(m, Waist, M_PI / 2 + 3 * h / Waist(M_PI / 2)), true);
+    const std::vector<P3> start = s.PolylinePositions();
+    s.Run(400);
+    ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
+    EXPECT_FALSE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::NormalVariation, false));
+    EXPECT_FALSE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, true)); // quality as energy
+    const int ops = s.Stats().operations;
+    ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
+    EXPECT_EQ(s.Stats().stop, SnakeStop::Converged);
+    double maxOff = 0;
+    for (const P3 &x : s.PolylinePositions()) {
+        const double phi = std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm())));
+        maxOff = std::max(maxOff, std::fabs(phi - M_PI / 2) * Waist(M_PI / 2) / h);
+    }
+    std::printf("valley loop on the waist: %zu samples, max %.2f h off the waist\n", s.PolylinePositions().size(), maxOff);
+    EXPECT_LT(maxOff, 1.0);
+    const std::vector<P3> snapped = s.PolylinePositions();
+    s.Run(400);
+    EXPECT_EQ(s.Stats().operations, ops); // converged: not moved again
+    EXPECT_LT((s.PolylinePositions()[0] - snapped[0]).Norm(), 1e-9 * h);
+    // undo: the empty Run's step, then the Run's (the snap is part of it): the state before the Run
+    ASSERT_TRUE(s.Undo());
+    ASSERT_TRUE(s.Undo());
+    ASSERT_EQ(s.PolylinePositions().size(), start.size());
+    EXPECT_LT((s.PolylinePositions()[0] - start[0]).Norm(), 1e-9 * h);
+    // a run cut short is not replaced
+    Snake t(surf);
+    t.InitFromSeeds(RingSeeds(m, Waist, M_PI / 2 + 3 * h / Waist(M_PI / 2)), true);
+    t.Run(1);
+    EXPECT_FALSE(ValleyLoop<CMeshO>::FinishRun(t, FeatureEnergyType::PartBoundary, false));
 }

@@ -5,7 +5,9 @@
 //
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
-//            [--max-ops N] [--out FILE.csv]
+//            [--max-ops N] [--no-valley-loop] [--out FILE.csv]
+//   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
+//   host ends a converged part-boundary loop on, snake/valley_loop.h)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's.)
 //
@@ -25,6 +27,7 @@
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/snake/geometric_snake.h>
+#include <vcg_ext/snake/valley_loop.h>
 
 using namespace vcg::tri;
 typedef GeometricSnake<CMeshO> Snake;
@@ -56,6 +59,7 @@ int main(int argc, char **argv)
     std::vector<int> rings = {2, 3};
     int seedCount = 8, maxOps = 400;
     double balloon = 0, alpha = -1, beta = -1, ext = -1;
+    bool valleyLoop = true;
     int smoothing = 2, capture = -1; // -1: the tool's choice for the energy
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -72,6 +76,7 @@ int main(int argc, char **argv)
         else if (a == "--ext") ext = std::stod(next());
         else if (a == "--smoothing") smoothing = std::stoi(next());
         else if (a == "--capture") capture = std::stoi(next());
+        else if (a == "--no-valley-loop") valleyLoop = false;
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
@@ -147,6 +152,8 @@ int main(int argc, char **argv)
                         const auto c0 = std::chrono::steady_clock::now();
                         s.Run(maxOps);
                         const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
+                        // the part energy's loop ends on the cheapest edge loop round it, as in every host
+                        if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <vcg_ext/session/controller.h>
+#include <vcg_ext/snake/valley_loop.h>
 
 namespace vcg {
 namespace tri {
@@ -90,6 +91,7 @@ public:
         lim.maxOperations = s.maxOperations;
         lim.seconds = s.timeLimit;
         r.stop = snake.Run(lim, progress);
+        ValleyLoop<MeshType>::FinishRun(snake, ctl.EnergyType(), ctl.EnergyFromQuality());
         r.stopMessage = snake.Stats().stopMessage;
         r.curve = snake.PolylinePositions();
         for (const auto &x : r.curve)

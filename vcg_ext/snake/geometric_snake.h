@@ -189,6 +189,21 @@ public:
         if (SnakeStopIsProblem(why) && stats.warnings.size() < 20) stats.warnings.push_back(stats.stopMessage);
     }
 
+    /// Replaces a closed snake's curve by a loop of mesh vertices (each next to the previous
+    /// one), resampled at the snake's spacing, as the last part of the run that placed it
+    /// (snake/valley_loop.h): the run's end, its statistics, its undo step (the state before
+    /// the run) and the snake's initial curve are kept.
+    void SetClosedVertexLoop(const std::vector<int> &loop)
+    {
+        if (!st.closed || loop.size() < 3) throw SnakeError("Geometric snake: a loop of vertices needs a closed snake.");
+        const SnakeStats keepStats = stats;
+        typename Initial::Result r = Initial::FromVertexPath(*surf, loop, true, st.params.spacing, st.unit);
+        st.samples = std::move(r.samples);
+        st.gaps = std::move(r.gaps);
+        resetRun();
+        stats = keepStats;
+    }
+
     // ----------------------------------------------------------------- editing (Sec. 5.5)
     /// Point editing: moves sample i; its neighbours follow through the spline energy.
     /// The region of the next operation is enlarged by the projection of the segments to
