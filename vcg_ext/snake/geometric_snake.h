@@ -202,7 +202,7 @@ public:
         st.samples[i].p.Normalize();
         if (fix) st.samples[i].fixed = true;
         Line::InvalidateAround(st, i);
-        resetRun();
+        resetRun(true);
     }
 
     /// Point fixing.
@@ -211,7 +211,7 @@ public:
         checkIndex(i);
         pushUndo();
         st.samples[i].fixed = fixed;
-        resetRun();
+        resetRun(true);
     }
 
     /// Inserts a sample in the middle of gap i (between samples i and i+1); returns its index.
@@ -224,7 +224,7 @@ public:
         s.p = mid;
         st.samples.insert(st.samples.begin() + gap + 1, s);
         Line::SplitGap(st, gap);
-        resetRun();
+        resetRun(true);
         return gap + 1;
     }
 
@@ -236,7 +236,7 @@ public:
         pushUndo();
         st.samples.erase(st.samples.begin() + i);
         Line::MergeGaps(st, i);
-        resetRun();
+        resetRun(true);
     }
 
     void SetParams(const SnakeParams &p)
@@ -446,14 +446,16 @@ private:
         return area * normal >= 0 ? 1.0 : -1.0;
     }
 
-    void resetRun()
+    /// keepLevel: a point edit (Sec. 5.5), the run goes on on the energy level it had reached
+    /// (SnakeRunControl::Reset).
+    void resetRun(bool keepLevel = false)
     {
         motion.ForgetEmbeddings(); // samples were placed anew: regions are built around them
         for (auto &smp : st.samples) {
             smp.trust = 1.0;
             smp.heldFine = false;
         }
-        run.Reset();
+        run.Reset(keepLevel);
         stats.converged = false;
         stats.stopped = false;
         stats.stop = SnakeStop::Running;
