@@ -54,7 +54,7 @@ public:
     void endEdit(MeshModel &m, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void endEdit(MeshDocument &md, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
     void layerChanged(MeshDocument &md, MeshModel &old, GLArea *gla, MLSceneGLSharedDataContext *cont) override;
-    void decorate(MeshModel &m, GLArea *gla, QPainter *p) override;
+    void decorate(MeshModel &m, GLArea *gla, QPainter *p) override; // edit_snake_draw.cpp
     void mousePressEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseMoveEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
     void mouseReleaseEvent(QMouseEvent *e, MeshModel &m, GLArea *gla) override;
@@ -65,7 +65,7 @@ protected:
     bool eventFilter(QObject *o, QEvent *e) override;
 
 private slots:
-    void runTick();
+    void runTick(); // the Run loop (edit_snake_run.cpp)
 
 private:
     // state of the session
@@ -171,6 +171,7 @@ private:
     // actions
     void buildSnake(bool closed);
     void completeLoop(); // the seeds, a stroke across a part, into a loop round it (edit_snake_stroke_loop.cpp)
+    // the Run loop (edit_snake_run.cpp)
     void stepOnce();
     void setRunning(bool on);
     bool running() const { return runTimer.isActive(); }
@@ -197,7 +198,7 @@ private:
     vcg::tri::SnakeParams paramsFromDock() const;
     void paramsToDock(const vcg::tri::SnakeParams &p);
 
-    // drawing
+    // drawing (edit_snake_draw.cpp)
     void drawAll(MeshModel &m);
     // closed snakes: ticks on the inside (edit_snake_side_marks.cpp)
     void drawInsideMarks(const Controller::Snake &s, double lift, float dpr, const unsigned char *colour);

@@ -455,6 +455,48 @@ def panel_geometry(text):
     return (m.group(1) == "docked",) + tuple(int(m.group(k)) for k in range(2, 6))
 
 
+def layer_dialog(text):
+    """Where the tool says MeshLab's layer dialog (with the Log) is (its Log line): (x, y, w, h,
+    "visible" or not) of the last one, or None."""
+    m = list(re.finditer(r"layer dialog \(with the Log\) at (-?\d+),(-?\d+) size (\d+)x(\d+), (\w+)", text))
+    return tuple(int(m[-1].group(k)) for k in range(1, 5)) + (m[-1].group(5),) if m else None
+
+
+def panel_and_layer_dialog(ml, timeout=5):
+    """The docked panel's box and the layer dialog's from the tool's Log lines, checked and logged:
+    (panel box, layer dialog box, the layer dialog's visibility), or None."""
+    lm = wait_for(lambda: layer_dialog(ml.log_text()), timeout)
+    pg = panel_geometry(ml.log_text())
+    if not check(bool(pg) and pg[0] and bool(lm) and VIEW, "the tool logs the panel, view and layer dialog boxes"):
+        return None
+    log("panel %s, view %s, layer dialog %s (%s)" % (pg[1:], VIEW, lm[:4], lm[4]))
+    return pg[1:], lm[:4], lm[4]
+
+
+def overlap(a, b):
+    """Whether boxes a and b (x, y, w, h) overlap."""
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    return ax < bx + bw and bx < ax + aw and ay < by + bh and by < ay + ah
+
+
+def panel_state_reader(path):
+    """Sets $GS_SNAKE_PANEL_STATE to `path` (the tool then writes what its panel shows there on every
+    change; set before MeshLab starts) and returns panel(pred, timeout): the state once pred
+    holds within timeout seconds, else {}."""
+    os.environ["GS_SNAKE_PANEL_STATE"] = path
+
+    def panel(pred=lambda s: True, timeout=3):
+        def read():
+            try:
+                s = json.load(open(path))
+            except (OSError, ValueError):
+                return None
+            return s if pred(s) else None
+        return wait_for(read, timeout) or read() or {}
+    return panel
+
+
 def window_geometry(win):
     out = xdo("getwindowgeometry", win)
     pos = re.search(r"Position: (-?\d+),(-?\d+)", out)

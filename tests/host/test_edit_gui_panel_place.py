@@ -6,19 +6,11 @@ there, right of the 3D view and beside MeshLab's layer dialog, whose Log stays v
 over it), and about that wide.
 """
 import os
-import re
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui as g  # noqa: E402
-from gui import check, log, wait_for  # noqa: E402
-
-
-def overlap(a, b):
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    return ax < bx + bw and bx < ax + aw and ay < by + bh and by < ay + ah
+from gui import check  # noqa: E402
 
 
 def main():
@@ -33,15 +25,12 @@ def main():
     try:
         if not check(ml.start_tool(), "the tool starts"):
             return g.finish()
-        lm = wait_for(lambda: re.search(r"layer dialog \(with the Log\) at (-?\d+),(-?\d+) size (\d+)x(\d+), (\w+)",
-                                        ml.log_text()), 5)
+        boxes = g.panel_and_layer_dialog(ml)
         g.screenshot("01_right.png")
-        pg = g.panel_geometry(ml.log_text())
-        if check(bool(pg) and pg[0] and bool(lm) and g.VIEW, "the tool logs the panel, view and layer dialog boxes"):
-            pbox, lbox = pg[1:], tuple(int(lm.group(k)) for k in range(1, 5))
-            log("panel %s, view %s, layer dialog %s (%s)" % (pbox, g.VIEW, lbox, lm.group(5)))
+        if boxes:
+            pbox, lbox, shown = boxes
             check(pbox[0] >= g.VIEW[0] + g.VIEW[2], "the panel is back in the right dock area, right of the 3D view")
-            check(lm.group(5) == "visible" and not overlap(pbox, lbox),
+            check(shown == "visible" and not g.overlap(pbox, lbox),
                   "beside the layer dialog, whose Log stays visible (not a tab over it)")
             check(abs(pbox[2] - 360) <= 30, "the panel has the width it had (%d px, was 360)" % pbox[2])
     finally:

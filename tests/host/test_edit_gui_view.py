@@ -12,7 +12,6 @@ real MeshLab on data/icocube.ply, the panel's state in $GS_SNAKE_PANEL_STATE aft
    Log gives, the sample buttons are disabled (no sample selected).
 6. The mesh is untouched, so File > Close Project does not ask to save it (no "modified" layer).
 """
-import json
 import os
 import re
 import sys
@@ -20,29 +19,13 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import gui as g  # noqa: E402
-from gui import check, log, wait_for, xdo  # noqa: E402
-
-
-def overlap(a, b):
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    return ax < bx + bw and bx < ax + aw and ay < by + bh and by < ay + ah
+from gui import check, wait_for, xdo  # noqa: E402
 
 
 def main():
     WORK = g.start("edit_gui_view")
     mesh = g.copy_data("icocube.ply")
-    state_path = os.path.join(WORK, "panel.json")
-    os.environ["GS_SNAKE_PANEL_STATE"] = state_path
-
-    def panel(pred=lambda s: True, timeout=3):
-        def read():
-            try:
-                s = json.load(open(state_path))
-            except (OSError, ValueError):
-                return None
-            return s if pred(s) else None
-        return wait_for(read, timeout) or read() or {}
+    panel = g.panel_state_reader(os.path.join(WORK, "panel.json"))
 
     ml = g.MeshLab(mesh, "view")
     try:
@@ -51,17 +34,14 @@ def main():
             return g.finish()
         left, right, top, bottom = face
         cx, cy = (left + right) // 2, (top + bottom) // 2
-        text = ml.log_text()
 
         # ---- 1. where the panel is: beside the view and the layer dialog, the Log visible
-        pg = g.panel_geometry(text)
-        lm = re.search(r"layer dialog \(with the Log\) at (-?\d+),(-?\d+) size (\d+)x(\d+), (\w+)", text)
-        if check(bool(pg) and pg[0] and bool(lm) and g.VIEW, "the tool logs the panel, view and layer dialog boxes"):
-            pbox, lbox = pg[1:], tuple(int(lm.group(k)) for k in range(1, 5))
-            log("panel %s, view %s, layer dialog %s (%s)" % (pbox, g.VIEW, lbox, lm.group(5)))
-            check(lm.group(5) == "visible", "MeshLab's layer dialog, with the Log, stays visible (not under a tab)")
-            check(not overlap(pbox, lbox), "the panel does not cover the layer dialog and its Log")
-            check(not overlap(pbox, g.VIEW), "the panel does not cover the 3D view")
+        boxes = g.panel_and_layer_dialog(ml)
+        if boxes:
+            pbox, lbox, shown = boxes
+            check(shown == "visible", "MeshLab's layer dialog, with the Log, stays visible (not under a tab)")
+            check(not g.overlap(pbox, lbox), "the panel does not cover the layer dialog and its Log")
+            check(not g.overlap(pbox, g.VIEW), "the panel does not cover the 3D view")
             img = g.Image(os.path.join(WORK, "01_started.png"))
             lx, ly, lw, lh = lbox  # the Log: the bottom of the layer dialog, white with grey text
             box = (lx + 10, ly + lh * 7 // 10, lx + lw - 10, ly + lh - 10)

@@ -217,7 +217,7 @@ public:
         st.samples[i].p.Normalize();
         if (fix) st.samples[i].fixed = true;
         Line::InvalidateAround(st, i);
-        resetRun();
+        resetRun(true);
     }
 
     /// Point fixing.
@@ -226,7 +226,7 @@ public:
         checkIndex(i);
         pushUndo();
         st.samples[i].fixed = fixed;
-        resetRun();
+        resetRun(true);
     }
 
     /// Inserts a sample in the middle of gap i (between samples i and i+1); returns its index.
@@ -239,7 +239,7 @@ public:
         s.p = mid;
         st.samples.insert(st.samples.begin() + gap + 1, s);
         Line::SplitGap(st, gap);
-        resetRun();
+        resetRun(true);
         return gap + 1;
     }
 
@@ -251,7 +251,7 @@ public:
         pushUndo();
         st.samples.erase(st.samples.begin() + i);
         Line::MergeGaps(st, i);
-        resetRun();
+        resetRun(true);
     }
 
     void SetParams(const SnakeParams &p)
@@ -461,14 +461,16 @@ private:
         return area * normal >= 0 ? 1.0 : -1.0;
     }
 
-    void resetRun()
+    /// keepLevel: a point edit (Sec. 5.5), the run goes on on the energy level it had reached
+    /// (SnakeRunControl::Reset).
+    void resetRun(bool keepLevel = false)
     {
         motion.ForgetEmbeddings(); // samples were placed anew: regions are built around them
         for (auto &smp : st.samples) {
             smp.trust = 1.0;
             smp.heldFine = false;
         }
-        run.Reset();
+        run.Reset(keepLevel);
         stats.converged = false;
         stats.stopped = false;
         stats.stop = SnakeStop::Running;
