@@ -29,9 +29,11 @@
 // direction straight into the patch (the facing crease of a flat strip, the far side of a
 // bore or a cap: about the radius of a circle, whatever its number of segments; a crease's
 // neighbours along its own chain are never in that cone). A point takes the width of its
-// nearest crease, on its own side: w = f s, so the energy's basin reaches as far as the
-// patch, and its ridge is where the nearest crease changes (the medial axis): neighbouring
-// creases never share a basin, whatever the width.
+// nearest crease: w = f s on its own side (LocalWidth: for the snakes' capture level, capped
+// at SideCap() times the crease's own scale, its narrower side; for their precise level the
+// own scale), so the basin reaches across the patch, and its ridge is where the nearest
+// crease changes (the medial axis): neighbouring creases never share a basin, whatever the
+// width.
 
 #include <algorithm>
 #include <array>
