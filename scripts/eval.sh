@@ -11,6 +11,9 @@
 #   scripts/eval.sh --parts    closed snakes on part boundaries drawn by people (issue 33, ~2 min):
 #                              bench/eval/gs_parts on ../shared/data/segmentation, both energies ->
 #                              docs/eval/parts.csv, parts.md, docs/img/parts_distance.svg
+#   scripts/eval.sh --creases  creases on CAD meshes (issue 38, ~5 min): bench/eval/gs_creases on
+#                              dense features, tessellations and the shared CAD-like meshes, both
+#                              energies -> docs/eval/creases.csv, creases.md
 #
 # Environment: BUILD_DIR (default /work/build-eval), MESHLAB_SOURCE_DIR (default
 # <repo>/build/meshlab-src), JOBS (default 2).
@@ -23,9 +26,11 @@ JOBS="${JOBS:-2}"
 QUICK=0
 CAPTURE_ONLY=0
 PARTS_ONLY=0
+CREASES_ONLY=0
 [[ "${1:-}" == "--quick" ]] && QUICK=1
 [[ "${1:-}" == "--parts" ]] && PARTS_ONLY=1
 [[ "${1:-}" == "--capture" ]] && CAPTURE_ONLY=1
+[[ "${1:-}" == "--creases" ]] && CREASES_ONLY=1
 
 OUT="$ROOT/docs/eval"
 [[ $QUICK == 1 ]] && OUT="$ROOT/docs/eval/quick"
@@ -35,11 +40,21 @@ T0=$(date +%s)
 TARGETS="gs_eval bench_table1"
 [[ $CAPTURE_ONLY == 1 ]] && TARGETS="gs_eval"
 [[ $PARTS_ONLY == 1 ]] && TARGETS="gs_parts"
+[[ $CREASES_ONLY == 1 ]] && TARGETS="gs_creases"
 echo "== build ($TARGETS) in $BUILD_DIR"
 mkdir -p "$BUILD_DIR"
 cmake -S "$ROOT" -B "$BUILD_DIR" -DGS_BUILD_PLUGINS=OFF -DMESHLAB_SOURCE_DIR="$MESHLAB_SOURCE_DIR" \
       -DCMAKE_BUILD_TYPE=Release > "$BUILD_DIR/gs_eval_build.log" 2>&1
 cmake --build "$BUILD_DIR" -j"$JOBS" --target $TARGETS >> "$BUILD_DIR/gs_eval_build.log" 2>&1
+
+if [[ $CREASES_ONLY == 1 ]]; then
+  echo "== creases on CAD meshes (dense features, tessellations, shared CAD-like meshes)"
+  "$BUILD_DIR/bench/eval/gs_creases" --out "$OUT/creases.csv" 2> "$OUT/creases.log"
+  grep -E "captured|done" "$OUT/creases.log"
+  python3 "$ROOT/bench/eval/creases_report.py" "$OUT/creases.csv" > "$OUT/creases.md"
+  echo "== done in $(( $(date +%s) - T0 )) s: $OUT/creases.md"
+  exit 0
+fi
 
 if [[ $PARTS_ONLY == 1 ]]; then
   echo "== closed snakes on part boundaries drawn by people"

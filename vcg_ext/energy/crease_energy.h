@@ -19,11 +19,27 @@
 // convex faces; a lower bound around reflex corners), it costs one point-segment distance per
 // candidate, and, unlike the plain 3D distance to any crease, it does not leak across a thin
 // wall to the creases of the other side.
+//
+// The width (issue 38): a length of the feature itself, not of the bounding box (a box
+// fraction spans several features on a part whose features are small against its size, and
+// is narrower than the seeds' offset where they are large), nor of the edges (on a CAD
+// tessellation they are slivers as long as the part). Each side of each crease has a local
+// feature size s: how far its smooth patch reaches across it, i.e. the distance from the
+// crease's middle to the nearest other crease of that patch seen within 60 degrees of the
+// direction straight into the patch (the facing crease of a flat strip, the far side of a
+// bore or a cap: about the radius of a circle, whatever its number of segments; a crease's
+// neighbours along its own chain are never in that cone). A point takes the width of its
+// nearest crease: w = f s on its own side (LocalWidth: for the snakes' capture level, capped
+// at SideCap() times the crease's own scale, its narrower side; for their precise level the
+// own scale), so the basin reaches across the patch, and its ridge is where the nearest
+// crease changes (the medial axis): neighbouring creases never share a basin, whatever the
+// width.
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,10 +71,15 @@ public:
     typedef MeshValidation<MeshType> MV;
 
     static double DefaultAngle() { return DefaultCreaseAngle(); }
-    /// Basin width per smoothing step, as a fraction of the bounding box diagonal: with
-    /// `steps` smoothing steps, w = (1 + steps) * BaseWidth() * diagonal.
-    static double BaseWidthFraction() { return 0.01; }
-    static double WidthFor(double diagonal, int steps) { return (1.0 + std::max(0, steps)) * BaseWidthFraction() * diagonal; }
+    /// Basin width per smoothing step, as a fraction of the local feature size s (see the top):
+    /// with `steps` smoothing steps, w = (1 + steps) * WidthPerStep() * s. The default smoothing
+    /// (2) gives s / 6, and the snakes' capture level (3 w, CreaseEnergyField) s / 2: its slope
+    /// reaches the medial axis between two creases.
+    static double WidthPerStep() { return 1.0 / 18.0; }
+    static double WidthFraction(int steps) { return (1.0 + std::max(0, steps)) * WidthPerStep(); }
+    /// The feature size of a crease side that faces no other crease of its patch (an open
+    /// sheet): this fraction of the bounding box diagonal (the width of earlier versions).
+    static double LoneSizeFraction() { return 0.18; }
     /// Candidate creases are collected up to this many widths away (E = 1 - e^-9 beyond).
     static double ReachInWidths() { return 3.0; }
 
@@ -66,10 +87,15 @@ public:
     /// `reach` of it on its smooth patch. No adjacency component of the mesh is needed.
     void Build(const MeshType &m, double angleDeg, double reach)
     {
+        Build(m, angleDeg);
+        Collect(reach);
+    }
+    /// Finds the creases and their local feature sizes (Collect must follow before Distance).
+    void Build(const MeshType &m, double angleDeg)
+    {
         MV::RequireSurface(m);
         if (!std::isfinite(angleDeg) || angleDeg <= 0 || angleDeg >= 180)
             throw SnakeError("The crease angle must be between 0 and 180 degrees (got " + std::to_string(angleDeg) + ").");
-        if (!std::isfinite(reach) || reach <= 0) throw SnakeError("The crease energy needs a positive basin width.");
         mesh = &m;
         angle = angleDeg;
         const int nf = int(m.face.size());
@@ -120,7 +146,16 @@ public:
             }
             i = j;
         }
-        collectCandidates(m, reach);
+        patch = patches(m);
+        grid = std::make_shared<PatchCreaseGrid>(m, segs, sharpOf, patch);
+        featureSizes(m);
+    }
+    /// Collects, for each face, the creases within `reach` of it on its smooth patch.
+    void Collect(double reach)
+    {
+        if (!mesh) throw SnakeError("The crease energy is not built.");
+        if (!std::isfinite(reach) || reach <= 0) throw SnakeError("The crease energy needs a positive basin width.");
+        collectCandidates(*mesh, reach);
     }
 
     int CreaseCount() const { return int(segs.size()); }
@@ -130,10 +165,12 @@ public:
 
     /// Distance from the surface point p to the nearest crease of its patch (infinity if
     /// none within reach); `closest` receives the nearest crease point.
-    double Distance(const SurfacePoint &p, vcg::Point3d *closest = nullptr) const
+    /// `which` receives the crease's index (-1 if none).
+    double Distance(const SurfacePoint &p, vcg::Point3d *closest = nullptr, int *which = nullptr) const
     {
         const vcg::Point3d x = p.Pd(*mesh);
         double best = std::numeric_limits<double>::infinity();
+        if (which) *which = -1;
         for (int c = candStart[p.face]; c < candStart[p.face + 1]; ++c) {
             vcg::Point3d q;
             double d;
@@ -141,9 +178,91 @@ public:
             if (d < best) {
                 best = d;
                 if (closest) *closest = q;
+                if (which) *which = cand[c];
             }
         }
         return best;
+    }
+
+    /// The local feature size of crease c on the side of smooth patch `side` (see the top).
+    double FeatureSize(int c, int side) const
+    {
+        double s = std::numeric_limits<double>::infinity();
+        for (const auto &x : sizes[c])
+            if (x.first == side) s = std::min(s, x.second);
+        return std::isfinite(s) ? s : CreaseSize(c);
+    }
+    /// The crease's own scale: the smaller of its sides' feature sizes.
+    double CreaseSize(int c) const
+    {
+        double s = std::numeric_limits<double>::infinity();
+        for (const auto &x : sizes[c]) s = std::min(s, x.second);
+        return std::isfinite(s) ? s : loneSize;
+    }
+    /// The largest feature size of any crease side.
+    double MaxFeatureSize() const { return maxSize; }
+    /// The feature size that p's nearest crease has on p's side (the largest if none in reach).
+    double FeatureSizeAt(const SurfacePoint &p) const
+    {
+        int c;
+        Distance(p, nullptr, &c);
+        return c < 0 ? maxSize : FeatureSize(c, patch[p.face]);
+    }
+    /// The scale of p's nearest crease (CreaseSize; the median one if none in reach).
+    double CreaseSizeAt(const SurfacePoint &p) const
+    {
+        int c;
+        Distance(p, nullptr, &c);
+        return c < 0 ? MedianCreaseSize() : CreaseSize(c);
+    }
+    /// The median crease scale, weighted by length (the bounding box's lone size if none).
+    double MedianCreaseSize() const
+    {
+        std::vector<std::pair<double, double>> v;
+        double total = 0;
+        for (size_t c = 0; c < segs.size(); ++c) {
+            v.push_back({CreaseSize(int(c)), segs[c].Length()});
+            total += v.back().second;
+        }
+        if (v.empty()) return loneSize;
+        std::sort(v.begin(), v.end());
+        double acc = 0;
+        for (const auto &x : v)
+            if ((acc += x.second) >= total / 2) return x.first;
+        return v.back().first;
+    }
+
+    /// What a local width is a fraction of: the feature size of p's nearest crease on p's side
+    /// (how far the basin may reach), or that crease's own scale, the smaller of its sides
+    /// (CreaseSize: a valley as sharp on a wide face as on the narrow one beside it).
+    enum class Scale { Side, Crease };
+    /// The side's size is taken at most SideCap() times the crease's own scale: a basin as wide
+    /// as a 50:1 sliver face is long has so gentle a slope near the crease that the snakes
+    /// stopped where they were seeded (bench/eval/gs_creases, a stepped shaft's shoulder rims).
+    static double SideCap() { return 4.0; }
+    double LocalWidth(int c, const SurfacePoint &p, double fraction, Scale scale) const
+    {
+        const double own = CreaseSize(c);
+        return fraction * (scale == Scale::Side ? std::min(FeatureSize(c, patch[p.face]), SideCap() * own) : own);
+    }
+
+    /// E(p) with the local width w = LocalWidth: 1 - exp(-(d/w)^2).
+    double LocalValue(const SurfacePoint &p, double fraction, Scale scale = Scale::Side) const
+    {
+        int c;
+        const double d = Distance(p, nullptr, &c);
+        if (!std::isfinite(d)) return 1.0;
+        const double t = d / LocalWidth(c, p, fraction, scale);
+        return 1.0 - std::exp(-t * t);
+    }
+    /// Its gradient (the width is constant within the basin of one crease).
+    vcg::Point3d LocalGradient(const SurfacePoint &p, double fraction, Scale scale = Scale::Side) const
+    {
+        vcg::Point3d c(0, 0, 0);
+        int which;
+        const double d = Distance(p, &c, &which);
+        if (!std::isfinite(d) || !(d > 0)) return vcg::Point3d(0, 0, 0);
+        return gradient(p, c, d, LocalWidth(which, p, fraction, scale));
     }
 
     /// E(p) = 1 - exp(-(d/w)^2) for basin width w.
@@ -161,6 +280,41 @@ public:
         vcg::Point3d c(0, 0, 0); // set by Distance whenever d is finite
         const double d = Distance(p, &c);
         if (!std::isfinite(d) || !(d > 0)) return vcg::Point3d(0, 0, 0);
+        return gradient(p, c, d, w);
+    }
+
+    /// The energy at every vertex (through one of its faces), e.g. for the vertex quality,
+    /// with the local width `fraction` * feature size (LocalValue).
+    std::vector<double> LocalVertexValues(double fraction) const
+    {
+        return vertexValues([&](const SurfacePoint &p) { return LocalValue(p, fraction); });
+    }
+
+    /// The energy at every vertex (through one of its faces), e.g. for the vertex quality.
+    std::vector<double> VertexValues(double w) const
+    {
+        return vertexValues([&](const SurfacePoint &p) { return Value(p, w); });
+    }
+
+private:
+    typedef std::vector<std::pair<int, double>> Sizes; // (patch, feature size) of each side
+
+    const MeshType *mesh = nullptr;
+    double angle = 0;
+    std::vector<vcg::Point3d> faceN;
+    std::vector<std::array<int, 3>> across;  // face across each edge on the same patch, -1 if none
+    std::vector<std::array<int, 3>> sharpOf; // crease index of each face edge, -1 if not a crease
+    std::vector<vcg::Segment3d> segs;
+    std::vector<int> patch;                  // smooth patch of each face
+    std::vector<Sizes> sizes;                // per crease
+    double loneSize = 1, maxSize = 1;
+    std::vector<int> candStart, cand;        // per face: the creases within reach on its patch
+    class PatchCreaseGrid;
+    std::shared_ptr<PatchCreaseGrid> grid;   // the creases, by patch
+
+    /// dE/dd * (x - c)/d for the width w, projected onto p's face.
+    vcg::Point3d gradient(const SurfacePoint &p, const vcg::Point3d &c, double d, double w) const
+    {
         const vcg::Point3d x = p.Pd(*mesh);
         // dE/dd = 2 d / w^2 exp(-(d/w)^2); times the unit direction (x - c) / d.
         vcg::Point3d g = (x - c) * (2.0 / (w * w) * std::exp(-(d / w) * (d / w)));
@@ -169,8 +323,8 @@ public:
         return g;
     }
 
-    /// The energy at every vertex (through one of its faces), e.g. for the vertex quality.
-    std::vector<double> VertexValues(double w) const
+    template <class F>
+    std::vector<double> vertexValues(F value) const
     {
         const MeshType &m = *mesh;
         std::vector<double> v(m.vert.size(), 1.0);
@@ -179,22 +333,13 @@ public:
             if (m.face[f].IsD()) continue;
             for (int k = 0; k < 3; ++k) {
                 const int vi = MV::VIndex(m, m.face[f].cV(k));
-                const double e = Value(SurfacePoint::AtCorner(int(f), k), w);
+                const double e = value(SurfacePoint::AtCorner(int(f), k));
                 v[vi] = done[vi] ? std::min(v[vi], e) : e;
                 done[vi] = 1;
             }
         }
         return v;
     }
-
-private:
-    const MeshType *mesh = nullptr;
-    double angle = 0;
-    std::vector<vcg::Point3d> faceN;
-    std::vector<std::array<int, 3>> across;  // face across each edge on the same patch, -1 if none
-    std::vector<std::array<int, 3>> sharpOf; // crease index of each face edge, -1 if not a crease
-    std::vector<vcg::Segment3d> segs;
-    std::vector<int> candStart, cand;        // per face: the creases within reach on its patch
 
     static vcg::Point3d P(const FaceType &f, int k) { return vcg::Point3d::Construct(f.cV(k)->cP()); }
     int addSeg(const MeshType &m, int a, int b)
@@ -207,26 +352,26 @@ private:
     std::vector<int> patches(const MeshType &m) const
     {
         const int nf = int(m.face.size());
-        std::vector<int> patch(nf, -1), stack;
+        std::vector<int> out(nf, -1), stack;
         int count = 0;
         for (int f = 0; f < nf; ++f) {
-            if (m.face[f].IsD() || patch[f] >= 0) continue;
-            patch[f] = count;
+            if (m.face[f].IsD() || out[f] >= 0) continue;
+            out[f] = count;
             stack.assign(1, f);
             while (!stack.empty()) {
                 const int g = stack.back();
                 stack.pop_back();
                 for (int k = 0; k < 3; ++k) {
                     const int h = across[g][k];
-                    if (h >= 0 && patch[h] < 0) {
-                        patch[h] = count;
+                    if (h >= 0 && out[h] < 0) {
+                        out[h] = count;
                         stack.push_back(h);
                     }
                 }
             }
             ++count;
         }
-        return patch;
+        return out;
     }
 
     /// The creases in vcglib's grid, each with the patches it bounds (one when the crease
@@ -276,6 +421,18 @@ private:
             NoMarker marker;
             return grid.GetClosest(fn, marker, c, maxDist, d, q) ? d : std::numeric_limits<double>::infinity();
         }
+        /// The distance from the middle m of crease s to the nearest other crease bounding patch
+        /// p whose point nearest to m lies within 60 degrees of the unit direction u (infinity
+        /// if none within maxDist).
+        double Facing(int s, const vcg::Point3d &m, const vcg::Point3d &u, int p, double maxDist)
+        {
+            if (creases.empty()) return std::numeric_limits<double>::infinity();
+            double d = maxDist;
+            vcg::Point3d q;
+            FacingDistance fn{p, s, u};
+            NoMarker marker;
+            return grid.GetClosest(fn, marker, m, maxDist, d, q) ? d : std::numeric_limits<double>::infinity();
+        }
         /// The creases bounding patch p within r of c (a crease may be listed more than once).
         void Within(const vcg::Point3d &c, int p, double r, std::vector<int> &out)
         {
@@ -307,6 +464,22 @@ private:
                 return true;
             }
         };
+        struct FacingDistance
+        {
+            int patch, self;
+            vcg::Point3d dir;
+            typedef vcg::Point3d QueryType;
+            static const vcg::Point3d &Pos(const QueryType &p) { return p; }
+            bool operator()(const Crease &o, const vcg::Point3d &p, double &minDist, vcg::Point3d &q) const
+            {
+                if (o.id == self || !o.Bounds(patch)) return false;
+                double d;
+                vcg::SegmentPointDistance<double>(o.seg, p, q, d);
+                if (!(d <= minDist) || !(d > 0) || (q - p) * dir < 0.5 * d) return false;
+                minDist = d;
+                return true;
+            }
+        };
         struct NoMarker // a crease in several cells is looked at again: harmless
         {
             void UnMarkAll() const {}
@@ -317,6 +490,39 @@ private:
         std::vector<Crease *> inBox;
         vcg::GridStaticPtr<Crease, double> grid;
     };
+
+    /// The local feature size of each side of each crease (see the top): from the crease's
+    /// middle into each face that has it as an edge, the distance to the nearest crease of
+    /// that face's patch facing it. One query of vcglib's grid per side.
+    void featureSizes(const MeshType &m)
+    {
+        vcg::Box3d box;
+        for (const auto &v : m.vert)
+            if (!v.IsD()) box.Add(vcg::Point3d::Construct(v.cP()));
+        loneSize = std::max(LoneSizeFraction() * box.Diag(), std::numeric_limits<double>::min());
+        sizes.assign(segs.size(), Sizes());
+        for (size_t f = 0; f < m.face.size(); ++f) {
+            if (m.face[f].IsD()) continue;
+            for (int k = 0; k < 3; ++k) {
+                const int s = sharpOf[f][k];
+                if (s < 0) continue;
+                const vcg::Point3d a = P(m.face[f], k), b = P(m.face[f], (k + 1) % 3);
+                vcg::Point3d u = faceN[f] ^ (b - a); // into the face (counter-clockwise faces)
+                if (!(u.Norm() > 0)) continue;
+                u /= u.Norm();
+                const double d = grid->Facing(s, (a + b) * 0.5, u, patch[f], box.Diag());
+                const double size = std::isfinite(d) ? d : loneSize;
+                bool found = false;
+                for (auto &x : sizes[s])
+                    if (x.first == patch[f]) x.second = std::min(x.second, size), found = true;
+                if (!found) sizes[s].push_back({patch[f], size});
+            }
+        }
+        maxSize = 0;
+        for (const auto &v : sizes)
+            for (const auto &x : v) maxSize = std::max(maxSize, x.second);
+        if (!(maxSize > 0)) maxSize = loneSize;
+    }
 
     /// For each face f of patch P (centroid c, radius rad): the creases bounding P whose
     /// distance to c is at most d + 2 rad, d the nearest one's, if d <= reach + rad. A crease
@@ -330,8 +536,7 @@ private:
         const int nf = int(m.face.size());
         candStart.assign(nf + 1, 0);
         cand.clear();
-        const std::vector<int> patch = patches(m);
-        PatchCreaseGrid grid(m, segs, sharpOf, patch);
+        PatchCreaseGrid &grid = *this->grid;
         std::vector<int> seen(segs.size(), -1), near;
         for (int f = 0; f < nf; ++f) {
             candStart[f] = int(cand.size());
@@ -354,37 +559,59 @@ private:
 };
 
 /// The crease energy as the snakes read it (SnakeEnergyField): evaluated at each sample, not
-/// interpolated from vertices. Level 0 has basin width w, level 1 (capture) 3w: the snakes
-/// first slither on the wide basins, then settle in the narrow ones.
+/// interpolated from vertices. Level 1 (capture) has the local basin width 3 f s, s the feature
+/// size of the nearest crease on the sample's side (f = CreaseEnergy::WidthFraction(smoothing)):
+/// it reaches across the face the snake was seeded on. Level 0 has the width f s', s' the
+/// crease's own scale (its narrower side): on a tessellation's long side slivers beside a
+/// narrow shoulder the side's own width made a valley so flat at its bottom that the curve
+/// stopped short of the rim (bench/eval/gs_creases). The snakes first slither on the wide
+/// basins, then settle in the narrow ones.
 template <class MeshType>
 class CreaseEnergyField : public SnakeEnergyField<MeshType>
 {
 public:
-    /// Basin widths of the levels for `steps` smoothing steps (see CreaseEnergy::WidthFor).
-    static std::vector<double> Widths(const MeshType &m, int steps)
+    typedef CreaseEnergy<MeshType> Crease;
+    /// Width fractions of the levels for `steps` smoothing steps.
+    static std::vector<double> Fractions(int steps)
     {
-        vcg::Box3d b;
-        for (const auto &v : m.vert)
-            if (!v.IsD()) b.Add(vcg::Point3d::Construct(v.cP()));
-        const double w = CreaseEnergy<MeshType>::WidthFor(b.Diag(), steps);
-        return {w, CaptureFactor() * w};
+        const double f = Crease::WidthFraction(steps);
+        return {f, CaptureFactor() * f};
     }
     static double CaptureFactor() { return 3.0; }
 
-    CreaseEnergyField(const MeshType &m, double angleDeg, const std::vector<double> &levelWidths) : widths(levelWidths)
+    CreaseEnergyField(const MeshType &m, double angleDeg, const std::vector<double> &levelFractions) : fractions(levelFractions)
     {
-        if (widths.empty()) throw SnakeError("The crease energy needs at least one basin width.");
-        crease.Build(m, angleDeg, CreaseEnergy<MeshType>::ReachInWidths() * *std::max_element(widths.begin(), widths.end()));
+        if (fractions.empty()) throw SnakeError("The crease energy needs at least one basin width.");
+        for (double f : fractions)
+            if (!std::isfinite(f) || f <= 0) throw SnakeError("The crease energy needs a positive basin width.");
+        crease.Build(m, angleDeg);
+        crease.Collect(Crease::ReachInWidths() * *std::max_element(fractions.begin(), fractions.end()) * crease.MaxFeatureSize());
     }
-    int Levels() const override { return int(widths.size()); }
-    double Value(int level, const SurfacePoint &p) const override { return crease.Value(p, width(level)); }
-    vcg::Point3d Gradient(int level, const SurfacePoint &p) const override { return crease.Gradient(p, width(level)); }
-    const CreaseEnergy<MeshType> &Creases() const { return crease; }
+    int Levels() const override { return int(fractions.size()); }
+    double Value(int level, const SurfacePoint &p) const override { return crease.LocalValue(p, fraction(level), scale(level)); }
+    vcg::Point3d Gradient(int level, const SurfacePoint &p) const override
+    {
+        return crease.LocalGradient(p, fraction(level), scale(level));
+    }
+    const Crease &Creases() const { return crease; }
+
+    /// The length unit of a snake seeded at `pts` (spacing, step caps): the basin width without
+    /// smoothing of the nearest creases' own scale (CreaseSize), the median over the points; of
+    /// the whole part's creases without points. Smoothing widens the basins, never the sampling.
+    double LengthUnit(const std::vector<SurfacePoint> &pts = {}) const
+    {
+        std::vector<double> u;
+        for (const SurfacePoint &p : pts) u.push_back(crease.CreaseSizeAt(p));
+        if (u.empty()) return Crease::WidthFraction(0) * crease.MedianCreaseSize();
+        std::nth_element(u.begin(), u.begin() + u.size() / 2, u.end());
+        return Crease::WidthFraction(0) * u[u.size() / 2];
+    }
 
 private:
-    CreaseEnergy<MeshType> crease;
-    std::vector<double> widths;
-    double width(int level) const { return widths[std::max(0, std::min(level, int(widths.size()) - 1))]; }
+    Crease crease;
+    std::vector<double> fractions;
+    double fraction(int level) const { return fractions[std::max(0, std::min(level, int(fractions.size()) - 1))]; }
+    typename Crease::Scale scale(int level) const { return level <= 0 ? Crease::Scale::Crease : Crease::Scale::Side; }
 };
 
 } // namespace tri

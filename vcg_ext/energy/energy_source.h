@@ -162,15 +162,18 @@ public:
         return {};
     }
 
-    /// The length unit of new snakes (spacing, step caps, tolerances), 0 = the engine's own
-    /// (from the edges along the seed path). With the crease energy: its basin width without
-    /// smoothing, since on a CAD tessellation the edges are slivers as long as the part and
-    /// say nothing about the features; smoothing widens the basin, never the sampling (the
-    /// corners of a pocket's rim are cut by about one sample spacing).
-    double LengthScale() const
+    /// The length unit of new snakes seeded at `seeds` (spacing, step caps, tolerances), 0 =
+    /// the engine's own (from the edges along the seed path). With the crease energy: its basin
+    /// width without smoothing at the creases nearest to the seeds (CreaseEnergyField::
+    /// LengthUnit; of the whole part without seeds), since on a CAD tessellation the edges are
+    /// slivers as long as the part and say nothing about the features; smoothing widens the
+    /// basin, never the sampling (the corners of a pocket's rim are cut by about one sample
+    /// spacing). Builds the surface if needed.
+    double LengthScale(const std::vector<SurfacePoint> &seeds = {})
     {
         if (fromQuality || type != FeatureEnergyType::Crease) return 0;
-        return CreaseEnergyField<MeshType>::Widths(mesh, 0)[0];
+        const auto *f = dynamic_cast<const CreaseEnergyField<MeshType> *>(&EnsureSurface()->EnergyField());
+        return f ? f->LengthUnit(seeds) : 0;
     }
     /// The mean edge length, without building the surface for it.
     double MeanEdge() const
@@ -235,7 +238,7 @@ private:
         const int capture = CaptureSmoothingFor(fromQuality, type);
         if (s.CaptureSmoothing() != capture) s.SetCaptureSmoothing(capture);
         if (fromQuality || type != FeatureEnergyType::Crease) return;
-        s.SetEnergyField(std::make_shared<CreaseEnergyField<MeshType>>(mesh, angle, CreaseEnergyField<MeshType>::Widths(mesh, smooth)));
+        s.SetEnergyField(std::make_shared<CreaseEnergyField<MeshType>>(mesh, angle, CreaseEnergyField<MeshType>::Fractions(smooth)));
     }
 };
 

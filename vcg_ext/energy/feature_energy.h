@@ -120,9 +120,10 @@ public:
         case FeatureEnergyType::QuadricError: QuadricErrorImpl(m, fn, meanEdge); break;
         case FeatureEnergyType::Crease: {
             CreaseEnergy<MeshType> ce;
-            const double w = CreaseEnergy<MeshType>::WidthFor(Diagonal(m), smoothingSteps);
-            ce.Build(m, creaseAngleDeg, CreaseEnergy<MeshType>::ReachInWidths() * w);
-            const std::vector<double> e = ce.VertexValues(w);
+            const double f = CreaseEnergy<MeshType>::WidthFraction(smoothingSteps); // of the local feature size
+            ce.Build(m, creaseAngleDeg);
+            ce.Collect(CreaseEnergy<MeshType>::ReachInWidths() * f * ce.MaxFeatureSize());
+            const std::vector<double> e = ce.LocalVertexValues(f);
             for (size_t i = 0; i < m.vert.size(); ++i)
                 if (!m.vert[i].IsD()) m.vert[i].Q() = ScalarType(e[i]);
             st.creases = ce.CreaseCount();

@@ -131,8 +131,8 @@ public:
     /// False when the mesh lost or gained elements since the snakes were built on it.
     bool MeshMatches() const { return !HasSurface() || energy.SurfacePtr()->MatchesMesh(); }
     double MeanEdge() { return EnsureSurface().MeanEdge(); }
-    /// The length unit of new snakes (SnakeEnergySource::LengthScale).
-    double LengthScale() const { return energy.LengthScale(); }
+    /// The length unit of new snakes seeded at `seeds` (SnakeEnergySource::LengthScale).
+    double LengthScale(const std::vector<SurfacePoint> &seeds = {}) { return energy.LengthScale(seeds); }
 
     // ================================================================ seeds
     /// The seed list being placed (SnakeSeedList); each change below is one undo step.
@@ -214,10 +214,11 @@ public:
         // Seeds inside faces (clicks) make a curve through those points; vertex seeds (and
         // clicks exactly at vertices) the paper's vertex path.
         std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
+        const std::vector<SurfacePoint> pts = seedList.Points(EnsureSurface());
         if (seedList.AtVertices())
-            sn->InitFromSeeds(seedList.Vertices(), closed, seedCost, LengthScale());
+            sn->InitFromSeeds(seedList.Vertices(), closed, seedCost, LengthScale(pts));
         else
-            sn->InitFromSeedPoints(seedList.Points(EnsureSurface()), closed, seedCost, LengthScale(), &seedPathIndex());
+            sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(pts), &seedPathIndex());
         addSnake(std::move(sn), true);
         return selected;
     }
@@ -229,7 +230,7 @@ public:
         EnsureSurface();
         checkMesh();
         std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(), &seedPathIndex());
+        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(pts), &seedPathIndex());
         addSnake(std::move(sn), false);
         return selected;
     }
@@ -658,7 +659,7 @@ private:
         lp.view = view;
         const typename StrokeLoop<MeshType>::Result r = StrokeLoop<MeshType>::Complete(mesh, stroke, lp);
         std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        sn->InitFromSurfacePath(r.loop, true, LengthScale());
+        sn->InitFromSurfacePath(r.loop, true, LengthScale(r.loop));
         return sn;
     }
     // a new snake, built from the seeds (`fromSeeds`: they are used up) or points: selected

@@ -291,7 +291,8 @@ public:
                "tessellations (flat faces made of long slivers, every vertex on a crease): the sharp edges are "
                "found from dihedral angles (<i>Crease angle</i>) and the energy at any surface point grows with "
                "its distance d to the nearest crease of its face, 1 - exp(-(d/w)^2), with w = (1 + smoothing "
-               "steps) % of the bounding box diagonal; the vertex quality gets its values at the vertices. "
+               "steps) / 18 of the local feature size (how far the face reaches across that crease); the vertex "
+               "quality gets its values at the vertices. "
                "<b>Part boundary (concave)</b>, for closed loops around parts of organic meshes and scans (a "
                "finger, a leg, an ear's base, an eye's rim, a bottle's neck): low only on concave valleys (the "
                "minima rule: parts meet along lines of negative minimum curvature), 1 on flat, convex and "
@@ -339,8 +340,8 @@ public:
                 MaxSmoothingSteps(),
                 "Number of Laplacian smoothing passes over the per-vertex energy before normalisation "
                 "(0 = none). A little smoothing removes noise and widens the basin of attraction of "
-                "features. For the crease energy it widens the basin by distance: w = (1 + steps) % of the "
-                "bounding box diagonal."),
+                "features. For the crease energy it widens the basin by distance: w = (1 + steps) / 18 of the "
+                "local feature size."),
             CreaseAngleDef(),
             MergeDuplicatesDef(),
             D::MakeBool("Colorize", "colorize", "Colorize by energy", true,
