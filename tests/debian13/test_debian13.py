@@ -172,11 +172,7 @@ def cut_2020(mesh, curve):
     if not os.path.exists(out):
         return None
     ply = mlhost.read_ply(out)
-    area = 0.0
-    for f in ply.faces:
-        if f["quality"] == 1:
-            a, b, c = (ply.vertices[i] for i in f["vertex_indices"])
-            area += abs((b["x"] - a["x"]) * (c["y"] - a["y"]) - (c["x"] - a["x"]) * (b["y"] - a["y"])) / 2
+    area = mlhost.inside_area(ply)
     return (len(ply.vertices), [i for i, v in enumerate(ply.vertices) if v["flags"] & mlhost.SELECTED],
             len(ply.faces), area)
 

@@ -262,6 +262,17 @@ def plate_and_square(folder, n=10):
         json.dump(curve, f)
     return mesh, path, curve
 
+def inside_area(ply):
+    """Area of the faces a cut marked inside (face quality 1) of a mesh in the plane z = 0, such
+    as plate_and_square's plate."""
+    area = 0.0
+    for f in ply.faces:
+        if f["quality"] == 1:
+            a, b, c = (ply.vertices[i] for i in f["vertex_indices"])
+            area += abs((b["x"] - a["x"]) * (c["y"] - a["y"]) - (c["x"] - a["x"]) * (b["y"] - a["y"])) / 2
+    return area
+
+
 def grid_cube(n):
     """Unit cube [0,1]^3 with an n x n grid of quads (two triangles each) per side,
     outward oriented, vertices shared. Returns (verts, faces)."""

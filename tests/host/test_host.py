@@ -530,11 +530,7 @@ class HostTests(mlhost.WorkDirTestCase):
         rc, log = self.run_script(mesh, [(FILTER_CUT, {"CurveFile": curve})], outputs=[["-o", out, "-m", "fq"]])
         self.assertRegex(log, r"Cut \(select\) along a closed snake")
         ply = mlhost.read_ply(out)
-        area = 0.0
-        for f in ply.faces:
-            if f["quality"] == 1:
-                a, b, c = (ply.vertices[i] for i in f["vertex_indices"])
-                area += abs((b["x"] - a["x"]) * (c["y"] - a["y"]) - (c["x"] - a["x"]) * (b["y"] - a["y"])) / 2
+        area = mlhost.inside_area(ply)
         self.assertAlmostEqual(area, 25.0, places=5)
         self.assertGreater(len(ply.faces), 200)
         rc, log = self.run_script(mesh, [(FILTER_CUT, {"CurveFile": curve, "Split": True})])
