@@ -336,6 +336,10 @@ void EditGeometricSnakePlugin::connectDock()
         connect(s, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double) { applyParams(); });
     clicked(d->step, [this] { stepOnce(); });
     connect(d->run, &QPushButton::toggled, this, [this](bool on) { setRunning(on); });
+    // the panel-state hook (edit_snake_status.cpp) tells where the widgets moved and the limits typed
+    connect(d, &SnakeDock::sectionToggled, this, [this] { refreshDock(); });
+    connect(d->maxOperations, QOverload<int>::of(&QSpinBox::valueChanged), this, [this](int) { refreshDock(); });
+    connect(d->timeLimit, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double) { refreshDock(); });
     clicked(d->pin, [this] { editCurrent("pin", [this] { ctl->TogglePin(currentSample); }); });
     clicked(d->insert, [this] { editCurrent("insert", [this] { currentSample = ctl->InsertSampleAfter(currentSample); }); });
     clicked(d->remove, [this] {

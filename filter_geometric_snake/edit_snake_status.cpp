@@ -8,6 +8,7 @@
 #include "edit_geometric_snake.h"
 #include "snake_dock.h"
 
+#include <QAbstractButton>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
@@ -17,7 +18,9 @@ QString count(long n, const char *one, const char *many) { return QString("%1 %2
 
 /// Environment hook for scripted GUI tests: GS_SNAKE_PANEL_STATE=<file.json> makes the tool write
 /// what its panel shows (status line, badge, seed count, which sample buttons are enabled,
-/// suspended) to that file whenever it changes.
+/// suspended, the Run's limits) to that file whenever it changes, with where its buttons and
+/// fields are on the screen, so that a test clicks and types into them in any MeshLab release
+/// (fonts and styles move them).
 void writePanelState(const SnakeDock *d)
 {
     static const QString path = QString::fromLocal8Bit(qgetenv("GS_SNAKE_PANEL_STATE"));
@@ -31,6 +34,23 @@ void writePanelState(const SnakeDock *d)
     o["insert"] = d->insert->isEnabled();
     o["delete"] = d->remove->isEnabled();
     o["suspended"] = !d->suspended->isHidden();
+    o["maxOperations"] = d->maxOperations->value();
+    o["timeLimit"] = d->timeLimit->value();
+    // each button by its text (a section's header by "section <title>") and each named field:
+    // its screen box, and whether it is shown and enabled
+    QJsonObject widgets;
+    for (const QWidget *w : d->findChildren<QWidget *>()) {
+        const auto *b = qobject_cast<const QAbstractButton *>(w);
+        QString name = w->objectName();
+        if (name.isEmpty() && b) name = b->text();
+        if (name.isEmpty() || name.startsWith("qt_") || widgets.contains(name)) continue;
+        const QPoint p = w->mapToGlobal(QPoint(0, 0));
+        QJsonObject box{{"x", p.x()}, {"y", p.y()}, {"w", w->width()}, {"h", w->height()},
+                        {"visible", w->isVisible()}, {"enabled", w->isEnabled()}};
+        if (b && b->isCheckable()) box["checked"] = b->isChecked(); // an open section
+        widgets[name] = box;
+    }
+    o["widgets"] = widgets;
     QSaveFile f(path);
     if (f.open(QIODevice::WriteOnly)) {
         f.write(QJsonDocument(o).toJson());

@@ -201,10 +201,12 @@ SnakeDock::SnakeDock(QWidget *parent) : QDockWidget(parent)
     lp->addRow("Balloon (pressure)", balloon);
     lp->addRow("Spacing (edges)", spacing);
     maxOperations = new QSpinBox;
+    maxOperations->setObjectName("Max operations");
     maxOperations->setRange(1, 1000000);
     maxOperations->setValue(500);
     maxOperations->setToolTip("A Run ends after this many operations if the snake has not converged (Run again to go on)");
     timeLimit = spin(0, 1e6, 1, 1, 60, "A Run ends after this many seconds if the snake has not converged (0: no limit)");
+    timeLimit->setObjectName("Time limit");
     lp->addRow("Max operations", maxOperations);
     lp->addRow("Time limit (s)", timeLimit);
 
@@ -249,6 +251,7 @@ QWidget *SnakeDock::section(QVBoxLayout *into, const QString &title, bool open)
     // a collapsible section: a flat header button with an arrow, and its body
     QToolButton *head = new QToolButton;
     head->setText(title);
+    head->setObjectName("section " + title); // named for the panel-state hook (edit_snake_status.cpp)
     head->setCheckable(true);
     head->setChecked(open);
     head->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
@@ -261,9 +264,10 @@ QWidget *SnakeDock::section(QVBoxLayout *into, const QString &title, bool open)
     QFrame *body = new QFrame;
     body->setFrameShape(QFrame::StyledPanel);
     body->setVisible(open);
-    connect(head, &QToolButton::toggled, body, [head, body](bool on) {
+    connect(head, &QToolButton::toggled, body, [this, head, body](bool on) {
         body->setVisible(on);
         head->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+        QTimer::singleShot(100, this, &SnakeDock::sectionToggled); // after the layout has moved the widgets
     });
     into->addWidget(head);
     into->addWidget(body);

@@ -91,6 +91,10 @@ public:
     void setStatus(const QString &text, bool error = false);
     void setConvergence(int state); // 0 no snake, 1 moving, 2 converged, 3 running, 4 stopped (snake/stop.h)
 
+signals:
+    /// A section was opened or closed, once the panel has been laid out again (the widgets moved).
+    void sectionToggled();
+
 protected:
     QWidget *section(QVBoxLayout *into, const QString &title, bool open);
     bool placed = false; // placed once from the settings; then Qt keeps its place while hidden

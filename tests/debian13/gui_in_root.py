@@ -5,7 +5,8 @@ plugins, shows no plugin-loading error, and the Geometric Snake edit tool starts
 "Started Mode Geometric Snake" only when the tool's startEdit succeeded). With --clicks, the
 user's first steps too, as tests/host/test_edit_gui.py does them in MeshLab 2020.09: the panel
 docks in the main window, four clicks on the cube's front face and Enter build a snake, R runs it
-onto the cube's edge (screenshots with xwd, tests/debian13/xwd_image.py).
+onto the cube's edge (screenshots with xwd, tests/debian13/xwd_image.py), and the panel's Cut
+buttons select, split and cut a plate along a square snake.
 
     xvfb-run -n N -s "-screen 0 1600x1024x24" python3 gui_in_root.py MESH WORK_DIR [VERSION] [--clicks]
     (VERSION: MeshLab's, e.g. 2022.02 (default) or 2025.07; its main window's title starts with it)
@@ -199,8 +200,56 @@ def with_clicks():
             print(ml.log_text()[-4000:])
 
 
+def with_cut():
+    """Issue 34 in this MeshLab: the panel's Cut buttons, found through the panel-state hook (the
+    release's fonts and style move them), on a flat 10 x 10 plate whose session holds a closed
+    square snake round [2.5, 7.5]^2, as tests/host/test_edit_gui_cut.py does in 2020.09: Select
+    inside embeds the square and selects exactly its inside (area 25 of 100), Split into layers
+    adds the two layers, Cut open makes the square's edges boundary edges."""
+    import xwd_image  # puts tests/host (gui.py, mlhost.py) on the path
+    import gui
+    import mlhost
+    panel = gui.panel_state_reader(os.path.join(work, "panel_cut.json"))
+    mesh, _, curve = mlhost.plate_and_square(work)
+    with open(mesh + ".snakes.json", "w") as f:  # the tool restores it when it starts
+        json.dump({"format": "geometric-snake-session", "version": 1, "mesh": {"vertices": 121, "faces": 200},
+                   "snakes": [curve], "selected": 0}, f)
+    ml = gui.MeshLab(mesh, "cut", autoexport=False)
+    log = lambda pattern, timeout=10: gui.wait_for(lambda: re.search(pattern, ml.log_text()), timeout)
+    try:
+        if not check(bool(log("Started Mode Geometric Snake", 60)), "the tool started on the plate"):
+            return
+        # room for the Cut section (last, closed by default): the sections above it closed
+        for title in ("Seeds", "Editing (selected sample)", "Output"):
+            gui.set_section(panel, title, False)
+        if not check(gui.set_section(panel, "Cut", True), "a click opens the panel's Cut section"):
+            return
+        xwd_image.screenshot("cut_01_section.xwd")
+        check(gui.click_widget(panel, "Select inside"), "the Select inside button is shown")
+        m = log(r"Selected the inside of snake 1: (\d+) faces \(area ([0-9.]+) of ([0-9.]+)\)\. The snake was embedded "
+                r"into the mesh: (\d+) vertices and (\d+) faces added")
+        check(bool(m) and float(m.group(2)) == 25 and float(m.group(3)) == 100,
+              "Select inside embeds the square and selects exactly its inside: %s"
+              % ("%s faces, area %s of %s (%s vertices, %s faces added)" % m.groups() if m else "no Log line"))
+        xwd_image.screenshot("cut_02_inside.xwd")
+        check(gui.click_widget(panel, "Split into layers"), "the Split into layers button is shown")
+        m = log(r"Split along snake 1 into layers \"plate inside\" \((\d+) faces\) and \"plate outside\" \((\d+) faces\)")
+        check(bool(m), "Split into layers adds the inside and outside layers: %s" % (m.group(0) if m else "no Log line"))
+        check(gui.click_widget(panel, "Cut open"), "the Cut open button is shown")
+        m = log(r"Cut open along snake 1: its (\d+) vertices on the mesh are on the boundary now \((\d+) vertices")
+        check(bool(m) and int(m.group(2)) >= int(m.group(1)),
+              "Cut open gives the curve's vertices a copy on the other side (%s)" % (m.groups() if m else "no Log line",))
+        xwd_image.screenshot("cut_03_done.xwd")
+    finally:
+        ml.kill()
+        if failures:
+            print("--- MeshLab output (%s)" % ml.logpath)
+            print(ml.log_text()[-4000:])
+
+
 if clicks:
     with_clicks()
+    with_cut()
 else:
     started_only()
 sys.exit(1 if failures else 0)

@@ -599,3 +599,45 @@ def status_reds(text, name):
         return None
     _, px, py, pw, ph = pg
     return red_pixels(os.path.join(WORK, "%s.png" % name), px, py + 20, pw, 120)
+
+
+def panel_widget(panel, name, timeout=3):
+    """The box (x, y, w, h) of the panel's widget `name` (a button's text, "section <title>" for a
+    section's header, or a field's name: "Max operations", "Time limit") as the panel-state hook
+    last wrote it (`panel` from panel_state_reader), once it is shown; else None."""
+    s = panel(lambda s: s.get("widgets", {}).get(name, {}).get("visible"), timeout)
+    w = s.get("widgets", {}).get(name)
+    return (w["x"], w["y"], w["w"], w["h"]) if w and w.get("visible") else None
+
+
+def set_section(panel, title, want_open):
+    """Opens or closes the panel's section `title` by a click on its header: True once it is as asked."""
+    name = "section " + title
+    s = panel(lambda s: name in s.get("widgets", {}))
+    w = s.get("widgets", {}).get(name)
+    if not w:
+        return False
+    if w.get("checked") != want_open:
+        xdo("mousemove", w["x"] + w["w"] // 4, w["y"] + w["h"] // 2, "click", 1)
+    return bool(panel(lambda s: s.get("widgets", {}).get(name, {}).get("checked") == want_open))
+
+
+def click_widget(panel, name):
+    """Clicks the middle of the panel's widget `name` (see panel_widget): False if it is not shown."""
+    b = panel_widget(panel, name)
+    if b:
+        xdo("mousemove", b[0] + b[2] // 2, b[1] + b[3] // 2, "click", 1)
+    return bool(b)
+
+
+def type_into(panel, name, text):
+    """Types `text` into the panel's field `name` as a user does: a click in it, Ctrl+A, the text,
+    Tab to leave it. False if the field is not shown."""
+    if not click_widget(panel, name):
+        return False
+    time.sleep(0.3)
+    xdo("key", "ctrl+a")
+    xdo("type", "--delay", "50", text)
+    xdo("key", "Tab")
+    time.sleep(0.5)
+    return True

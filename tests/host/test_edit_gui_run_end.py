@@ -10,7 +10,8 @@ side), MeshLab opens the mesh, the tool starts, Shift+Enter builds the closed sn
 The Run must end by itself within Max operations (the panel's default, 500) and the time limit
 (60 s), with its reason in MeshLab's Log (the Run line: "stopped ...; collapsed: ..."), in the
 snake's JSON (stats.stop) and in red in the panel's status line. Before the fix both Runs never
-ended (the test waits the time limit and a margin, then fails).
+ended (the test waits the time limit and a margin, then fails). Then the limits typed into the
+panel's fields (issue 37) end the bunny's Run.
 """
 import os
 import re
@@ -72,10 +73,57 @@ def run_case(name, mesh_name, seeds, expect):
         ml.kill()
 
 
+def typed_limits(panel):
+    """Issue 37: the panel's Max operations and Time limit fields, typed into as a user does (the
+    Parameters section opened, the boxes from the panel-state hook), are the Run's limits. The
+    bunny's ear base (its Run takes far more than 25 operations) with Max operations 25 stops after
+    exactly 25 operations and says so, in red; the time limit typed is the panel's."""
+    name, mesh_name, seeds = "typed_limits", CASES[1][1], CASES[1][2]
+    mesh = g.session_with_seeds(os.path.join(MESHES, mesh_name), seeds)
+    auto = os.path.join(g.WORK, "auto.json")
+    ml = g.MeshLab(mesh, name)
+    try:
+        if not g.build_closed_from_session(ml, name, auto):
+            return
+        # room for the Parameters section (closed by default): the sections above it closed
+        for title in ("Seeds", "Editing (selected sample)", "Snakes", "Output"):
+            g.set_section(panel, title, False)
+        if not check(g.set_section(panel, "Parameters", True), "%s: a click opens the Parameters section" % name):
+            return
+        g.screenshot("%s_parameters.png" % name)
+        check(g.type_into(panel, "Max operations", "25"), "%s: the Max operations field is shown" % name)
+        ops = panel(lambda s: s.get("maxOperations") == 25).get("maxOperations")
+        check(ops == 25, "%s: Max operations typed: 25 (the panel says %s)" % (name, ops))
+        check(g.type_into(panel, "Time limit", "30"), "%s: the Time limit field is shown" % name)
+        secs = panel(lambda s: s.get("timeLimit") == 30).get("timeLimit")
+        check(secs == 30, "%s: Time limit typed: 30 s (the panel says %s)" % (name, secs))
+        g.focus_view()
+        lines, waited = g.run_until_logged(ml, name, 40)
+        if not check(bool(lines), "%s: the Run ends by itself (waited %.1f s)" % (name, waited)):
+            xdo("key", "Escape")
+            return
+        state, n = lines[0][:2]
+        text = ml.log_text()
+        log("%s: Run %s after %d operations, %.1f s" % (name, state, n, waited))
+        check(state == "stopped" and n == 25, "%s: the Run stopped after the 25 operations typed (%s after %d)"
+              % (name, state, n))
+        check("Max operations (25) reached" in text, "%s: the Log says Max operations (25) was reached" % name)
+        j = g.stopped_snake(auto)
+        stop = samples(j)[0]["stats"].get("stop") if j else None
+        check(stop == "max_operations", "%s: the snake's JSON says why (stats.stop = %s)" % (name, stop))
+        st = panel(lambda s: s.get("error"))
+        check(bool(st.get("error")) and "25" in st.get("status", ""),
+              "%s: the status line shows the limit in red (%r)" % (name, st.get("status")))
+    finally:
+        ml.kill()
+
+
 def main():
     g.start("edit_gui_run_end")
+    panel = g.panel_state_reader(os.path.join(g.WORK, "panel.json"))
     for c in CASES:
         run_case(*c)
+    typed_limits(panel)
     return g.finish()
 
 
