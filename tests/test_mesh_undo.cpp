@@ -5,7 +5,10 @@
 // snakes as they were; Redo the cut mesh.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
+#include <unistd.h>
 #include <string>
 
 #include <snake_test_util.h>
@@ -181,4 +184,51 @@ TEST(SnakeMeshUndo, BoundedByCountAndMemoryAndSaysWhyAStepIsNotKept)
     EXPECT_NE(why.find("deleted"), std::string::npos) << why;
     // a new step drops the redo side
     EXPECT_FALSE(undo.CanRedo());
+}
+
+TEST(SnakeMeshUndo, TheSidecarOfTheUncutMeshSurvivesTheCutAndTheCutSessionGoesToARecoveryFile)
+{
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("gs_mesh_undo_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string mesh = (dir / "plate.ply").string(), side = SnakeSidecar::Path(mesh);
+    std::ofstream(mesh) << "the mesh on disk";
+
+    CMeshO m;
+    Controller ctl(m);
+    MakePlateWithSnake(m, ctl);
+    ctl.OpenSidecar(mesh, true, 1764000000);
+    ASSERT_EQ(ctl.AutosavePath(), side);
+    ASSERT_TRUE(ctl.Autosave(true)); // the tool saves the session before the cut
+    std::stringstream was;
+    was << std::ifstream(side).rdbuf();
+
+    // the cut, then the session goes on on the cut mesh (from the mesh, not the sidecar)
+    const std::string session = ctl.ToJson().dump();
+    ASSERT_GT(CutSelectInside(m, ctl).addedFaces, 0);
+    UpdateTopology<CMeshO>::FaceFace(m);
+    UpdateTopology<CMeshO>::VertexFace(m);
+    Controller after(m);
+    const Controller::SidecarStatus st = after.OpenSidecar(mesh, false, 1764000000);
+    EXPECT_TRUE(st.unreadable) << "the sidecar of the uncut mesh would be overwritten";
+    EXPECT_NE(after.AutosavePath(), side);
+    EXPECT_NE(after.AutosavePath().find("plate.ply.snakes.recovered-"), std::string::npos) << after.AutosavePath();
+    after.SetSeeds({5, 40});
+    ASSERT_TRUE(after.Autosave(true));
+    std::stringstream now;
+    now << std::ifstream(side).rdbuf();
+    EXPECT_EQ(now.str(), was.str()) << "the sidecar of the uncut mesh changed";
+    // the cut mesh's session is recoverable from its file
+    Controller back(m);
+    EXPECT_TRUE(back.Load(after.AutosavePath()));
+    EXPECT_EQ(back.Seeds().size(), 2u);
+    // and the uncut mesh's from the sidecar
+    CMeshO m2;
+    Controller c2(m2);
+    MakePlateWithSnake(m2, c2);
+    EXPECT_TRUE(c2.Load(side));
+    EXPECT_EQ(c2.SnakeCount(), 1);
+    (void)session;
+    fs::remove_all(dir);
 }
