@@ -80,25 +80,46 @@ public:
                                        m.face.size() * sizeof(typename MeshType::FaceType));
     }
 
-    /// Keeps `m` (about to be changed by `label`), its session and history, and drops the redo
-    /// side. False (nothing kept, `why` says why) if the copy would exceed the limit.
-    bool Push(MeshType &m, std::string session, History history, const std::string &label, std::string &why)
+    /// A copy of `m` for a step, made before the action (whose outcome decides whether it is
+    /// kept: Push), or nullptr if it would not fit the limit or cannot hold (`why` says why).
+    std::unique_ptr<MeshType> Snapshot(MeshType &m, std::string &why) const
     {
         why.clear();
-        clear(redo);
         const size_t b = MeshBytes(m);
         if (size_t(m.vn) != m.vert.size() || size_t(m.fn) != m.face.size()) {
             // a copy leaves deleted elements out: the session's face indices would not hold
             why = "the mesh has deleted vertices or faces not yet compacted";
-            return false;
+            return nullptr;
         }
         if (b > par.byteLimit) {
             why = "the mesh is too large to keep a copy for undo (" + std::to_string(b >> 20) + " MB, the limit is " +
                   std::to_string(par.byteLimit >> 20) + " MB)";
+            return nullptr;
+        }
+        std::unique_ptr<MeshType> c(new MeshType);
+        detail::EnableOptionalLike(*c, m);
+        Copy(*c, m);
+        return c;
+    }
+    /// Keeps `before` (Snapshot of the mesh before the action `label`), the session and its
+    /// history then, as the newest step, and drops the redo side.
+    void Push(std::unique_ptr<MeshType> before, std::string session, History history, const std::string &label)
+    {
+        clear(redo);
+        const size_t b = MeshBytes(*before);
+        undo.push_back(Step{std::move(before), std::move(session), std::move(history), label, b});
+        while (undo.size() > 1 && (undo.size() > par.maxSteps || Bytes() > par.byteLimit)) undo.pop_front();
+    }
+    /// Snapshot and Push at once: false (nothing kept, the redo side dropped, `why` says why) if
+    /// the mesh cannot be kept.
+    bool Push(MeshType &m, std::string session, History history, const std::string &label, std::string &why)
+    {
+        std::unique_ptr<MeshType> c = Snapshot(m, why);
+        if (!c) {
+            clear(redo);
             return false;
         }
-        undo.push_back(snapshot(m, std::move(session), std::move(history), label, b));
-        while (undo.size() > 1 && (undo.size() > par.maxSteps || Bytes() > par.byteLimit)) undo.pop_front();
+        Push(std::move(c), std::move(session), std::move(history), label);
         return true;
     }
 
@@ -149,20 +170,16 @@ private:
     Param par;
     std::deque<Step> undo, redo;
 
-    Step snapshot(MeshType &m, std::string session, History history, const std::string &label, size_t b) const
-    {
-        Step s{std::unique_ptr<MeshType>(new MeshType), std::move(session), std::move(history), label, b};
-        detail::EnableOptionalLike(*s.mesh, m);
-        Copy(*s.mesh, m);
-        return s;
-    }
     static void clear(std::deque<Step> &d) { d.clear(); }
     bool swap(std::deque<Step> &from, std::deque<Step> &to, MeshType &m, std::string &session, History &history)
     {
         if (from.empty()) return false;
         Step s = std::move(from.back());
         from.pop_back();
-        to.push_back(snapshot(m, std::move(session), std::move(history), s.label, MeshBytes(m)));
+        std::unique_ptr<MeshType> now(new MeshType);
+        detail::EnableOptionalLike(*now, m);
+        Copy(*now, m);
+        to.push_back(Step{std::move(now), std::move(session), std::move(history), s.label, MeshBytes(m)});
         Copy(m, *s.mesh);
         session = std::move(s.session);
         history = std::move(s.history);
