@@ -126,7 +126,7 @@ def main():
         m = re.search(r"Selected the inside of snake 1: \d+ faces .* (\d+) vertices and (\d+) faces added; the session "
                       r"goes on on the cut mesh \(Ctrl\+Z undoes the cut\)\.", ml.log_text())
         check(bool(m) and int(m.group(1)) > 0, "the exact Select inside embeds the snake (%s)"
-              % (m.groups() if m else "no Log line"))
+              % (str(m.groups()) if m else "no Log line"))
         added = (int(m.group(1)), int(m.group(2))) if m else (0, 0)
         check(bool(re.search(r"the cut mesh is not the file plateau\.ply on disk: its session is saved to \S*"
                              r"plateau\.ply\.snakes\.recovered-", ml.log_text())),
@@ -137,7 +137,7 @@ def main():
         m = re.search(r"Undid the cut \(select inside\): the mesh has (\d+) vertices and (\d+) faces as before it",
                       ml.log_text())
         check(bool(m) and (int(m.group(1)), int(m.group(2))) == (121, 200),
-              "Ctrl+Z takes the cut back: 121 vertices and 200 faces (%s)" % (m.groups() if m else "no Log line"))
+              "Ctrl+Z takes the cut back: 121 vertices and 200 faces (%s)" % (str(m.groups()) if m else "no Log line"))
         check(n < 100, "no face is drawn selected after the cut's undo (%d tinted pixels)" % n)
         time.sleep(1.5)
         check(faces_of(curve_state(snakes_of(auto))) == ran_faces, "the snake is back on the faces the Run left it on")
@@ -145,7 +145,7 @@ def main():
         time.sleep(3)
         m = re.search(r"Redid the cut \(select inside\): the mesh has (\d+) vertices and (\d+) faces\.", ml.log_text())
         check(bool(m) and (int(m.group(1)), int(m.group(2))) == (121 + added[0], 200 + added[1]),
-              "Ctrl+Y cuts again (%s)" % (m.groups() if m else "no Log line"))
+              "Ctrl+Y cuts again (%s)" % (str(m.groups()) if m else "no Log line"))
         g.xdo("key", "ctrl+z")
         time.sleep(3)
         check(len(re.findall(r"Undid the cut \(select inside\): the mesh has 121 vertices and 200 faces",
