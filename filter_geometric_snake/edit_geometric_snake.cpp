@@ -413,6 +413,7 @@ void EditGeometricSnakePlugin::undoRedo(bool redo)
 {
     if (!ctl) return;
     setRunning(false);
+    if (undoRedoHostStep(redo)) return; // a cut or split (edit_geometric_snake_cut.cpp)
     std::string label = redo ? ctl->RedoLabel() : ctl->UndoLabel();
     bool done = false;
     const long selection = ctl->SelectionRevision();

@@ -30,6 +30,7 @@
 #include "edit_snake_lifecycle.h"
 #include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/session/controller.h>
+#include <vcg_ext/session/mesh_undo.h>
 
 class QDockWidget;
 class QKeyEvent;
@@ -194,6 +195,25 @@ private:
     void cutSplit();
     void connectCutButtons();
     void afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map);
+    // the undo of cuts and splits (edit_geometric_snake_cut.cpp): MeshLab 2020.09 has no mesh
+    // undo, so the tool keeps the mesh before a cut (vcg_ext/session/mesh_undo.h) and the layers
+    // a split added; Ctrl+Z reaches them in order with the session's own steps
+    typedef vcg::tri::SnakeMeshUndo<CMeshO, Controller::KeptHistory> CutUndo;
+    CutUndo cutUndo;
+    int cutGeneration = 0;     // cuts made and not undone: orders the splits with them
+    long cutRedoRevision = -1; // the session's revision right after a cut's undo: its redo holds until it changes
+    struct SplitStep
+    {
+        int inside, outside;  // the layers' ids
+        int cutGeneration;
+        size_t sessionSteps;  // the session's undo steps then, and the newest one's label
+        std::string sessionLabel;
+    };
+    std::vector<SplitStep> splitSteps;
+    bool undoRedoHostStep(bool redo);
+    void keepCut(std::unique_ptr<CMeshO> before, const std::string &why, const nlohmann::json &session,
+                 const std::string &label, bool dropSelectionStep);
+    void dropHostSteps();
     void usePickPoints();
     vcg::tri::SnakeParams paramsFromDock() const;
     void paramsToDock(const vcg::tri::SnakeParams &p);

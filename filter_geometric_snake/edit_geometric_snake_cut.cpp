@@ -7,8 +7,12 @@
 // - Split into layers adds two layers; this one is not changed.
 // A selection that leaves the mesh's faces as they were is one step of the tool's undo (Ctrl+Z
 // brings the selection before it back). A cut that changes the mesh moves the session's snakes
-// onto the new faces (CutSessionMap) and starts the session afresh on the cut mesh: MeshLab
-// 2020.09 has no undo for a mesh change, so neither has the tool.
+// onto the new faces (CutSessionMap) and starts the session afresh on the cut mesh. MeshLab
+// 2020.09 has no undo for a mesh change: the tool keeps the mesh before the cut, the session and
+// its history as one step of its own undo (SnakeMeshUndo), reached when the session after the cut
+// has no step left to undo; a split's step removes the two layers it added. The session of the
+// cut mesh is not the one of the file on disk: it autosaves to a recovery file beside it, the
+// sidecar keeps the uncut file's session (SnakeController::OpenSidecar).
 
 #include <GL/glew.h>
 
@@ -17,6 +21,7 @@
 
 #include <QCheckBox>
 #include <QFileInfo>
+#include <QStringList>
 
 #include <meshlab/glarea.h>
 #include <vcg_ext/cut/cut_session_map.h>
@@ -61,6 +66,8 @@ void EditGeometricSnakePlugin::cutSelect(bool inside)
         p.side = inside ? vcg::tri::CutSide::Inside : vcg::tri::CutSide::Outside;
         const nlohmann::json session = ctl->ToJson(); // for the snakes, if the cut adds faces
         const int snake = ctl->Selected() + 1;
+        std::string why;
+        std::unique_ptr<CMeshO> before = wholeFaces ? nullptr : cutUndo.Snapshot(model->cm, why); // for the undo
         MeshCut<CMeshO>::Result r;
         // one step of the tool's undo (Ctrl+Z brings the selection before it back)
         ctl->ChangeSelection(inside ? "select inside" : "select outside",
@@ -74,12 +81,15 @@ void EditGeometricSnakePlugin::cutSelect(bool inside)
                           .arg(wholeFaces ? ", whole faces by their centroid" : "");
         if (r.addedVertices > 0 || r.addedFaces > 0) {
             msg += QString(" The snake was embedded into the mesh: %1 vertices and %2 faces added; the session goes on "
-                           "on the cut mesh (no undo of the cut).")
+                           "on the cut mesh%3.")
                        .arg(r.addedVertices)
-                       .arg(r.addedFaces);
+                       .arg(r.addedFaces)
+                       .arg(before ? " (Ctrl+Z undoes the cut)" : "");
+            keepCut(std::move(before), why, session, inside ? "select inside" : "select outside", true);
             afterMeshCut(session, r.points);
-        } else if (glArea) {
-            glArea->updateSelection(model->id(), true, true);
+        } else {
+            cutUndo.ClearRedo(); // a new action
+            if (glArea) glArea->updateSelection(model->id(), true, true);
         }
         report(msg, false);
         Log(GLLogStream::FILTER, "Geometric snake: %s", qUtf8Printable(msg));
@@ -98,14 +108,17 @@ void EditGeometricSnakePlugin::cutOpen()
         p.mode = vcg::tri::CutMode::CutOpen;
         const nlohmann::json session = ctl->ToJson();
         const int snake = ctl->Selected() + 1;
+        std::string why;
+        std::unique_ptr<CMeshO> before = cutUndo.Snapshot(model->cm, why);
         const MeshCut<CMeshO>::Result r = MeshCut<CMeshO>::Apply(model->cm, {SelectedCurve(*ctl)}, p);
         const QString msg = QString("Cut open along snake %1: its %2 vertices on the mesh are on the boundary now "
-                                    "(%3 vertices and %4 faces added); the session goes on on the cut mesh (no undo "
-                                    "of the cut).")
+                                    "(%3 vertices and %4 faces added); the session goes on on the cut mesh%5.")
                                 .arg(snake)
                                 .arg(r.curveVertices)
                                 .arg(r.addedVertices)
-                                .arg(r.addedFaces);
+                                .arg(r.addedFaces)
+                                .arg(before ? " (Ctrl+Z undoes the cut)" : "");
+        keepCut(std::move(before), why, session, "cut open", false);
         afterMeshCut(session, r.points);
         report(msg, false);
         Log(GLLogStream::FILTER, "Geometric snake: %s", qUtf8Printable(msg));
@@ -131,6 +144,116 @@ void EditGeometricSnakePlugin::afterMeshCut(const nlohmann::json &session, const
     vcg::tri::SnakeMeshStore<CMeshO>::Set(m->cm, mapped.dump());
     startOn(*m);
     if (glArea) glArea->updateSelection(m->id(), true, true);
+    // the sidecar belongs to the file on disk, which is the uncut mesh: it keeps that session
+    const QString file = m->fullName();
+    if (ctl && !file.isEmpty() && !ctl->AutosavePath().empty())
+        Log(GLLogStream::FILTER,
+            "Geometric snake: the cut mesh is not the file %s on disk: its session is saved to %s, and %s.snakes.json "
+            "keeps the session of the uncut file. To keep the cut mesh's session with it, save the mesh (File > Save "
+            "As) and rename that file to <new mesh file>.snakes.json.",
+            qUtf8Printable(QFileInfo(file).fileName()), qUtf8Printable(QString::fromStdString(ctl->AutosavePath())),
+            qUtf8Printable(QFileInfo(file).fileName()));
+}
+
+/// Makes the cut about to be applied one step of the tool's undo: `before` the mesh before it
+/// (nullptr: it could not be kept, `why` says why), `session` the session then, with its history
+/// (less the step the cut's own selection recorded, `dropSelectionStep`). Called once the cut is
+/// made: the session's file gets the session before it (the sidecar must hold the uncut mesh's).
+void EditGeometricSnakePlugin::keepCut(std::unique_ptr<CMeshO> before, const std::string &why,
+                                       const nlohmann::json &session, const std::string &label, bool dropSelectionStep)
+{
+    try {
+        // the session before the cut (the controller's is on the cut faces already)
+        if (!ctl->AutosavePath().empty()) vcg::tri::SafeFileWrite::Write(ctl->AutosavePath(), session.dump(1) + "\n");
+    } catch (const std::exception &e) {
+        Log(GLLogStream::WARNING, "Geometric snake: saving the session before the cut failed: %s", e.what());
+    }
+    Controller::KeptHistory h = ctl->TakeHistory();
+    if (dropSelectionStep) h.DropLast(); // the cut's selection, on faces that are gone
+    h.ClearRedo();
+    if (!before) {
+        dropHostSteps();
+        Log(GLLogStream::WARNING, "Geometric snake: this cut cannot be undone: %s; the undo history before it is "
+            "dropped.", why.c_str());
+        return;
+    }
+    cutUndo.Push(std::move(before), session.dump(), std::move(h), label);
+    ++cutGeneration;
+    cutRedoRevision = -1;
+}
+
+/// Drops the cut and split steps (the tool leaves the mesh, or a cut cannot be kept).
+void EditGeometricSnakePlugin::dropHostSteps()
+{
+    cutUndo.Clear();
+    splitSteps.clear();
+    cutGeneration = 0;
+    cutRedoRevision = -1;
+}
+
+/// Ctrl+Z / Ctrl+Y of a split or a cut, when it is the next step (the session's own steps after
+/// it come first): true if it did one (or said why not).
+bool EditGeometricSnakePlugin::undoRedoHostStep(bool redo)
+{
+    if (!ctl || !modelAlive() || (doc && doc->isBusy())) return false;
+    if (!redo && !splitSteps.empty()) {
+        const SplitStep s = splitSteps.back();
+        if (s.cutGeneration == cutGeneration && s.sessionSteps == ctl->UndoSteps() && s.sessionLabel == ctl->UndoLabel()) {
+            splitSteps.pop_back();
+            QStringList removed;
+            for (int id : {s.inside, s.outside})
+                for (MeshModel *mm : gs::host::Meshes(*doc))
+                    if (mm->id() == id && mm != model) {
+                        removed << mm->label();
+                        gs::host::DeleteLayer(*doc, mm);
+                        break;
+                    }
+            const QString msg = QString("Undid the split: removed the layers %1 (Ctrl+Y does not add them back: split "
+                                        "again).")
+                                    .arg(removed.isEmpty() ? QString("(none left)") : "\"" + removed.join("\", \"") + "\"");
+            report(msg, false);
+            Log(GLLogStream::FILTER, "Geometric snake: %s", qUtf8Printable(msg));
+            if (glArea) glArea->update();
+            return true;
+        }
+    }
+    const bool due = redo ? !ctl->CanRedo() && cutUndo.CanRedo() && ctl->Revision() == cutRedoRevision
+                          : !ctl->CanUndo() && cutUndo.CanUndo();
+    if (!due) return false;
+    MeshModel *m = model;
+    const std::string label = redo ? cutUndo.RedoLabel() : cutUndo.UndoLabel();
+    std::string session = ctl->ToJson().dump();
+    try {
+        ctl->Autosave(true); // the session as it is now, to its file, before the mesh changes
+    } catch (const std::exception &e) {
+        Log(GLLogStream::WARNING, "Geometric snake: saving the session failed: %s", e.what());
+    }
+    Controller::KeptHistory h = ctl->TakeHistory();
+    stop(false);
+    if (!(redo ? cutUndo.Redo(m->cm, session, h) : cutUndo.Undo(m->cm, session, h))) return false;
+    cutGeneration += redo ? 1 : -1;
+    vcg::tri::UpdateTopology<CMeshO>::FaceFace(m->cm);
+    vcg::tri::UpdateTopology<CMeshO>::VertexFace(m->cm);
+    vcg::tri::UpdateBounding<CMeshO>::Box(m->cm);
+    if (shared && glArea) {
+        shared->meshAttributesUpdated(m->id(), true, MLRenderingData::RendAtts(true));
+        shared->manageBuffers(m->id());
+    }
+    vcg::tri::SnakeMeshStore<CMeshO>::Set(m->cm, session);
+    startOn(*m);
+    if (ctl) ctl->AdoptHistory(std::move(h));
+    cutRedoRevision = !redo && ctl ? ctl->Revision() : -1;
+    if (glArea) glArea->updateSelection(m->id(), true, true);
+    refreshDock();
+    const QString msg = QString("%1 the cut (%2): the mesh has %3 vertices and %4 faces%5.")
+                            .arg(redo ? "Redid" : "Undid", QString::fromStdString(label))
+                            .arg(m->cm.vn)
+                            .arg(m->cm.fn)
+                            .arg(redo ? "" : " as before it, with its snakes");
+    report(msg, false);
+    Log(GLLogStream::FILTER, "Geometric snake: %s", qUtf8Printable(msg));
+    if (glArea) glArea->update();
+    return true;
 }
 
 void EditGeometricSnakePlugin::cutSplit()
@@ -147,10 +270,12 @@ void EditGeometricSnakePlugin::cutSplit()
     }
     const QString base = QFileInfo(model->label()).completeBaseName();
     MeshModel *src = model;
+    int ids[2] = {-1, -1};
     for (int part = 0; part < 2; ++part) {
         const QString label = QString("%1 %2").arg(base, part == 0 ? "inside" : "outside");
         MeshModel *nm = doc->addNewMesh("", label, false);
         if (!nm) { report("Geometric snake: MeshLab refused to add a layer.", true); return; }
+        ids[part] = nm->id();
         nm->updateDataMask(src);
         vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(nm->cm, part == 0 ? inside : outside);
         nm->cm.Tr = src->cm.Tr;
@@ -160,7 +285,10 @@ void EditGeometricSnakePlugin::cutSplit()
             shared->manageBuffers(nm->id());
         }
     }
-    const QString msg = QString("Split along snake %1 into layers \"%2 inside\" (%3 faces) and \"%2 outside\" (%4 faces).")
+    cutUndo.ClearRedo(); // a new action
+    splitSteps.push_back(SplitStep{ids[0], ids[1], cutGeneration, ctl->UndoSteps(), ctl->UndoLabel()});
+    const QString msg = QString("Split along snake %1 into layers \"%2 inside\" (%3 faces) and \"%2 outside\" (%4 faces); "
+                                "Ctrl+Z removes them.")
                             .arg(ctl->Selected() + 1)
                             .arg(base)
                             .arg(inside.fn)

@@ -97,6 +97,12 @@ void EditGeometricSnakePlugin::endTool()
     // when a filter starts or the document closes (still checked, or suspended with Esc).
     QAction *a = glArea ? glArea->getCurrentEditAction() : nullptr;
     const bool byUser = a && !a->isChecked() && !glArea->suspendedEditor;
+    // the cuts' and splits' steps hold this mesh as it was: they do not outlive the tool
+    const bool hadCutSteps = cutUndo.CanUndo() || cutUndo.CanRedo() || !splitSteps.empty();
+    dropHostSteps();
+    if (active && hadCutSteps)
+        Log(GLLogStream::FILTER, "Geometric snake: the undo of the cuts and splits made on %s ends with the tool.",
+            qUtf8Printable(label));
     stop(true);
     ownKeys(false);
     hideDockLater();

@@ -114,8 +114,8 @@ void EditGeometricSnakePlugin::refreshDock()
     for (QWidget *w : std::initializer_list<QWidget *>{dock->insert, dock->remove, dock->pin})
         w->setEnabled(s != nullptr && currentSample >= 0);
     dock->exportAll->setEnabled(has && ctl->SnakeCount() > 0);
-    dock->undo->setEnabled(has && ctl->CanUndo());
-    dock->redo->setEnabled(has && ctl->CanRedo());
+    dock->undo->setEnabled(has && (ctl->CanUndo() || cutUndo.CanUndo() || !splitSteps.empty()));
+    dock->redo->setEnabled(has && (ctl->CanRedo() || cutUndo.CanRedo()));
     dock->undo->setToolTip(has && ctl->CanUndo() ? QString("Undo %1 (Ctrl+Z)").arg(QString::fromStdString(ctl->UndoLabel()))
                                                  : QString("Nothing to undo (Ctrl+Z)"));
     dock->redo->setToolTip(has && ctl->CanRedo() ? QString("Redo %1 (Ctrl+Y)").arg(QString::fromStdString(ctl->RedoLabel()))

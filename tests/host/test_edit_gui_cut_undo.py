@@ -6,7 +6,11 @@ plate with a raised square and a square snake on its slopes, restored from the s
 faces only" ticked (the mesh is not changed), "Select inside" selects the faces inside it (drawn
 red in the view); Ctrl+Z takes the selection back (no
 face drawn selected) and leaves the snake as the Run left it; Ctrl+Y selects them again; two more
-Ctrl+Z take back the selection, then the Run (the snake as restored).
+Ctrl+Z take back the selection, then the Run (the snake as restored). Then (issue 34) Ctrl+Y
+brings the Run back, the exact "Select inside" embeds the snake into the mesh, Ctrl+Z brings the
+mesh back as it was (121 vertices, 200 faces, no selection, the snake on its faces), Ctrl+Y cuts
+again; "Split into layers" adds two layers and Ctrl+Z removes them; the next Ctrl+Z takes back the
+Run (the history from before the cut).
 """
 import json
 import os
@@ -108,6 +112,57 @@ def main():
         back = curve_state(snakes_of(auto))
         check(back[0][3] == 0 and back[0][1] != ran[0][1],
               "the third Ctrl+Z takes back the Run: the snake as restored (%d operations)" % back[0][3])
+        # The exact Select inside adds vertices and faces (issue 34): Ctrl+Z takes the cut back, the
+        # mesh as before it and the snake as the Run left it; Ctrl+Y cuts again
+        g.xdo("key", "ctrl+y")  # the Run again
+        time.sleep(1.5)
+        faces_of = lambda st: [[p["face"] for p in c[1]] for c in st]  # noqa: E731
+        ran_faces = faces_of(curve_state(snakes_of(auto)))
+        g.xdo("mousemove", px + 100, py + 778, "click", 1)  # Whole faces only: off
+        time.sleep(0.5)
+        g.xdo("mousemove", px + 108, py + 716, "click", 1)  # Select inside, exact
+        time.sleep(3)
+        g.screenshot("05_cut.png")
+        m = re.search(r"Selected the inside of snake 1: \d+ faces .* (\d+) vertices and (\d+) faces added; the session "
+                      r"goes on on the cut mesh \(Ctrl\+Z undoes the cut\)\.", ml.log_text())
+        check(bool(m) and int(m.group(1)) > 0, "the exact Select inside embeds the snake (%s)"
+              % (str(m.groups()) if m else "no Log line"))
+        added = (int(m.group(1)), int(m.group(2))) if m else (0, 0)
+        check(bool(re.search(r"the cut mesh is not the file plateau\.ply on disk: its session is saved to \S*"
+                             r"plateau\.ply\.snakes\.recovered-", ml.log_text())),
+              "the Log says where the cut mesh's session is saved (not the uncut file's sidecar)")
+        g.xdo("key", "ctrl+z")
+        time.sleep(3)
+        n = selected_pixels(g.screenshot("06_cut_undone.png"), *view)
+        m = re.search(r"Undid the cut \(select inside\): the mesh has (\d+) vertices and (\d+) faces as before it",
+                      ml.log_text())
+        check(bool(m) and (int(m.group(1)), int(m.group(2))) == (121, 200),
+              "Ctrl+Z takes the cut back: 121 vertices and 200 faces (%s)" % (str(m.groups()) if m else "no Log line"))
+        check(n < 100, "no face is drawn selected after the cut's undo (%d tinted pixels)" % n)
+        time.sleep(1.5)
+        check(faces_of(curve_state(snakes_of(auto))) == ran_faces, "the snake is back on the faces the Run left it on")
+        g.xdo("key", "ctrl+y")
+        time.sleep(3)
+        m = re.search(r"Redid the cut \(select inside\): the mesh has (\d+) vertices and (\d+) faces\.", ml.log_text())
+        check(bool(m) and (int(m.group(1)), int(m.group(2))) == (121 + added[0], 200 + added[1]),
+              "Ctrl+Y cuts again (%s)" % (str(m.groups()) if m else "no Log line"))
+        g.xdo("key", "ctrl+z")
+        time.sleep(3)
+        check(len(re.findall(r"Undid the cut \(select inside\): the mesh has 121 vertices and 200 faces",
+                             ml.log_text())) == 2, "Ctrl+Z takes it back again")
+        # Split into layers adds two layers; Ctrl+Z removes them
+        g.xdo("mousemove", px + 108, py + 747, "click", 1)
+        time.sleep(3)
+        check(bool(re.search(r"Split along snake 1 into layers \"plateau inside\" \(\d+ faces\) and \"plateau outside\"",
+                             ml.log_text())), "Split into layers adds the two layers")
+        g.xdo("key", "ctrl+z")
+        time.sleep(2)
+        g.screenshot("07_split_undone.png")
+        check(bool(re.search(r"Undid the split: removed the layers \"plateau inside\", \"plateau outside\"",
+                             ml.log_text())), "Ctrl+Z removes the two layers of the split")
+        g.xdo("key", "ctrl+z")  # then the Run, as before the cut
+        time.sleep(2)
+        check(curve_state(snakes_of(auto))[0][3] == 0, "the next Ctrl+Z takes back the Run (the history before the cut)")
     finally:
         ml.kill()
     return g.finish()

@@ -576,13 +576,15 @@ public:
     /// exists) and autosaves to it from now on. A sidecar that cannot be read (broken, truncated,
     /// made on another mesh, too large) is never touched: the session autosaves to a new
     /// SnakeSidecar::RecoveryPath() file instead, and the message says so (SnakeAutosave::Open).
+    /// That holds too when the session came from the mesh (`restore` false): a sidecar of the mesh
+    /// as it is on disk is not this mesh's once a cut added faces (issue 34), and keeps its curves.
     SidecarStatus OpenSidecar(const std::string &meshPath, bool restore, std::time_t now = std::time(nullptr))
     {
         return autosave.Open(meshPath, restore, now, [this](const std::string &side, bool load) {
             if (load)
                 Load(side);
             else
-                IO::ParseFileLean(side); // readable? (the session itself came from the mesh)
+                SessionFile::Read(mesh, IO::ParseFileLean(side)); // readable, and of this mesh?
         });
     }
 

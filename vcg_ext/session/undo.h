@@ -68,6 +68,8 @@ public:
     {
         return move(redo, redoBytes, undo, undoBytes, current, bytes);
     }
+    /// Drops the redo side (an action the history does not hold, e.g. a cut, was made).
+    void ClearRedo() { clear(redo, redoBytes); }
     void Clear()
     {
         clear(undo, undoBytes);

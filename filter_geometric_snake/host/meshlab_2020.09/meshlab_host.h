@@ -37,6 +37,8 @@ inline bool HasMesh(const MeshDocument &md, const MeshModel *m) { return md.mesh
 /// The layers of the document, in order.
 inline std::vector<MeshModel *> Meshes(MeshDocument &md) { return std::vector<MeshModel *>(md.meshList.begin(), md.meshList.end()); }
 
+/// Removes the layer m (the edit tool's undo of its split).
+inline bool DeleteLayer(MeshDocument &md, MeshModel *m) { return md.delMesh(m); }
 inline void UpdateBoxAndNormals(MeshModel &m) { m.UpdateBoxAndNormals(); }
 } // namespace host
 

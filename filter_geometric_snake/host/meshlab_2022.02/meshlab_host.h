@@ -46,6 +46,8 @@ inline std::vector<MeshModel *> Meshes(MeshDocument &md)
 	return v;
 }
 
+/// Removes the layer m (the edit tool's undo of its split).
+inline bool DeleteLayer(MeshDocument &md, MeshModel *m) { return md.delMesh(m->id()); }
 inline void UpdateBoxAndNormals(MeshModel &m) { m.updateBoxAndNormals(); }
 } // namespace host
 
