@@ -76,7 +76,7 @@ public:
     /// Vertex indices of the cheapest edge loop round `loop` (closed polyline), or empty when
     /// the band holds none (e.g. it is not a ring). The band grows from `seedFaces` (the faces
     /// of the snake's samples) through the VF adjacency, which must be current, so the cost
-    /// follows the band, not the mesh (issue 33: 119 ms at each Run end on 1.2M faces before).
+    /// follows the band, not the mesh (a pass over the mesh at every Run end would not).
     /// `energy` (float or double) is indexed like m.vert and read in place; h is the length
     /// unit of the band.
     template <class EnergyVector>
