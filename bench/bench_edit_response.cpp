@@ -10,6 +10,12 @@
 //                  between the clicked points), the samples, the session as JSON for autosave
 // BM_BuildCold     the same on a controller that has not prepared (what the first Build cost
 //                  before; every Build paid the seed path's O(mesh) part)
+// BM_ValleyLoop    the end of a converged closed Run on the part-boundary energy (issue 33,
+//                  ValleyLoop::FinishRun: the cheapest edge loop within 2 units of the snake
+//                  replaces it), what the edit tool does at every such Run end; a loop of 6
+//                  clicks round a patch of the bunny's flank, run 60 operations; arg = the
+//                  mesh's faces (bunny00 as scanned, and subdivided to 1.2M: the ratio shows
+//                  what grows with the mesh rather than with the band)
 // Run: build/bench/bench_edit_response --benchmark_repetitions=5 and read the medians.
 
 #include <benchmark/benchmark.h>
@@ -17,12 +23,14 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <memory>
 
 #include <snake_bench_util.h>
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg_ext/session/controller.h>
+#include <vcg_ext/snake/valley_loop.h>
 
 namespace {
 
@@ -52,9 +60,8 @@ Grid &PickGrid()
 
 /// A ray towards the back of the bunny (-z) through (x, y) of its bounding box, as a click
 /// (a little higher where the scan has a hole).
-CFaceO *Click(double fx, double fy, SurfacePoint &sp)
+CFaceO *Click(CMeshO &m, Grid &grid, double fx, double fy, SurfacePoint &sp)
 {
-    CMeshO &m = Mesh();
     const auto &b = m.bbox;
     Point3m o;
     vcg::Ray3<Scalarm> ray;
@@ -63,7 +70,7 @@ CFaceO *Click(double fx, double fy, SurfacePoint &sp)
     for (int k = 0; k < 20 && !f; ++k) {
         o = Point3m(b.min[0] + fx * b.DimX(), b.min[1] + (fy + 0.02 * k) * b.DimY(), b.max[2] + b.DimZ());
         ray = vcg::Ray3<Scalarm>(o, Point3m(0, 0, -1));
-        f = vcg::tri::DoRay(m, PickGrid(), ray, Scalarm(3 * b.DimZ()), t);
+        f = vcg::tri::DoRay(m, grid, ray, Scalarm(3 * b.DimZ()), t);
     }
     if (!f) return nullptr;
     Point3m bary;
@@ -72,6 +79,7 @@ CFaceO *Click(double fx, double fy, SurfacePoint &sp)
     sp.Normalize();
     return f;
 }
+CFaceO *Click(double fx, double fy, SurfacePoint &sp) { return Click(Mesh(), PickGrid(), fx, fy, sp); }
 
 const double kX[4] = {0.43, 0.45, 0.47, 0.49}; // across the body (~100 samples, as the issue's 92), at 40 % of its height
 const double kY = 0.4;
@@ -162,6 +170,58 @@ void BM_BuildCold(benchmark::State &state)
     state.counters["samples"] = n;
 }
 
+/// A closed snake on the part-boundary energy after its Run, on bunny00 subdivided to `faces`.
+struct ValleyCase
+{
+    std::unique_ptr<Controller> c;
+    std::vector<SnakeSample> samples;
+    double unit = 0;
+};
+
+ValleyCase &Valley(int faces)
+{
+    static std::map<int, ValleyCase> cases;
+    ValleyCase &k = cases[faces];
+    if (k.c) return k;
+    CMeshO &m = faces == 1200000 ? Mesh() : gs_bench::SubdividedBunny(faces);
+    gs_test::EnableSnakeAdjacency(m);
+    Grid grid;
+    grid.Set(m.face.begin(), m.face.end());
+    k.c.reset(new Controller(m));
+    k.c->SetEnergySettings(FeatureEnergyType::PartBoundary, k.c->EnergySmoothing());
+    for (int i = 0; i < 6; ++i) {
+        SurfacePoint sp;
+        const double a = 2 * M_PI * i / 6;
+        if (!Click(m, grid, 0.45 + 0.08 * std::cos(a), 0.45 + 0.08 * std::sin(a), sp)) std::exit(2);
+        k.c->AddSeedFromPick(sp.face, sp.bary);
+    }
+    k.c->CloseSeeds(true);
+    auto *s = k.c->SelectedSnake();
+    s->Run(60);
+    std::fprintf(stderr, "valley case on %d faces: %zu samples, unit %g (%.2f mean edges), run: %s\n", m.fn,
+                 s->Samples().size(), s->LengthScale(), s->LengthScale() / k.c->MeanEdge(), SnakeStopKey(s->Stats().stop));
+    k.samples = s->Samples();
+    k.unit = s->LengthScale();
+    return k;
+}
+
+void BM_ValleyLoop(benchmark::State &state)
+{
+    ValleyCase &k = Valley(int(state.range(0)));
+    auto *s = k.c->SelectedSnake();
+    int replaced = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        s->InitFromSamples(k.samples, true, k.unit);
+        s->EndRun(SnakeStop::Converged); // as a Run that converged there
+        state.ResumeTiming();
+        replaced += ValleyLoop<CMeshO>::FinishRun(*s, FeatureEnergyType::PartBoundary, false);
+    }
+    state.counters["faces"] = k.c->Mesh().fn;
+    state.counters["samples"] = double(k.samples.size());
+    state.counters["replaced"] = double(replaced) / state.iterations();
+}
+
 } // namespace
 
 BENCHMARK(BM_PickGrid)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
@@ -169,5 +229,6 @@ BENCHMARK(BM_Prepare)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(
 BENCHMARK(BM_Click)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(40);
 BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(BM_BuildCold)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_ValleyLoop)->Arg(0)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 
 BENCHMARK_MAIN();

@@ -439,3 +439,105 @@ TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
     t.Run(1);
     EXPECT_FALSE(ValleyLoop<CMeshO>::FinishRun(t, FeatureEnergyType::PartBoundary, false));
 }
+
+namespace {
+
+// A tube with a waist at z = 0 (radius 1 - 0.3 exp(-(z/0.35)^2), z in [-1, 1.2], open ends)
+// whose tessellation is graded 20x across the waist: rings (and the edges along them) 0.02
+// apart below z = -0.1, 0.4 above z = 0.1, growing geometrically between, one ring exactly on
+// the waist. Consecutive rings of different sizes are zipped by angle (triangles of every
+// shape). The waist's circle is the exact valley.
+const double kFine = 0.02, kCoarse = 20 * kFine;
+double TubeRadius(double z) { return 1.0 - 0.3 * std::exp(-std::pow(z / 0.35, 2)); }
+double GradedEdge(double z) { return kFine * std::pow(kCoarse / kFine, std::max(0.0, std::min(1.0, (z + 0.1) / 0.2))); }
+
+void MakeGradedWaist(CMeshO &m)
+{
+    std::vector<double> zs{0.0};
+    while (zs.front() > -1.0) zs.insert(zs.begin(), zs.front() - GradedEdge(zs.front() - 0.5 * GradedEdge(zs.front())));
+    while (zs.back() < 1.2) zs.push_back(zs.back() + GradedEdge(zs.back() + 0.5 * GradedEdge(zs.back())));
+    std::vector<int> first, count;
+    for (size_t j = 0; j < zs.size(); ++j) {
+        const double r = TubeRadius(zs[j]);
+        const int n = std::max(6, int(std::lround(2 * M_PI * r / GradedEdge(zs[j]))));
+        first.push_back(int(m.vert.size()));
+        count.push_back(n);
+        auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, n);
+        for (int k = 0; k < n; ++k, ++vi) {
+            const double a = 2 * M_PI * (k + 0.5 * (j % 2)) / n;
+            vi->P() = Point3m(r * std::cos(a), r * std::sin(a), zs[j]);
+        }
+    }
+    for (size_t j = 0; j + 1 < zs.size(); ++j) {
+        const int na = count[j], nb = count[j + 1];
+        auto A = [&](int i) { return &m.vert[first[j] + i % na]; };
+        auto B = [&](int i) { return &m.vert[first[j + 1] + i % nb]; };
+        auto angle = [](int i, int n, size_t ring) { return (i + 0.5 * (ring % 2)) / n; };
+        for (int i = 0, k = 0; i < na || k < nb;) {
+            if (k == nb || (i < na && angle(i + 1, na, j) <= angle(k + 1, nb, j + 1)))
+                vcg::tri::Allocator<CMeshO>::AddFace(m, A(i), A(i + 1), B(k)), ++i;
+            else
+                vcg::tri::Allocator<CMeshO>::AddFace(m, A(i), B(k + 1), B(k)), ++k;
+        }
+    }
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+}
+
+} // namespace
+
+// The valley loop where edge lengths vary 20x across the valley (the guide's uneven
+// tessellations; here 0.02-0.61, 30x with the zipped diagonals). A Run from seeds on the fine
+// side converges on the waist and ends on its circle of edges; the valley loop alone (a loop
+// taken as converged where it was placed) from a fine ring below and from the first coarse ring
+// above (1.95 waist edges up, at the band's edge) reaches the waist too, never a point or a stub.
+// Not asserted: a Run from seeds on the coarse side (even on the waist's ring) slides up to
+// z = 0.8, where the coarse rings meet (measured: converged there, 10.9 waist edges off); the
+// valley loop then finds no ring of edges in its band and keeps the snake.
+TEST(ValleyLoop, EndsOnTheValleyWhereEdgeLengthsVary20x)
+{
+    CMeshO m;
+    MakeGradedWaist(m);
+    double emin = 1e300, emax = 0;
+    for (const auto &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            const double e = vcg::Distance(f.cP(k), f.cP((k + 1) % 3));
+            emin = std::min(emin, e), emax = std::max(emax, e);
+        }
+    EXPECT_GT(emax / emin, 20.0);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const double e0 = GradedEdge(0); // the edge length on the waist
+    struct Case
+    {
+        double zSeed;
+        bool run;
+        double maxOff; // bound on the farthest point off the waist, in waist edges
+    };
+    // measured: 0.00, 0.51 and 1.95 waist edges (the last on the coarse ring for part of the way)
+    for (const Case c : {Case{-0.08, true, 0.5}, Case{-0.08, false, 1.0}, Case{0.12, false, 2.5}}) {
+        std::vector<P3> pts;
+        for (int i = 0; i < 8; ++i)
+            pts.push_back(P3(std::cos(M_PI * i / 4), std::sin(M_PI * i / 4), 0) * TubeRadius(c.zSeed) + P3(0, 0, c.zSeed));
+        Snake s(surf);
+        s.InitFromSeeds(gs_test::NearestVertices(m, pts), true);
+        if (c.run)
+            s.Run(400);
+        else
+            s.EndRun(SnakeStop::Converged);
+        ASSERT_EQ(s.Stats().stop, SnakeStop::Converged) << "seeds at z = " << c.zSeed;
+        ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false)) << "seeds at z = " << c.zSeed;
+        double maxOff = 0, len = 0;
+        const std::vector<P3> l = s.PolylinePositions();
+        for (size_t i = 0; i < l.size(); ++i) {
+            maxOff = std::max(maxOff, std::fabs(l[i][2]) / e0);
+            len += vcg::Distance(l[i], l[(i + 1) % l.size()]);
+        }
+        const double ratio = len / (2 * M_PI * TubeRadius(0));
+        std::printf("graded waist (edges %.3f-%.3f), seeds at z = %.2f, %s: %zu samples, max %.2f waist edges off "
+                    "the waist, length %.3f of the waist's\n",
+                    emin, emax, c.zSeed, c.run ? "Run" : "valley loop alone", l.size(), maxOff, ratio);
+        EXPECT_LT(maxOff, c.maxOff);
+        EXPECT_GT(ratio, 0.95); // measured 0.999-1.032: the whole way round, never a point or a stub
+        EXPECT_LT(ratio, 1.1);
+    }
+}

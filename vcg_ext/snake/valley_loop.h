@@ -13,14 +13,15 @@
 // The minimum over loops that wind round once is a shortest path in the band's double cover:
 // a seam (where the arc length of the nearest snake point wraps round) switches
 // sheets; for each vertex beside the seam, Dijkstra from it on sheet 0 to itself on sheet 1.
-// The band is found by testing every vertex in the loop's bounding box against every loop
-// segment: fine on the benchmark's meshes (7k-25k vertices), not measured on large ones.
+// The band grows from the snake's faces through the mesh's adjacency and reads the energy in
+// place: its cost follows the band, not the mesh (bench_edit_response BM_ValleyLoop).
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -36,6 +37,7 @@ class ValleyLoop
 {
 public:
     typedef typename MeshType::FaceType FaceType;
+    typedef typename MeshType::VertexType VertexType;
 
     struct Param
     {
@@ -59,10 +61,10 @@ public:
             s.Stats().stop != SnakeStop::Converged)
             return false;
         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
-        const std::vector<float> &ef = s.GetSurface().Energy();
-        const std::vector<double> e(ef.begin(), ef.end());
-        const MeshType &m = s.GetSurface().Mesh();
-        const std::vector<int> vl = Find(m, loop, e, s.LengthScale(), par);
+        std::vector<int> faces;
+        for (const auto &x : s.Samples()) faces.push_back(x.p.face);
+        const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
+        const std::vector<int> vl = Find(m, loop, faces, s.GetSurface().Energy(), s.LengthScale(), par);
         double len = 0, len0 = 0;
         for (size_t i = 0; i < vl.size(); ++i) len += vcg::Distance(m.vert[vl[i]].cP(), m.vert[vl[(i + 1) % vl.size()]].cP());
         for (size_t i = 0; i < loop.size(); ++i) len0 += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
@@ -72,39 +74,64 @@ public:
     }
 
     /// Vertex indices of the cheapest edge loop round `loop` (closed polyline), or empty when
-    /// the band holds none (e.g. it is not a ring). `energy` is indexed like m.vert; h is the
-    /// length unit of the band.
-    static std::vector<int> Find(const MeshType &m, const std::vector<vcg::Point3d> &loop,
-                                 const std::vector<double> &energy, double h, const Param &par = Param())
+    /// the band holds none (e.g. it is not a ring). The band grows from `seedFaces` (the faces
+    /// of the snake's samples) through the VF adjacency, which must be current, so the cost
+    /// follows the band, not the mesh (a pass over the mesh at every Run end would not).
+    /// `energy` (float or double) is indexed like m.vert and read in place; h is the length
+    /// unit of the band.
+    template <class EnergyVector>
+    static std::vector<int> Find(const MeshType &m, const std::vector<vcg::Point3d> &loop, const std::vector<int> &seedFaces,
+                                 const EnergyVector &energy, double h, const Param &par = Param())
     {
+        if (!tri::HasVFAdjacency(m)) throw SnakeError("Valley loop: the mesh needs vertex-face adjacency.");
         if (loop.size() < 3 || !(h > 0) || energy.size() != m.vert.size()) return {};
-        std::vector<double> cum(loop.size() + 1, 0);
-        for (size_t i = 0; i < loop.size(); ++i) cum[i + 1] = cum[i] + vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
-        const double L = cum.back();
-        // the band: vertices within bandWidth * h of the loop, numbered compactly, each with
-        // the arc length (from loop[0]) of its nearest loop point
-        const double w = par.bandWidth * h;
-        vcg::Box3d bb;
-        for (const auto &p : loop) bb.Add(p);
-        bb.Offset(w);
-        std::vector<int> id(m.vert.size(), -1), vert;
-        std::vector<double> arc;
-        for (size_t v = 0; v < m.vert.size(); ++v) {
-            if (m.vert[v].IsD()) continue;
-            const vcg::Point3d p = vcg::Point3d::Construct(m.vert[v].cP());
-            if (!bb.IsIn(p)) continue;
-            double at = 0;
-            if (DistToLoop(p, loop, cum, at) > w) continue;
-            id[v] = int(vert.size());
-            vert.push_back(int(v));
-            arc.push_back(at);
+        const LoopIndex li(loop, par.bandWidth * h);
+        const double L = li.cum.back();
+        // the band: vertices within bandWidth * h of the loop joined by band edges to the
+        // snake's faces (another sheet of the surface within reach, e.g. a thin wall's far
+        // side, is no part of it), each with the arc length (from loop[0]) of its nearest
+        // loop point. `test` holds every vertex tested: its arc length, or -1 outside.
+        std::unordered_map<int, double> test;
+        std::vector<int> vert, grow, faces;
+        auto reach = [&](int v) {
+            if (test.count(v)) return;
+            double at = -1;
+            if (!m.vert[v].IsD() && !(li.Dist(vcg::Point3d::Construct(m.vert[v].cP()), at) <= li.w)) at = -1;
+            test[v] = at;
+            if (at >= 0) vert.push_back(v), grow.push_back(v);
+        };
+        for (int f : seedFaces)
+            if (f >= 0 && f < int(m.face.size()) && !m.face[f].IsD())
+                for (int k = 0; k < 3; ++k) reach(int(m.face[f].cV(k) - &m.vert[0]));
+        while (!grow.empty()) {
+            const VertexType &v = m.vert[grow.back()];
+            grow.pop_back();
+            for (const FaceType *f = v.cVFp(), *next = nullptr; f; f = next) {
+                const int z = (f->cV(0) == &v) ? 0 : (f->cV(1) == &v ? 1 : 2);
+                next = f->cVFp(z);
+                if (f->IsD()) continue;
+                faces.push_back(int(f - &m.face[0]));
+                for (int k = 1; k < 3; ++k) reach(int(f->cV((z + k) % 3) - &m.vert[0]));
+            }
         }
+        // numbered and joined in mesh order, as a pass over the whole mesh would: the same
+        // Dijkstra, ties included
+        std::sort(vert.begin(), vert.end());
+        std::sort(faces.begin(), faces.end());
+        faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
         const int nb = int(vert.size());
+        std::unordered_map<int, int> id;
+        std::vector<double> arc(nb);
+        for (int i = 0; i < nb; ++i) id[vert[i]] = i, arc[i] = test[vert[i]];
+        auto idOf = [&](const VertexType *v) {
+            const auto it = id.find(int(v - &m.vert[0]));
+            return it == id.end() ? -1 : it->second;
+        };
         std::vector<std::vector<int>> adj(nb);
-        for (const FaceType &f : m.face) {
-            if (f.IsD()) continue;
+        for (int fi : faces) {
+            const FaceType &f = m.face[fi];
             for (int k = 0; k < 3; ++k) {
-                const int a = id[f.cV(k) - &m.vert[0]], b = id[f.cV((k + 1) % 3) - &m.vert[0]];
+                const int a = idOf(f.cV(k)), b = idOf(f.cV((k + 1) % 3));
                 if (a < 0 || b < 0) continue;
                 adj[a].push_back(b); // an interior edge twice (once per face): harmless
                 adj[b].push_back(a);
@@ -145,7 +172,7 @@ public:
                     const int ns = sheet + cross(a, b);
                     if (ns < 0 || ns > 1) continue;
                     const double len = vcg::Distance(m.vert[vert[a]].cP(), m.vert[vert[b]].cP());
-                    const double c = e.first + len * (0.5 * (energy[vert[a]] + energy[vert[b]]) + par.lambda);
+                    const double c = e.first + len * (0.5 * (double(energy[vert[a]]) + double(energy[vert[b]])) + par.lambda);
                     const int to = ns * nb + b;
                     if (c < dist[to]) dist[to] = c, prev[to] = e.second, q.push({c, to});
                 }
@@ -162,19 +189,43 @@ public:
     }
 
 private:
-    static double DistToLoop(const vcg::Point3d &p, const std::vector<vcg::Point3d> &l, const std::vector<double> &cum, double &at)
+    /// The loop's segments with their arc lengths, and a bounding sphere each, so that a
+    /// point tests in full only the segments that can be within w of it.
+    struct LoopIndex
     {
-        double d = std::numeric_limits<double>::infinity();
-        for (size_t i = 0; i < l.size(); ++i) {
-            const vcg::Point3d &a = l[i], &b = l[(i + 1) % l.size()];
-            const vcg::Point3d ab = b - a;
-            const double L2 = ab.SquaredNorm();
-            const double u = L2 > 0 ? std::max(0.0, std::min(1.0, ((p - a) * ab) / L2)) : 0;
-            const double di = vcg::Distance(p, a + ab * u);
-            if (di < d) d = di, at = cum[i] + u * std::sqrt(L2);
+        const std::vector<vcg::Point3d> &l;
+        double w;
+        std::vector<double> cum, rad;
+        std::vector<vcg::Point3d> mid;
+        LoopIndex(const std::vector<vcg::Point3d> &loop, double width) : l(loop), w(width), cum(loop.size() + 1, 0)
+        {
+            for (size_t i = 0; i < l.size(); ++i) {
+                const vcg::Point3d &a = l[i], &b = l[(i + 1) % l.size()];
+                cum[i + 1] = cum[i] + vcg::Distance(a, b);
+                mid.push_back((a + b) * 0.5);
+                rad.push_back(0.5 * vcg::Distance(a, b));
+            }
         }
-        return d;
-    }
+        /// Distance to the loop and, at its first nearest segment, the arc length `at`, when
+        /// it is at most w; more than w otherwise. A segment is skipped only when its sphere
+        /// is farther than min(best so far, w) (with a margin for rounding): such a segment is
+        /// never the first nearest one within w, so the result is that of the full scan.
+        double Dist(const vcg::Point3d &p, double &at) const
+        {
+            double d = std::numeric_limits<double>::infinity();
+            for (size_t i = 0; i < l.size(); ++i) {
+                const double r = (std::min(d, w) + rad[i]) * (1 + 1e-9);
+                if ((p - mid[i]).SquaredNorm() > r * r) continue;
+                const vcg::Point3d &a = l[i], &b = l[(i + 1) % l.size()];
+                const vcg::Point3d ab = b - a;
+                const double L2 = ab.SquaredNorm();
+                const double u = L2 > 0 ? std::max(0.0, std::min(1.0, ((p - a) * ab) / L2)) : 0;
+                const double di = vcg::Distance(p, a + ab * u);
+                if (di < d) d = di, at = cum[i] + u * std::sqrt(L2);
+            }
+            return d;
+        }
+    };
 };
 
 } // namespace tri
