@@ -122,6 +122,25 @@ TEST(CadCreases, TessellatedShoulderRimsAreCapturedApart)
     EXPECT_TRUE(RunCase(m, ch, inner, 2, true, "tess: inner shoulder rim, closed, 2 off").Captured());
 }
 
+// The open snake's ends hold on a curved crease seeded as a chord: 4 seeds 3 chain edges inside
+// the tessellated shaft's top rim (r 7, a fan cap) bulge out to the rim. Its ends slid 24
+// degrees along the rim (83 % of the seeded span covered) when they moved across the curve's
+// own tangent; straight across the crease they land beside where they were seeded.
+TEST(CadCreases, OpenEndsHoldOnACurvedRim)
+{
+    CMeshO m;
+    const int n = 64;
+    const double e = 2 * M_PI * 10 / n;
+    gs_crease::MakeSteppedShaft(m, n, 10, 50 * e, 10 - 3 * e, 35 * e, gs_crease::CapStyle::Fan);
+    gs_test::EnableSnakeAdjacency(m);
+    const auto ch = gs_crease::SharpChains(m);
+    const int top = ChainNear(ch, Point3d(10 - 3 * e, 0, 85 * e));
+    ASSERT_LE(gs_test::DistToPolyline(Point3d(10 - 3 * e, 0, 85 * e), ch[top].pts, ch[top].closed), 0.01);
+    const gs_capture::Result r = RunCase(m, ch, top, 3, false, "tess: top rim, open, 3 off");
+    EXPECT_GE(r.coverage, 0.95);
+    EXPECT_TRUE(r.Captured());
+}
+
 // A block whose bore comes 3 edge lengths from its top edge, remeshed to that edge length: the
 // closed snake seeded on the bore's wall ends on the rim, not on the edge 3 h away. The open
 // snake seeded on the front face below the edge covers the edge but is not yet captured (72 %
