@@ -51,7 +51,9 @@ if [[ $CREASES_ONLY == 1 ]]; then
   echo "== creases on CAD meshes (dense features, tessellations, shared CAD-like meshes)"
   "$BUILD_DIR/bench/eval/gs_creases" --out "$OUT/creases.csv" 2> "$OUT/creases.log"
   grep -E "captured|done" "$OUT/creases.log"
-  python3 "$ROOT/bench/eval/creases_report.py" "$OUT/creases.csv" > "$OUT/creases.md"
+  BEFORE=""
+  for b in creases_before_ends.csv creases_before.csv; do [ -f "$OUT/$b" ] && BEFORE="$BEFORE $OUT/$b"; done
+  python3 "$ROOT/bench/eval/creases_report.py" "$OUT/creases.csv" $BEFORE > "$OUT/creases.md"
   echo "== done in $(( $(date +%s) - T0 )) s: $OUT/creases.md"
   exit 0
 fi

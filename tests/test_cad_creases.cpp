@@ -106,20 +106,45 @@ int ChainNear(const std::vector<gs_crease::Chain> &ch, const Point3d &p)
     return best;
 }
 
+/// The stepped shaft as a tessellator exports it (64 segments, the shoulder 3 chain edges
+/// e wide, sides 50 e and 35 e high), its cap in style `st`; its sharp chains in `ch`.
+double MakeTessShaft(CMeshO &m, gs_crease::CapStyle st, std::vector<gs_crease::Chain> &ch)
+{
+    const int n = 64;
+    const double e = 2 * M_PI * 10 / n;
+    gs_crease::MakeSteppedShaft(m, n, 10, 50 * e, 10 - 3 * e, 35 * e, st);
+    gs_test::EnableSnakeAdjacency(m);
+    ch = gs_crease::SharpChains(m);
+    return e;
+}
+
 // The shoulder of a tessellated stepped shaft is 3 chain edges wide: snakes seeded 2 chain
 // edges beside either of its rims (1.5x nearer that rim than the other) end on that rim.
 TEST(CadCreases, TessellatedShoulderRimsAreCapturedApart)
 {
     CMeshO m;
-    const int n = 64;
-    const double e = 2 * M_PI * 10 / n;
-    gs_crease::MakeSteppedShaft(m, n, 10, 50 * e, 10 - 3 * e, 35 * e, gs_crease::CapStyle::EarClip);
-    gs_test::EnableSnakeAdjacency(m);
-    const auto ch = gs_crease::SharpChains(m);
+    std::vector<gs_crease::Chain> ch;
+    const double e = MakeTessShaft(m, gs_crease::CapStyle::EarClip, ch);
     const int outer = ChainNear(ch, Point3d(10, 0, 50 * e)), inner = ChainNear(ch, Point3d(10 - 3 * e, 0, 50 * e));
     ASSERT_NE(outer, inner);
     EXPECT_TRUE(RunCase(m, ch, outer, 2, false, "tess: outer shoulder rim, open, 2 off").Captured());
     EXPECT_TRUE(RunCase(m, ch, inner, 2, true, "tess: inner shoulder rim, closed, 2 off").Captured());
+}
+
+// The open snake's ends hold on a curved crease seeded as a chord: 4 seeds 3 chain edges inside
+// the tessellated shaft's top rim (r 7, a fan cap) bulge out to the rim. Its ends slid 24
+// degrees along the rim (83 % of the seeded span covered) when they moved across the curve's
+// own tangent; straight across the crease they land beside where they were seeded.
+TEST(CadCreases, OpenEndsHoldOnACurvedRim)
+{
+    CMeshO m;
+    std::vector<gs_crease::Chain> ch;
+    const double e = MakeTessShaft(m, gs_crease::CapStyle::Fan, ch);
+    const int top = ChainNear(ch, Point3d(10 - 3 * e, 0, 85 * e));
+    ASSERT_LE(gs_test::DistToPolyline(Point3d(10 - 3 * e, 0, 85 * e), ch[top].pts, ch[top].closed), 0.01);
+    const gs_capture::Result r = RunCase(m, ch, top, 3, false, "tess: top rim, open, 3 off");
+    EXPECT_GE(r.coverage, 0.95);
+    EXPECT_TRUE(r.Captured());
 }
 
 // A block whose bore comes 3 edge lengths from its top edge, remeshed to that edge length: the

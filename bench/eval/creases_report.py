@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """Markdown tables of bench/eval/gs_creases' CSV (issue 38): captured per set and energy, per
-mesh, and the misses of the crease energy.  usage: creases_report.py creases.csv [before.csv]"""
+mesh, and the misses of the crease energy, beside the crease energy of earlier runs (one column
+each, named for the file: creases_before_ends.csv -> "before ends").
+usage: creases_report.py creases.csv [before.csv ...]"""
+import os
 import csv
 import sys
 from collections import defaultdict
@@ -25,31 +28,36 @@ def cell(t, k):
     return f"{100.0 * ok / n:.0f} % ({ok}/{n})" if n else "-"
 
 
+def label(path):
+    stem = os.path.splitext(os.path.basename(path))[0]
+    return "crease energy " + stem.replace("creases_", "").replace("_", " ")
+
+
 def main():
     rows = load(sys.argv[1])
-    before = load(sys.argv[2]) if len(sys.argv) > 2 else None
+    befores = [(label(p), load(p)) for p in sys.argv[2:]]
     sets = ["dense", "tess", "shared"]
-    by_set = tally(rows, lambda r: (r["set"], r["energy"]))
-    print("| set | normal variation | crease energy |" + (" crease energy before |" if before else ""))
-    print("|---|---|---|" + ("---|" if before else ""))
-    tb = tally(before, lambda r: (r["set"], r["energy"])) if before else None
+    head = "".join(f" {name} |" for name, _ in befores)
+    rule = "---|" * len(befores)
+    print("| set | normal variation | crease energy |" + head)
+    print("|---|---|---|" + rule)
     for s in sets + ["all"]:
-        key = (lambda r: ("all", r["energy"])) if s == "all" else None
-        t = tally(rows, key) if key else by_set
+        key = (lambda r: ("all", r["energy"])) if s == "all" else (lambda r: (r["set"], r["energy"]))
+        t = tally(rows, key)
         line = f"| {s} | {cell(t, (s, 'normal'))} | {cell(t, (s, 'crease'))} |"
-        if before:
-            b = tally(before, key) if key else tb
-            line += f" {cell(b, (s, 'crease'))} |"
+        for _, b in befores:
+            line += f" {cell(tally(b, key), (s, 'crease'))} |"
         print(line)
     print()
-    by_mesh = tally(rows, lambda r: (r["set"] + " " + r["mesh"], r["energy"]))
-    tbm = tally(before, lambda r: (r["set"] + " " + r["mesh"], r["energy"])) if before else None
-    print("| mesh | normal variation | crease energy |" + (" crease energy before |" if before else ""))
-    print("|---|---|---|" + ("---|" if before else ""))
+    mkey = lambda r: (r["set"] + " " + r["mesh"], r["energy"])
+    by_mesh = tally(rows, mkey)
+    tbm = [tally(b, mkey) for _, b in befores]
+    print("| mesh | normal variation | crease energy |" + head)
+    print("|---|---|---|" + rule)
     for m in dict.fromkeys(r["set"] + " " + r["mesh"] for r in rows):
         line = f"| {m} | {cell(by_mesh, (m, 'normal'))} | {cell(by_mesh, (m, 'crease'))} |"
-        if before:
-            line += f" {cell(tbm, (m, 'crease'))} |"
+        for t in tbm:
+            line += f" {cell(t, (m, 'crease'))} |"
         print(line)
     print()
     print("Misses of the crease energy (capture / coverage / mean distance in h):")

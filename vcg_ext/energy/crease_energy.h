@@ -265,6 +265,29 @@ public:
         return gradient(p, c, d, LocalWidth(which, p, fraction, scale));
     }
 
+    /// The unit direction from p's nearest crease point c to p, in p's face plane, when c is the
+    /// foot of a perpendicular: x - c within AcrossCos() of square to that crease edge. At a
+    /// crease's end or a corner c is a vertex and x - c may run along the crease (an open end
+    /// moved that way slid along a pocket rim); on the crease itself there is no direction.
+    bool AcrossDirection(const SurfacePoint &p, vcg::Point3d &dir) const
+    {
+        vcg::Point3d c(0, 0, 0);
+        int which;
+        const double d = Distance(p, &c, &which);
+        if (!std::isfinite(d) || !(d > 0) || which < 0) return false;
+        const vcg::Point3d u = (p.Pd(*mesh) - c) / d, e = segs[which].P1() - segs[which].P0();
+        const double len = e.Norm();
+        if (!(len > 0) || std::abs(u * e) > AcrossCos() * len) return false;
+        const vcg::Point3d &n = faceN[p.face];
+        dir = u - n * (u * n);
+        const double l = dir.Norm();
+        if (!(l > 1e-6)) return false;
+        dir /= l;
+        return true;
+    }
+    /// AcrossDirection: the largest cosine between x - c and the crease edge (15 degrees off square).
+    static double AcrossCos() { return 0.26; }
+
     /// E(p) = 1 - exp(-(d/w)^2) for basin width w.
     double Value(const SurfacePoint &p, double w) const
     {
@@ -592,6 +615,10 @@ public:
     vcg::Point3d Gradient(int level, const SurfacePoint &p) const override
     {
         return crease.LocalGradient(p, fraction(level), scale(level));
+    }
+    bool AcrossFeature(int /*level*/, const SurfacePoint &p, vcg::Point3d &dir) const override
+    {
+        return crease.AcrossDirection(p, dir);
     }
     const Crease &Creases() const { return crease; }
 

@@ -43,6 +43,11 @@ public:
     /// across the curve over about 1.5 triangles (SnakeSegmentMotion::acrossSlope). A field
     /// evaluated at the point itself is exact there and is read as it is.
     virtual bool FaceLinear() const { return false; }
+    /// The direction straight across the nearest feature at p, on `level` (a unit vector in
+    /// space, tangent to p's face, pointing away from the feature like the gradient), where the
+    /// field knows it: p's nearest feature point is the foot of a perpendicular to the feature.
+    /// An open end moves along it (SnakeMotionRules::acrossFeatureEnd). False if unknown.
+    virtual bool AcrossFeature(int /*level*/, const SurfacePoint & /*p*/, vcg::Point3d & /*dir*/) const { return false; }
 };
 
 /// The paper's energy (Sec. 6.1): values at the vertices, linear inside each face. Level 0

@@ -135,6 +135,17 @@ public:
         }
         return d;
     }
+    /// An open end where the field knows the way straight across its nearest feature (`u`, unit:
+    /// SnakeEnergyField::AcrossFeature, the crease energy's perpendicular to the crease) moves
+    /// along that way only, so it lands on the feature point nearest to where it was seeded.
+    /// Across the curve's own tangent is that way only once the curve follows the feature: a snake
+    /// seeded as a chord inside a rim (seeds 3 edges inside a tessellated shaft's top rim) slid its
+    /// ends 24 degrees along the rim while the chord bulged out to it (83 % of the span covered).
+    template <class Vec>
+    static Vec acrossFeatureEnd(const Vec &d, const Vec &u)
+    {
+        return d.dot(u) * u;
+    }
     /// The curve's direction at end sample j: the one-sided second-order difference over the
     /// samples q and 2q in (q = 2), exact on a circle's arc. A chord alone is a secant: on a
     /// curved feature "across" it has a part along the feature, and an end that bounces across

@@ -99,7 +99,11 @@ public:
                     Eigen::Vector3d a = Rules::template endTangent<Eigen::Vector3d>(X, i).cross(Eigen::Vector3d(fn[0], fn[1], fn[2]));
                     const Eigen::Vector3d dAcross = a.norm() > 0 ? Eigen::Vector3d(d.dot(a.normalized()) * a.normalized())
                                                                  : Rules::template acrossEnd<Eigen::Vector3d>(X, i, d);
-                    d = pulled ? alongPullBlend(d, pull[i], dAcross) : dAcross;
+                    vcg::Point3d u;
+                    d = pulled ? alongPullBlend(d, pull[i], dAcross)
+                        : surf->EnergyField().AcrossFeature(SampleLevel(st.samples[i], level), st.samples[i].p, u)
+                            ? acrossFeatureEnd(d, Eigen::Vector3d(u[0], u[1], u[2]))
+                            : dAcross;
                 }
                 double len = d.norm();
                 double cap = len > 0 ? st.params.maxStep * st.samples[i].trust * faceWidth(st.samples[i].p.face, d / len) / h : 0;
@@ -147,6 +151,7 @@ private:
     using Rules::SampleLevel;
     using Rules::HoldAtWell;
     using Rules::alongPullBlend;
+    using Rules::acrossFeatureEnd;
     using Rules::acrossSlope;
     using Rules::faceWidth;
     using Rules::balloonPressure;

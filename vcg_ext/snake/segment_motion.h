@@ -133,6 +133,23 @@ public:
             Eigen::Vector2d d(g * (region.pos[T[1]] - region.pos[T[0]]), g * (region.pos[T[2]] - region.pos[T[0]]));
             return E.JinvT(t) * d;
         };
+        // an open end's way straight across the feature (acrossFeatureEnd): the field's direction
+        // in space, mapped into the plane as a vector (not a gradient), unit length
+        auto acrossFeature = [&](int lev, int t, const Eigen::RowVector3d &bary, Eigen::Vector2d &u) -> bool {
+            vcg::Point3d a;
+            if (!surf->EnergyField().AcrossFeature(lev, SurfacePoint(region.faces[t], toPoint(bary)), a)) return false;
+            const auto &T = region.tri[t];
+            const vcg::Point3d e1 = region.pos[T[1]] - region.pos[T[0]], e2 = region.pos[T[2]] - region.pos[T[0]];
+            Eigen::Matrix2d G;
+            G << e1 * e1, e1 * e2, e1 * e2, e2 * e2;
+            if (!(std::abs(G.determinant()) > 1e-30)) return false;
+            const Eigen::Vector2d ab = G.inverse() * Eigen::Vector2d(a * e1, a * e2);
+            u = ab[0] * (E.emb.uv[T[1]] - E.emb.uv[T[0]]) + ab[1] * (E.emb.uv[T[2]] - E.emb.uv[T[0]]);
+            const double l = u.norm();
+            if (!(l > 0) || !u.allFinite()) return false;
+            u /= l;
+            return true;
+        };
         std::vector<bool> fixed(k);
         for (int j = 0; j < k; ++j)
             fixed[j] = st.samples[seg.idx[j]].fixed || (j == 0 && seg.fixFirst) || (j == k - 1 && seg.fixLast);
@@ -150,6 +167,7 @@ public:
             std::vector<Eigen::Vector2d> &across = work.across, &pull = work.pull;
             across.assign(k, Eigen::Vector2d::Zero());
             pull.assign(k, Eigen::Vector2d::Zero());
+            std::vector<Eigen::Vector2d> crossing(k, Eigen::Vector2d::Zero()); // acrossFeatureEnd
             for (int u = 0; u < updates; ++u) {
                 auto tu = SnakeClock::Now();
                 for (int j = 0; j < k; ++j) {
@@ -161,12 +179,16 @@ public:
                     const Eigen::Vector2d g = gradient(lev, lf[j], B.row(j));
                     slope[j] = g.norm();
                     if (lev > 0 && faceLinear) pull[j] = g; // alongPullBlend
+                    else if (st.IsOpenEnd(seg.idx[j]) && !acrossFeature(lev, lf[j], B.row(j), crossing[j]))
+                        crossing[j].setZero();
                     Eigen::Vector2d f = st.params.externalWeight * gain * g;
                     Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
                                          X.row(wholeClosed ? (j - 1 + k) % k : std::max(j - 1, 0))).transpose();
                     if (t.norm() > 0) {
                         t.normalize();
-                        f -= f.dot(t) * t;
+                        // (an end moving straight across the feature takes the whole pull: it
+                        // cannot slide along the feature, acrossFeatureEnd)
+                        if (crossing[j].norm() == 0) f -= f.dot(t) * t;
                         across[j] = Eigen::Vector2d(t.y(), -t.x());
                         if (lev == 0 && faceLinear) { // the across slope, averaged (see acrossSlope)
                             const Eigen::Vector2d nrm(t.y(), -t.x());
@@ -191,7 +213,8 @@ public:
                     if (!d.allFinite()) continue;
                     if (st.IsOpenEnd(seg.idx[j]))
                         d = pull[j].norm() > 0 ? alongPullBlend(d, pull[j], Rules::template acrossEnd<Eigen::Vector2d>(X, j, d))
-                                               : Rules::template acrossEnd<Eigen::Vector2d>(X, j, d);
+                            : crossing[j].norm() > 0 ? acrossFeatureEnd(d, crossing[j])
+                                                     : Rules::template acrossEnd<Eigen::Vector2d>(X, j, d);
                     double len = d.norm();
                     double cap = len > 0 ? st.params.maxStep * st.samples[seg.idx[j]].trust * E.WidthAlong(lf[j], d / len) : 0;
                     if (len > cap) d *= cap / len;
@@ -428,6 +451,7 @@ private:
     using Rules::SampleLevel;
     using Rules::HoldAtWell;
     using Rules::alongPullBlend;
+    using Rules::acrossFeatureEnd;
     using Rules::balloonPressure;
     SnakeKeptEmbeddings<MeshType> kept;
     ConformalParam::Workspace conformal;
