@@ -193,7 +193,9 @@ private:
     void cutOpen();
     void cutSplit();
     void connectCutButtons();
-    void afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map);
+    /// `snake` (0-based, -1: none) takes `chain`, the curve embedded along it, as its polyline.
+    void afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map, int snake = -1,
+                      const std::vector<vcg::tri::SurfacePoint> &chain = {});
     void usePickPoints();
     vcg::tri::SnakeParams paramsFromDock() const;
     void paramsToDock(const vcg::tri::SnakeParams &p);

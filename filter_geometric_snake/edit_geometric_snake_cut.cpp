@@ -77,7 +77,7 @@ void EditGeometricSnakePlugin::cutSelect(bool inside)
                            "on the cut mesh (no undo of the cut).")
                        .arg(r.addedVertices)
                        .arg(r.addedFaces);
-            afterMeshCut(session, r.points);
+            afterMeshCut(session, r.points, snake - 1, r.chains.empty() ? std::vector<vcg::tri::SurfacePoint>() : r.chains[0]);
         } else if (glArea) {
             glArea->updateSelection(model->id(), true, true);
         }
@@ -115,7 +115,8 @@ void EditGeometricSnakePlugin::cutOpen()
     if (glArea) glArea->update();
 }
 
-void EditGeometricSnakePlugin::afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map)
+void EditGeometricSnakePlugin::afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map, int snake,
+                                            const std::vector<vcg::tri::SurfacePoint> &chain)
 {
     MeshModel *m = model;
     const nlohmann::json mapped = vcg::tri::CutSessionMap<CMeshO>::Map(session, map, m->cm);
@@ -130,6 +131,8 @@ void EditGeometricSnakePlugin::afterMeshCut(const nlohmann::json &session, const
     // the session, its snakes on the new faces, comes back from the mesh (as on a layer switch)
     vcg::tri::SnakeMeshStore<CMeshO>::Set(m->cm, mapped.dump());
     startOn(*m);
+    // the snake cut along runs on the embedded curve: selecting along it again adds nothing
+    if (ctl && snake >= 0) vcg::tri::CutSessionMap<CMeshO>::KeepCurve(*ctl, snake, chain, m->cm);
     if (glArea) glArea->updateSelection(m->id(), true, true);
 }
 
