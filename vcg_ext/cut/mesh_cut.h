@@ -101,10 +101,10 @@ public:
         for (const EmbeddedCurve &c : wk.curves) {
             r.chains.emplace_back();
             for (int v : c.chain) { // in one of its faces (the work mesh's are the mesh's after the commit)
-                const int f = wk.w.Faces(v).front();
+                const std::vector<int> &fs = wk.w.Faces(v);
                 vcg::Point3d b(0, 0, 0);
-                b[wk.w.Corner(f, v)] = 1;
-                r.chains.back().push_back(SurfacePoint(f, b));
+                if (!fs.empty()) b[wk.w.Corner(fs.front(), v)] = 1;
+                r.chains.back().push_back(SurfacePoint(fs.empty() ? -1 : fs.front(), b));
             }
         }
         CutCommit<MeshType>::Commit(m, wk.w);
