@@ -121,29 +121,35 @@ void BM_Split(benchmark::State &state)
     CMeshO &plate = Plate();
     const CutCurve c = Circle(plate, 1000, Radius(state.range(0) / 10.0));
     MeshCut<CMeshO>::Result r;
-    std::vector<double> split, flood;
+    std::vector<double> split, flood, part[2];
     for (auto _ : state) {
         CMeshO in, out;
         r = MeshCut<CMeshO>::Split(plate, {c}, MeshCut<CMeshO>::Param(), in, out);
         state.PauseTiming();
         split.push_back(r.msSplit);
         flood.push_back(r.msSides);
+        for (int k = 0; k < 2; ++k) part[k].push_back(r.msPart[k]);
         in.Clear();
         out.Clear();
         state.ResumeTiming();
     }
-    std::sort(split.begin(), split.end());
-    std::sort(flood.begin(), flood.end());
+    auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
     state.counters["faces"] = plate.fn;
     state.counters["part_faces"] = r.facesInside;
-    state.counters["ms_flood"] = flood[flood.size() / 2];
-    state.counters["ms_split"] = split[split.size() / 2]; // writing both parts (medians of the iterations)
+    state.counters["out_faces"] = r.facesOutside;
+    state.counters["ms_flood"] = median(flood);
+    state.counters["ms_split"] = median(split); // writing both parts (medians of the iterations)
+    state.counters["ms_part_in"] = median(part[0]); // each part alone: grows with its faces
+    state.counters["ms_part_out"] = median(part[1]);
 }
 
 } // namespace
 
 // samples 0.5, 1 and 2 cells apart: loops of radius 80, 160 and 320 cells (parts of 40K to 640K faces)
 BENCHMARK(BM_EmbedAndSelect)->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Split)->Arg(5)->Arg(20)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Split)->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

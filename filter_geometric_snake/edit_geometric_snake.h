@@ -194,7 +194,9 @@ private:
     void cutOpen();
     void cutSplit();
     void connectCutButtons();
-    void afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map);
+    /// `snake` (0-based, -1: none) takes `chain`, the curve embedded along it, as its polyline.
+    void afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map, int snake = -1,
+                      const std::vector<vcg::tri::SurfacePoint> &chain = {});
     // the undo of cuts and splits (edit_geometric_snake_cut.cpp): MeshLab 2020.09 has no mesh
     // undo, so the tool keeps the mesh before a cut (vcg_ext/session/mesh_undo.h) and the layers
     // a split added; Ctrl+Z reaches them in order with the session's own steps

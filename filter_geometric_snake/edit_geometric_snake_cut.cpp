@@ -86,7 +86,7 @@ void EditGeometricSnakePlugin::cutSelect(bool inside)
                        .arg(r.addedFaces)
                        .arg(before ? " (Ctrl+Z undoes the cut)" : "");
             keepCut(std::move(before), why, session, inside ? "select inside" : "select outside", true);
-            afterMeshCut(session, r.points);
+            afterMeshCut(session, r.points, snake - 1, r.chains.empty() ? std::vector<vcg::tri::SurfacePoint>() : r.chains[0]);
         } else {
             cutUndo.ClearRedo(); // a new action
             if (glArea) glArea->updateSelection(model->id(), true, true);
@@ -128,7 +128,8 @@ void EditGeometricSnakePlugin::cutOpen()
     if (glArea) glArea->update();
 }
 
-void EditGeometricSnakePlugin::afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map)
+void EditGeometricSnakePlugin::afterMeshCut(const nlohmann::json &session, const vcg::tri::CutPointMap &map, int snake,
+                                            const std::vector<vcg::tri::SurfacePoint> &chain)
 {
     MeshModel *m = model;
     const nlohmann::json mapped = vcg::tri::CutSessionMap<CMeshO>::Map(session, map, m->cm);
@@ -143,6 +144,8 @@ void EditGeometricSnakePlugin::afterMeshCut(const nlohmann::json &session, const
     // the session, its snakes on the new faces, comes back from the mesh (as on a layer switch)
     vcg::tri::SnakeMeshStore<CMeshO>::Set(m->cm, mapped.dump());
     startOn(*m);
+    // the snake cut along runs on the embedded curve: selecting along it again adds nothing
+    if (ctl && snake >= 0) vcg::tri::CutSessionMap<CMeshO>::KeepCurve(*ctl, snake, chain, m->cm);
     if (glArea) glArea->updateSelection(m->id(), true, true);
     // the sidecar belongs to the file on disk, which is the uncut mesh: it keeps that session
     const QString file = m->fullName();

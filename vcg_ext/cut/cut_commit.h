@@ -8,6 +8,7 @@
 // per-wedge texture coordinates (interpolated in their user's face, so seams stay seams), and
 // the added faces, which copy every other attribute of the face they came from (ImportData).
 
+#include <unordered_map>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -56,24 +57,21 @@ public:
     /// The user's mesh m and the work mesh w built from it, before anything is written: the
     /// attributes of w's vertices and faces can be written into m (Commit) or another mesh
     /// (MeshCut::Split's parts).
-    CutCommit(const MeshType &m, const CutWorkMesh &w) : src(m), w(w), slot(w.fn0, -1)
+    CutCommit(const MeshType &m, const CutWorkMesh &w) : src(m), w(w)
     {
         const int fn0 = w.fn0;
-        // the user's faces that change, as they were (vertices and wedge texture coordinates)
-        std::vector<char> isTouched(fn0, 0);
+        // the user's faces that change, as they were (vertices and wedge texture coordinates):
+        // those split and those a cut open rewired, found from the changes alone (a split's
+        // parts cost in proportion to themselves, not to the mesh)
         auto touch = [&](int f) {
-            if (f >= 0 && f < fn0 && !isTouched[f]) { isTouched[f] = 1; touched.push_back(f); }
+            if (f >= 0 && f < fn0 && slot.emplace(f, int(touched.size())).second) touched.push_back(f);
         };
         for (size_t i = fn0; i < w.face.size(); ++i) touch(w.face[i].parent);
-        for (int f = 0; f < fn0; ++f)
-            if (w.face[f].parent >= 0)
-                for (int k = 0; k < 3; ++k)
-                    if (w.face[f].v[k] != int(vcg::tri::Index(m, m.face[f].cV(k)))) touch(f);
+        for (int f : w.Rewired()) touch(f);
         orig.resize(touched.size());
         wedgeTex = vcg::tri::HasPerWedgeTexCoord(m);
         for (size_t i = 0; i < touched.size(); ++i) {
             const FaceType &f = m.face[touched[i]];
-            slot[touched[i]] = int(i);
             for (int k = 0; k < 3; ++k) {
                 orig[i].v[k] = int(vcg::tri::Index(m, f.cV(k)));
                 if (wedgeTex) orig[i].wt[k] = f.cWT(k);
@@ -98,7 +96,7 @@ public:
             return;
         }
         const int F = w.addedOrigFaces[j][0];
-        const Orig &o = orig[slot[F]];
+        const Orig &o = orig[slot.at(F)];
         vcg::Point3d l = Bary(w.pos[o.v[0]], w.pos[o.v[1]], w.pos[o.v[2]], x);
         for (int k = 0; k < 3; ++k) l[k] = std::max(0.0, l[k]);
         l /= (l[0] + l[1] + l[2]);
@@ -140,8 +138,10 @@ public:
         f.V(0) = a;
         f.V(1) = b;
         f.V(2) = c;
-        if (!wedgeTex || slot[wf.parent] < 0) return;
-        const Orig &o = orig[slot[wf.parent]];
+        if (!wedgeTex) return;
+        const auto it = slot.find(wf.parent);
+        if (it == slot.end()) return;
+        const Orig &o = orig[it->second];
         for (int k = 0; k < 3; ++k) {
             vcg::Point3d l = Bary(w.pos[o.v[0]], w.pos[o.v[1]], w.pos[o.v[2]], w.pos[wf.v[k]]);
             vcg::Point2d t(0, 0);
@@ -162,7 +162,7 @@ private:
     const CutWorkMesh &w;
     std::vector<int> touched; ///< the user's faces that change
     std::vector<Orig> orig;   ///< per touched face, as it was
-    std::vector<int> slot;    ///< per user's face, its index in orig (-1: unchanged)
+    std::unordered_map<int, int> slot; ///< per touched user's face, its index in orig
     bool wedgeTex = false;
 };
 

@@ -6,6 +6,12 @@
 // every surface point ({"face", "bary", "position"}) goes through the cut's CutPointMap, its
 // position is recomputed on the new faces, and the session's mesh counts are the new mesh's.
 // Seeds are vertex indices: a cut adds vertices after the user's, so they stay valid.
+// The snake cut along keeps the embedded curve as its polyline (KeepCurve): traced anew on
+// the split faces it would move by a few percent of an edge, and cutting along it again would
+// split the mesh again.
+
+#include <unordered_map>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -30,6 +36,46 @@ public:
             session["mesh"]["faces"] = int(m.face.size());
         }
         return session;
+    }
+
+    /// After the controller restored the mapped session (Map) on the cut mesh m: snake `snake`,
+    /// the one cut along, takes the embedded curve (MeshCut::Result::chains[k]) as its polyline:
+    /// its samples are vertices of that chain, the chain's vertices between them its crossings.
+    /// Returns false, the snake keeping its trace, when its samples are not on the chain in order.
+    template <class Controller>
+    static bool KeepCurve(Controller &c, int snake, const std::vector<SurfacePoint> &chain, const MeshType &m)
+    {
+        if (snake < 0 || snake >= c.SnakeCount() || chain.empty()) return false;
+        auto &s = c.Get(snake);
+        auto vertexOf = [&](const SurfacePoint &p) {
+            int k = 0;
+            for (int h = 1; h < 3; ++h)
+                if (p.bary[h] > p.bary[k]) k = h;
+            return p.OnMesh(m) ? int(vcg::tri::Index(m, m.face[p.face].cV(k))) : -1;
+        };
+        std::unordered_map<int, int> at; // chain vertex -> its place in the chain
+        for (size_t i = 0; i < chain.size(); ++i) at.emplace(vertexOf(chain[i]), int(i));
+        const auto &samples = s.Samples();
+        const int n = int(samples.size()), len = int(chain.size());
+        std::vector<int> place(n);
+        for (int i = 0; i < n; ++i) {
+            auto it = at.find(vertexOf(samples[i].p));
+            if (it == at.end()) return false;
+            place[i] = it->second;
+        }
+        std::vector<SurfacePoint> line;
+        int walked = 0; // along the chain, which the samples follow once in order
+        for (int i = 0; i < n; ++i) {
+            line.push_back(samples[i].p);
+            if (i + 1 == n && !s.Closed()) break;
+            const int a = place[i], b = place[(i + 1) % n];
+            int steps = s.Closed() ? (b - a + len) % len : b - a;
+            if (steps < 0) return false;
+            walked += steps;
+            for (int j = 1; j < steps; ++j) line.push_back(chain[(a + j) % len]);
+        }
+        if (s.Closed() ? walked != len : (place[0] != 0 || walked != len - 1)) return false;
+        return s.KeepPolyline(line);
     }
 
 private:

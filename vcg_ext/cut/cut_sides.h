@@ -33,6 +33,7 @@ public:
         bool separated = true;
         bool complete[2] = {false, false}; ///< left, right flooded to their end
         std::vector<int> stack[2];
+        std::vector<int> faces[2]; ///< left, right: the faces flooded so far, in flood order
         std::vector<char> onCurve;
         const std::unordered_set<long long> *curveEdges = nullptr;
         /// +1 when the first curve runs counter-clockwise seen from the front of its left side
@@ -116,6 +117,7 @@ public:
                 if (r.label[f] != None) r.separated = false;
                 r.label[f] = lab;
                 r.stack[side].push_back(f);
+                r.faces[side].push_back(f);
                 (side == 0 ? r.areaLeft : r.areaRight) += w.Area(f);
                 ++(side == 0 ? r.facesLeft : r.facesRight);
             }
@@ -166,6 +168,7 @@ private:
                 }
                 r.label[g] = lab;
                 r.stack[side].push_back(g);
+                r.faces[side].push_back(g);
                 (side == 0 ? r.areaLeft : r.areaRight) += w.Area(g);
                 ++(side == 0 ? r.facesLeft : r.facesRight);
             });

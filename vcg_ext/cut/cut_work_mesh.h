@@ -187,6 +187,7 @@ public:
     /// Replaces vertex `from` by `to` in face f.
     void Rewire(int f, int from, int to)
     {
+        rewired.push_back(f);
         face[f].v[Corner(f, from)] = to;
         detach(from, f);
         attach(to, f);
@@ -201,6 +202,9 @@ public:
         out.insert(out.end(), it->second.begin(), it->second.end());
         return out;
     }
+
+    /// The faces Rewire changed (in order, repeats possible).
+    const std::vector<int> &Rewired() const { return rewired; }
 
     /// The user's faces that were split, with their added sub-faces.
     const std::unordered_map<int, std::vector<int>> &SplitParents() const { return children; }
@@ -220,6 +224,7 @@ private:
     std::vector<int> inc, start, origStart;
     std::unordered_map<int, std::vector<int>> changed;
     std::unordered_map<int, std::vector<int>> children;
+    std::vector<int> rewired;
     mutable std::vector<int> scratch;
 
     std::vector<int> &own(int v)

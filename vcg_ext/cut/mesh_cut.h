@@ -66,7 +66,11 @@ public:
         /// Select and CutOpen: surface points of the mesh before the cut to the mesh after it
         /// (the user's snakes); SelectOnly and Split leave the mesh as it was (an empty map).
         CutPointMap points;
+        /// Select and CutOpen: each curve as embedded, its vertices as surface points of the mesh
+        /// after the cut (a snake cut along keeps it as its polyline: CutSessionMap::KeepCurve).
+        std::vector<std::vector<SurfacePoint>> chains;
         double msEmbed = 0, msSides = 0, msCheck = 0, msCommit = 0, msSplit = 0;
+        double msPart[2] = {0, 0}; ///< Split: writing the inside and the outside part (in msSplit)
     };
 
     static std::string ModeName(CutMode m)
@@ -94,6 +98,15 @@ public:
         r.msCheck += ms(t0);
         t0 = clock::now();
         r.points.Build(m, wk.w);
+        for (const EmbeddedCurve &c : wk.curves) {
+            r.chains.emplace_back();
+            for (int v : c.chain) { // in one of its faces (the work mesh's are the mesh's after the commit)
+                const std::vector<int> &fs = wk.w.Faces(v);
+                vcg::Point3d b(0, 0, 0);
+                if (!fs.empty()) b[wk.w.Corner(fs.front(), v)] = 1;
+                r.chains.back().push_back(SurfacePoint(fs.empty() ? -1 : fs.front(), b));
+            }
+        }
         CutCommit<MeshType>::Commit(m, wk.w);
         r.msCommit = ms(t0);
         markSides(m, wk);
@@ -108,33 +121,39 @@ public:
             throw SnakeError("Cut: the mesh has deleted vertices or faces; compact it first. The mesh was not changed.");
         Work wk = prepare(m, curves, p);
         auto t0 = clock::now();
-        // each part is written straight from the user's mesh and the work mesh: its faces and
-        // the vertices they use, nothing else (no copy of the whole mesh)
+        // each part is written straight from the user's mesh and the work mesh: the faces its
+        // flood found and the vertices they use, nothing else, so it costs in proportion to
+        // its own size (the other side's flood is finished first, linear in that side)
         const CutWorkMesh &w = wk.w;
+        CutSides::Result &s = wk.sides;
+        const unsigned char other = wk.chosen == CutSides::Left ? CutSides::Right : CutSides::Left;
+        CutSides::Complete(w, s, other);
+        const std::vector<int> &inFaces = s.faces[wk.chosen == CutSides::Left ? 0 : 1];
+        std::vector<int> &outFaces = s.faces[other == CutSides::Left ? 0 : 1];
+        // faces no flood reached (other connected components) stay with the outside
+        if (inFaces.size() + outFaces.size() < w.face.size())
+            for (size_t f = 0; f < w.face.size(); ++f)
+                if (s.label[f] == CutSides::None) outFaces.push_back(int(f));
         const CutCommit<MeshType> src(m, w);
-        const auto &lab = wk.sides.label;
         Result &r = wk.r;
         r.faceSide.assign(w.face.size(), 0);
-        std::vector<int> partFaces[2];
-        for (size_t f = 0; f < w.face.size(); ++f) {
-            if (w.face[f].parent < 0) continue;
-            const int in = lab[f] == wk.chosen;
-            r.faceSide[f] = in;
-            partFaces[in ? 0 : 1].push_back(int(f));
-        }
-        r.facesInside = int(partFaces[0].size());
-        r.facesOutside = int(partFaces[1].size());
-        wk.r.msCommit = ms(t0);
+        for (int f : inFaces) r.faceSide[f] = 1;
+        r.facesInside = int(inFaces.size());
+        r.facesOutside = int(outFaces.size());
+        r.msCommit = ms(t0);
         t0 = clock::now();
         std::vector<int> vmap(w.pos.size(), -1);
+        r.msSplit = ms(t0);
         for (int part = 0; part < 2; ++part) {
+            const auto tp = clock::now();
+            const std::vector<int> &faces = part == 0 ? inFaces : outFaces;
             MeshType &dst = part == 0 ? inside : outside;
             dst.Clear();
             // the optional components MeshLab's meshes hold (texture coordinates, face colour
             // and quality) come along into the parts
             EnableLike(dst, m);
             std::vector<int> verts;
-            for (int f : partFaces[part])
+            for (int f : faces)
                 for (int k = 0; k < 3; ++k) {
                     const int v = w.face[f].v[k];
                     if (vmap[v] < 0) {
@@ -144,17 +163,18 @@ public:
                 }
             if (!verts.empty()) vcg::tri::Allocator<MeshType>::AddVertices(dst, verts.size());
             for (size_t i = 0; i < verts.size(); ++i) src.Vertex(dst.vert[i], verts[i]);
-            if (!partFaces[part].empty()) vcg::tri::Allocator<MeshType>::AddFaces(dst, partFaces[part].size());
-            for (size_t i = 0; i < partFaces[part].size(); ++i) {
-                const CutWorkMesh::Face &wf = w.face[partFaces[part][i]];
-                src.Face(dst.face[i], partFaces[part][i], &dst.vert[vmap[wf.v[0]]], &dst.vert[vmap[wf.v[1]]],
+            if (!faces.empty()) vcg::tri::Allocator<MeshType>::AddFaces(dst, faces.size());
+            for (size_t i = 0; i < faces.size(); ++i) {
+                const CutWorkMesh::Face &wf = w.face[faces[i]];
+                src.Face(dst.face[i], faces[i], &dst.vert[vmap[wf.v[0]]], &dst.vert[vmap[wf.v[1]]],
                          &dst.vert[vmap[wf.v[2]]], true);
             }
             for (int v : verts) vmap[v] = -1; // (the other part reuses the map)
             vcg::tri::UpdateSelection<MeshType>::Clear(dst);
             vcg::tri::UpdateBounding<MeshType>::Box(dst);
+            r.msPart[part] = ms(tp);
+            r.msSplit += r.msPart[part];
         }
-        wk.r.msSplit = ms(t0);
         CutCheck::Parts(inside, outside, wk.r.areaInside, wk.r.areaOutside, wk.totalArea);
         return wk.r;
     }

@@ -115,6 +115,43 @@ public:
         resetRun();
     }
 
+    /// Takes `polyline` (the samples in order and the crossings between them, as Polyline()
+    /// gives) as the traced curve instead of tracing the gaps anew: a snake moved onto a cut
+    /// mesh (cut/cut_session_map.h) keeps the curve that was embedded, which a new trace on the
+    /// split faces only approximates. Returns false, changing nothing, when the polyline does
+    /// not run through the samples in order or is not on the mesh.
+    bool KeepPolyline(const std::vector<SurfacePoint> &polyline)
+    {
+        const int n = int(st.samples.size()), gaps = numGaps();
+        auto isSample = [&](const SurfacePoint &p, int i) {
+            const SurfacePoint &s = st.samples[i % n].p;
+            return p.face == s.face && (p.bary - s.bary).Norm() <= 1e-9;
+        };
+        if (n < 2 || polyline.empty() || !isSample(polyline[0], 0)) return false;
+        for (const auto &p : polyline)
+            if (!p.OnMesh(surf->Mesh())) return false;
+        std::vector<std::vector<SurfacePoint>> crossings(gaps);
+        size_t at = 0;
+        for (int g = 0; g < gaps; ++g) {
+            const bool last = st.closed && g == n - 1; // runs to the polyline's end
+            size_t next = at + 1;
+            while (next < polyline.size() && !(!last && isSample(polyline[next], g + 1))) ++next;
+            if (!last && next == polyline.size()) return false;
+            crossings[g].assign(polyline.begin() + at + 1, polyline.begin() + next);
+            at = next;
+        }
+        if (!st.closed && at + 1 != polyline.size()) return false;
+        for (int g = 0; g < gaps; ++g) {
+            Gap &gap = st.gaps[g];
+            gap = Gap();
+            gap.crossings = crossings[g];
+            gap.traced = true; // as read: no tightening (gap.faces empty: the motion finds them)
+            gap.tracedFrom = st.samples[g].p;
+            gap.tracedTo = st.samples[(g + 1) % n].p;
+        }
+        return true;
+    }
+
     // ----------------------------------------------------------------- motion
     /// One snake operation (Sec. 4.3, Fig. 1): partition, then for every segment build the
     /// local region, embed it, map samples and energy gradients into the plane, do up to
