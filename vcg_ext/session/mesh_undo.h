@@ -28,7 +28,8 @@ namespace tri {
 namespace detail {
 // Append copies only the components both meshes have: a copy of a mesh with optional (ocf)
 // components enables those the original has enabled (MeshLab's colour per face, texture
-// coordinates per wedge, ...). Adjacency and marks are left out: they are recomputed.
+// coordinates per wedge, ...). Adjacency and marks are left out: they are recomputed. Scalar
+// curvature is left out too: vcglib after 2020.09 has no such component (only its directions).
 #define GS_ENABLE_LIKE(NAME, CONT, HAS, ENABLE)                                                                       \
     template <class M>                                                                                                 \
     auto NAME(M &c, const M &f, int)->decltype(c.CONT.ENABLE(), void())                                              \
@@ -41,7 +42,6 @@ namespace detail {
     }
 GS_ENABLE_LIKE(LikeVertTexCoord, vert, tri::HasPerVertexTexCoord, EnableTexCoord)
 GS_ENABLE_LIKE(LikeVertRadius, vert, tri::HasPerVertexRadius, EnableRadius)
-GS_ENABLE_LIKE(LikeVertCurvature, vert, tri::HasPerVertexCurvature, EnableCurvature)
 GS_ENABLE_LIKE(LikeVertCurvatureDir, vert, tri::HasPerVertexCurvatureDir, EnableCurvatureDir)
 GS_ENABLE_LIKE(LikeVertColor, vert, tri::HasPerVertexColor, EnableColor)
 GS_ENABLE_LIKE(LikeVertQuality, vert, tri::HasPerVertexQuality, EnableQuality)
@@ -55,7 +55,7 @@ GS_ENABLE_LIKE(LikeFaceCurvatureDir, face, tri::HasPerFaceCurvatureDir, EnableCu
 template <class M>
 void EnableOptionalLike(M &c, const M &f)
 {
-    LikeVertTexCoord(c, f, 0), LikeVertRadius(c, f, 0), LikeVertCurvature(c, f, 0), LikeVertCurvatureDir(c, f, 0);
+    LikeVertTexCoord(c, f, 0), LikeVertRadius(c, f, 0), LikeVertCurvatureDir(c, f, 0);
     LikeVertColor(c, f, 0), LikeVertQuality(c, f, 0);
     LikeFaceColor(c, f, 0), LikeFaceQuality(c, f, 0), LikeFaceNormal(c, f, 0), LikeWedgeTexCoord(c, f, 0);
     LikeFaceCurvatureDir(c, f, 0);
