@@ -488,12 +488,14 @@ void MakeGradedWaist(CMeshO &m)
 
 // The valley loop where edge lengths vary 20x across the valley (the guide's uneven
 // tessellations; here 0.02-0.61, 30x with the zipped diagonals). A Run from seeds on the fine
-// side converges on the waist and ends on its circle of edges; the valley loop alone (a loop
-// taken as converged where it was placed) from a fine ring below and from the first coarse ring
-// above (1.95 waist edges up, at the band's edge) reaches the waist too, never a point or a stub.
-// Not asserted: a Run from seeds on the coarse side (even on the waist's ring) slides up to
-// z = 0.8, where the coarse rings meet (measured: converged there, 10.9 waist edges off); the
-// valley loop then finds no ring of edges in its band and keeps the snake.
+// side, and Runs from seeds on the coarse side (the first coarse ring, 6 waist edges up, and
+// 15 waist edges up) converge on the waist and end on its circle of edges or the coarse ring
+// beside it; the valley loop alone (a loop taken as converged where it was placed) from a fine
+// ring below and from the first coarse ring above (1.95 waist edges up, at the band's edge)
+// reaches the waist too, never a point or a stub. The coarse-side Runs need the concavity made
+// dimensionless by one length for the mesh (PartBoundaryEnergy::Concavity): by each vertex's
+// own fit radius, the coarse side's broad fits read up to 20x deeper than the waist and a Run
+// from z = 0.12 slid up to z = 0.8, where the coarse rings meet (10.9 waist edges off).
 TEST(ValleyLoop, EndsOnTheValleyWhereEdgeLengthsVary20x)
 {
     CMeshO m;
@@ -513,8 +515,9 @@ TEST(ValleyLoop, EndsOnTheValleyWhereEdgeLengthsVary20x)
         bool run;
         double maxOff; // bound on the farthest point off the waist, in waist edges
     };
-    // measured: 0.00, 0.51 and 1.95 waist edges (the last on the coarse ring for part of the way)
-    for (const Case c : {Case{-0.08, true, 0.5}, Case{-0.08, false, 1.0}, Case{0.12, false, 2.5}}) {
+    // measured: 0.87, 0.87, 1.95, 1.95 and 0.87 waist edges (1.95: on the coarse ring for part of the way)
+    for (const Case c : {Case{-0.08, true, 1.0}, Case{-0.08, false, 1.0}, Case{0.12, false, 2.5}, Case{0.12, true, 2.5},
+                         Case{0.3, true, 2.5}}) {
         std::vector<P3> pts;
         for (int i = 0; i < 8; ++i)
             pts.push_back(P3(std::cos(M_PI * i / 4), std::sin(M_PI * i / 4), 0) * TubeRadius(c.zSeed) + P3(0, 0, c.zSeed));

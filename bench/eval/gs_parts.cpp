@@ -14,6 +14,7 @@
 // Success (the criterion): capture >= 90 % (share of the loop within 1 h of a person's
 // cut) and coverage >= 90 % (share of that cut within 1 h of the loop); h = mean edge length.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
@@ -158,6 +159,30 @@ int main(int argc, char **argv)
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
                         const bool point = L1 < 0.25 * L0 || s.Stats().stopped;
+                        if (std::getenv("GS_PARTS_WHERE")) {
+                            // where the loop ends: its samples' signed ring off the boundary
+                            // (+ on the part), from the nearest vertex
+                            std::vector<int> dist, sideOf;
+                            gs_parts::Rings(md.mesh, p, dist, sideOf);
+                            int nIn = 0, nOut = 0, nOn = 0;
+                            std::vector<int> sr;
+                            for (const auto &x : gs_parts::ResampleLoop(loop, 0.5 * md.h)) {
+                                size_t bv = 0;
+                                double bd = 1e300;
+                                for (size_t v = 0; v < md.mesh.vert.size(); ++v) {
+                                    const double d = vcg::SquaredDistance(vcg::Point3d::Construct(md.mesh.vert[v].cP()), x);
+                                    if (d < bd) bd = d, bv = v;
+                                }
+                                const int r = dist[bv] * (sideOf[bv] >= 0 ? 1 : -1);
+                                sr.push_back(r);
+                                (r >= 2 ? nIn : r <= -2 ? nOut : nOn) += 1;
+                            }
+                            std::sort(sr.begin(), sr.end());
+                            std::fprintf(stderr, "WHERE %s %d %d %s %d ok=%d in=%d on=%d out=%d min=%d med=%d max=%d\n",
+                                         en.c_str(), id, p.index, side > 0 ? "inside" : "outside", ring,
+                                         int(sc.Success()), nIn, nOn, nOut, sr.front(), sr[sr.size() / 2],
+                                         sr.back());
+                        }
                         Tally &t = tally[en][md.category], &all = tally[en]["ALL"];
                         for (Tally *x : {&t, &all}) ++x->n, x->ok += sc.Success(), x->points += point;
                         char row[512];

@@ -14,9 +14,10 @@
 // least squares to the vertices within a distance r, connected to it along edges (a geodesic
 // neighbourhood, so a neighbouring finger is not mixed in), in the frame of the mean normal of
 // that neighbourhood. r is a number of local edge lengths (the snake's length unit is the
-// median edge along its seed path), so the energy is scale-free and follows meshes whose edge
-// lengths vary. The signed minimum curvature k_min (outward normals: convex > 0) is made
-// dimensionless by r; the concavity c = max(0, -k_min r) maps to E = exp(-c / c_ref), with
+// median edge along its seed path), so the fit follows meshes whose edge lengths vary. The
+// signed minimum curvature k_min (outward normals: convex > 0) is made dimensionless by one
+// length for the whole mesh, R = the same number of median edge lengths (not by r: see
+// Concavity), so the energy is scale-free; the concavity c = max(0, -k_min R) maps to E = exp(-c / c_ref), with
 // c_ref the median concavity of the concave vertices: strong valleys go to 0, flat ground
 // stays at 1, whatever the mesh's size.
 //
@@ -75,8 +76,8 @@ public:
         return e;
     }
 
-    /// max(0, -k_min * r) per vertex: the dimensionless concavity at the scale r (in local
-    /// edge lengths).
+    /// max(0, -k_min * R) per vertex: the concavity fitted at the scale r (radiusInEdges local
+    /// edge lengths), made dimensionless by R (radiusInEdges median edge lengths of the mesh).
     static std::vector<double> Concavity(const MeshType &m, double radiusInEdges, const Param &par = Param())
     {
         const int nv = int(m.vert.size());
@@ -90,6 +91,20 @@ public:
             le[v] = start[v + 1] > start[v] ? s / (start[v + 1] - start[v]) : 0;
         }
         const double sign = OutwardSign(m);
+        // One length for the whole mesh makes the curvature dimensionless: the same valley then
+        // has the same depth wherever it is measured from. Each vertex's own fit radius would
+        // multiply it by the local edge length, so that beside a valley whose tessellation is
+        // graded 20x the coarse side's broad fits read 20x deeper than the valley itself, and a
+        // loop slid there (test ValleyLoop.EndsOnTheValleyWhereEdgeLengthsVary20x).
+        std::vector<double> ls;
+        for (int v = 0; v < nv; ++v)
+            if (!m.vert[v].IsD() && le[v] > 0) ls.push_back(le[v]);
+        double hg = 0;
+        if (!ls.empty()) {
+            std::nth_element(ls.begin(), ls.begin() + ls.size() / 2, ls.end());
+            hg = ls[ls.size() / 2];
+        }
+        const double R = radiusInEdges * hg; // the fit radius on a median edge
         std::vector<double> out(nv, 0.0);
         std::vector<int> mark(nv, -1), ring;
         for (int v = 0; v < nv; ++v) {
@@ -137,7 +152,8 @@ public:
             H << -2 * s[0], -s[1], -s[1], -2 * s[2];
             H *= sign;
             const double kmin = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(H, Eigen::EigenvaluesOnly).eigenvalues()[0];
-            out[v] = std::max(0.0, -kmin); // already times r: the coordinates were divided by r
+            // kmin is in units of 1/r (the coordinates were divided by r): times R / r
+            out[v] = std::max(0.0, -kmin) * (R / r);
         }
         return out;
     }
