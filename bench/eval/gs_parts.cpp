@@ -9,7 +9,9 @@
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
-//   people's cuts pass the success criterion against the other people's.)
+//   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
+//   loop, where it ends: its points' signed ring off the representative person's boundary, + on
+//   the part, from the nearest vertex, and the mean energy on the loop and on that boundary.)
 //
 // Success (the criterion): capture >= 90 % (share of the loop within 1 h of a person's
 // cut) and coverage >= 90 % (share of that cut within 1 h of the loop); h = mean edge length.
@@ -165,6 +167,8 @@ int main(int argc, char **argv)
                             std::vector<int> dist, sideOf;
                             gs_parts::Rings(md.mesh, p, dist, sideOf);
                             int nIn = 0, nOut = 0, nOn = 0;
+                            double eLoop = 0, eCut = 0;
+                            for (int v : p.loop) eCut += md.mesh.vert[v].Q() / double(p.loop.size());
                             std::vector<int> sr;
                             for (const auto &x : gs_parts::ResampleLoop(loop, 0.5 * md.h)) {
                                 size_t bv = 0;
@@ -175,13 +179,17 @@ int main(int argc, char **argv)
                                 }
                                 const int r = dist[bv] * (sideOf[bv] >= 0 ? 1 : -1);
                                 sr.push_back(r);
+                                eLoop += md.mesh.vert[bv].Q();
                                 (r >= 2 ? nIn : r <= -2 ? nOut : nOn) += 1;
                             }
+                            eLoop /= std::max<size_t>(1, sr.size());
                             std::sort(sr.begin(), sr.end());
-                            std::fprintf(stderr, "WHERE %s %d %d %s %d ok=%d in=%d on=%d out=%d min=%d med=%d max=%d\n",
+                            std::fprintf(stderr,
+                                         "WHERE %s %d %d %s %d ok=%d in=%d on=%d out=%d min=%d med=%d max=%d "
+                                         "eloop=%.3f ecut=%.3f\n",
                                          en.c_str(), id, p.index, side > 0 ? "inside" : "outside", ring,
                                          int(sc.Success()), nIn, nOn, nOut, sr.front(), sr[sr.size() / 2],
-                                         sr.back());
+                                         sr.back(), eLoop, eCut);
                         }
                         Tally &t = tally[en][md.category], &all = tally[en]["ALL"];
                         for (Tally *x : {&t, &all}) ++x->n, x->ok += sc.Success(), x->points += point;
