@@ -184,12 +184,13 @@ int main(int argc, char **argv)
                             }
                             eLoop /= std::max<size_t>(1, sr.size());
                             std::sort(sr.begin(), sr.end());
-                            std::fprintf(stderr,
-                                         "WHERE %s %d %d %s %d ok=%d in=%d on=%d out=%d min=%d med=%d max=%d "
-                                         "eloop=%.3f ecut=%.3f\n",
-                                         en.c_str(), id, p.index, side > 0 ? "inside" : "outside", ring,
-                                         int(sc.Success()), nIn, nOn, nOut, sr.front(), sr[sr.size() / 2],
-                                         sr.back(), eLoop, eCut);
+                            if (!sr.empty())
+                                std::fprintf(stderr,
+                                             "WHERE %s %d %d %s %d ok=%d in=%d on=%d out=%d min=%d med=%d max=%d "
+                                             "eloop=%.3f ecut=%.3f\n",
+                                             en.c_str(), id, p.index, side > 0 ? "inside" : "outside", ring,
+                                             int(sc.Success()), nIn, nOn, nOut, sr.front(), sr[sr.size() / 2],
+                                             sr.back(), eLoop, eCut);
                         }
                         Tally &t = tally[en][md.category], &all = tally[en]["ALL"];
                         for (Tally *x : {&t, &all}) ++x->n, x->ok += sc.Success(), x->points += point;
