@@ -933,3 +933,24 @@ TEST(MeshCutTest, APlanSaysWhetherTheMeshWillChangeAndChangesNothing)
     EXPECT_THROW(Cut::Apply(fresh, std::move(stale)), SnakeError);
     EXPECT_EQ(Snapshot(fresh), cutFresh);
 }
+
+TEST(MeshCutTest, ASmallPartOfASplitIsWholeAndItsOwnSize)
+{
+    // a part under an eighth of the mesh maps its vertices through a hash table sized to it
+    DMesh m, in, out;
+    Plate(m, 24, 1.0, 0.3, 7);
+    const std::vector<vcg::Point2d> poly = {{3.3, 3.6}, {7.7, 4.1}, {5.2, 7.9}};
+    const Cut::Result r = Cut::Split(m, {PolygonCurve(m, poly)}, Cut::Param(), in, out);
+    ASSERT_LT(8 * r.facesInside, r.facesInside + r.facesOutside);
+    EXPECT_EQ(in.fn, r.facesInside);
+    EXPECT_EQ(out.fn, r.facesOutside);
+    EXPECT_NEAR(Area(in), PolygonArea(poly), 1e-9);
+    EXPECT_NEAR(Area(in) + Area(out), 24.0 * 24.0, 1e-9);
+    // each part's vertices are the ones its faces use, none twice: inside, a disk (V - E + F = 1)
+    UpdateTopology<DMesh>::FaceFace(in);
+    int border = 0;
+    for (auto &f : in.face)
+        for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
+    const int edges = (3 * in.fn + border) / 2;
+    EXPECT_EQ(in.vn - edges + in.fn, 1);
+}

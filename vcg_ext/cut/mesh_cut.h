@@ -7,6 +7,7 @@
 // the faces' centroids without changing the mesh, split into two meshes, or cut open (the
 // curves' edges become boundary edges). A refused or failed cut leaves the mesh as it was.
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <string>
@@ -24,7 +25,6 @@
 #include <vcg_ext/cut/cut_sides.h>
 #include <vcg_ext/cut/cut_work_mesh.h>
 #include <vcg_ext/snake/error.h>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace vcg {
@@ -198,14 +198,14 @@ public:
             const std::vector<int> &faces = part == 0 ? inFaces : outFaces;
             MeshType &dst = part == 0 ? inside : outside;
             // work vertex -> part vertex: a table over the work mesh's vertices for a part of
-            // more than an eighth of the mesh, a hash map for a smaller one (costs as the part)
+            // more than an eighth of the mesh, a hash table sized to the part for a smaller one
+            // (std::unordered_map took 3x as long per face on the 1.2M-face plate)
             if (8 * faces.size() > w.face.size()) {
                 std::vector<int> dense(w.pos.size(), -1);
                 writePart(w, src, faces, m, dst, [&](int v) -> int & { return dense[v]; });
             } else {
-                std::unordered_map<int, int> sparse;
-                sparse.reserve(faces.size());
-                writePart(w, src, faces, m, dst, [&](int v) -> int & { return sparse.emplace(v, -1).first->second; });
+                VertexSlots sparse(faces.size());
+                writePart(w, src, faces, m, dst, [&](int v) -> int & { return sparse[v]; });
             }
             r.msPart[part] = ms(tp);
             r.msSplit += r.msPart[part];
@@ -237,6 +237,57 @@ private:
     template <class C> static auto enableVT(C &d, const C &s, int) -> decltype(d.EnableTexCoord(), void())
     { if (s.IsTexCoordEnabled() && !d.IsTexCoordEnabled()) d.EnableTexCoord(); }
     template <class C> static void enableVT(C &, const C &, long) {}
+
+    /// Open addressing (linear probing) from vertex indices to ints, -1 until set; it grows
+    /// to keep at most half full, so it costs in proportion to the keys it holds.
+    class VertexSlots
+    {
+    public:
+        explicit VertexSlots(size_t expected) { rehash(std::max<size_t>(16, 2 * expected)); }
+        int &operator[](int key)
+        {
+            size_t i = slotOf(key);
+            if (keys[i] == key) return vals[i];
+            if (2 * (used + 1) > keys.size()) {
+                rehash(2 * keys.size());
+                i = slotOf(key);
+            }
+            ++used;
+            keys[i] = key;
+            return vals[i];
+        }
+
+    private:
+        std::vector<int> keys, vals;
+        size_t used = 0, mask = 0;
+        int shift = 0;
+        size_t slotOf(int key) const
+        {
+            size_t i = size_t((unsigned long long)(unsigned)key * 0x9E3779B97F4A7C15ull >> shift) & mask;
+            while (keys[i] != key && keys[i] != -1) i = (i + 1) & mask;
+            return i;
+        }
+        void rehash(size_t cap)
+        {
+            size_t c = 16;
+            int bits = 4;
+            while (c < cap) {
+                c <<= 1;
+                ++bits;
+            }
+            std::vector<int> k = std::move(keys), v = std::move(vals);
+            keys.assign(c, -1);
+            vals.assign(c, -1);
+            mask = c - 1;
+            shift = 64 - bits;
+            for (size_t i = 0; i < k.size(); ++i)
+                if (k[i] != -1) {
+                    const size_t j = slotOf(k[i]);
+                    keys[j] = k[i];
+                    vals[j] = v[i];
+                }
+        }
+    };
 
     /// One part of a split: the work mesh's `faces` and their vertices into dst; slot(v) is the
     /// part's index of work vertex v (-1 until it has one).
