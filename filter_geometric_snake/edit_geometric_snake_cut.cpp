@@ -66,12 +66,15 @@ void EditGeometricSnakePlugin::cutSelect(bool inside)
         p.side = inside ? vcg::tri::CutSide::Inside : vcg::tri::CutSide::Outside;
         const nlohmann::json session = ctl->ToJson(); // for the snakes, if the cut adds faces
         const int snake = ctl->Selected() + 1;
+        // the cut planned first: the mesh is copied for the undo only when it will change (a
+        // snake along its embedded curve changes the selection alone, undone as one below)
+        MeshCut<CMeshO>::Planned plan = MeshCut<CMeshO>::Plan(model->cm, {SelectedCurve(*ctl)}, p);
         std::string why;
-        std::unique_ptr<CMeshO> before = wholeFaces ? nullptr : cutUndo.Snapshot(model->cm, why); // for the undo
+        std::unique_ptr<CMeshO> before = plan.ChangesMesh() ? cutUndo.Snapshot(model->cm, why) : nullptr;
         MeshCut<CMeshO>::Result r;
         // one step of the tool's undo (Ctrl+Z brings the selection before it back)
         ctl->ChangeSelection(inside ? "select inside" : "select outside",
-                             [&] { r = MeshCut<CMeshO>::Apply(model->cm, {SelectedCurve(*ctl)}, p); });
+                             [&] { r = MeshCut<CMeshO>::Apply(model->cm, std::move(plan)); });
         QString msg = QString("Selected the %1 of snake %2: %3 faces (area %4 of %5)%6.")
                           .arg(inside ? "inside" : "outside")
                           .arg(snake)
@@ -108,9 +111,11 @@ void EditGeometricSnakePlugin::cutOpen()
         p.mode = vcg::tri::CutMode::CutOpen;
         const nlohmann::json session = ctl->ToJson();
         const int snake = ctl->Selected() + 1;
+        // planned first: a refused cut throws before the mesh is copied for the undo
+        MeshCut<CMeshO>::Planned plan = MeshCut<CMeshO>::Plan(model->cm, {SelectedCurve(*ctl)}, p);
         std::string why;
         std::unique_ptr<CMeshO> before = cutUndo.Snapshot(model->cm, why);
-        const MeshCut<CMeshO>::Result r = MeshCut<CMeshO>::Apply(model->cm, {SelectedCurve(*ctl)}, p);
+        const MeshCut<CMeshO>::Result r = MeshCut<CMeshO>::Apply(model->cm, std::move(plan));
         const QString msg = QString("Cut open along snake %1: its %2 vertices on the mesh are on the boundary now "
                                     "(%3 vertices and %4 faces added); the session goes on on the cut mesh%5.")
                                 .arg(snake)

@@ -891,3 +891,66 @@ TEST(MeshCutTest, ACurveCutAgainRunsAlongTheEdgesOfItsFirstCut)
         for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
     EXPECT_EQ(border, 40 + 2 * o.curveVertices); // the plate's rim and both lips of the square
 }
+
+TEST(MeshCutTest, APlanSaysWhetherTheMeshWillChangeAndChangesNothing)
+{
+    // the edit tool copies the mesh for its undo only when the cut will change it (Plan first)
+    DMesh m;
+    Plate(m, 10, 1.0, 0.3, 5);
+    const std::vector<vcg::Point2d> poly = {{2.3, 2.7}, {7.4, 3.1}, {6.2, 7.3}, {2.9, 6.6}};
+    const std::string before = Snapshot(m);
+    Cut::Planned first = Cut::Plan(m, {PolygonCurve(m, poly)}, Cut::Param());
+    EXPECT_TRUE(first.ChangesMesh());
+    EXPECT_GT(first.AddedVertices(), 0);
+    EXPECT_EQ(Snapshot(m), before); // planning wrote nothing
+    const size_t vn = m.vert.size();
+    const Cut::Result r = Cut::Apply(m, std::move(first));
+    EXPECT_EQ(int(m.vert.size() - vn), r.addedVertices);
+    EXPECT_GT(r.addedVertices, 0);
+    // the embedded chain (as the edit tool's snake keeps it): nothing left to embed
+    const CutCurve chain{r.chains[0], true};
+    Cut::Planned again = Cut::Plan(m, {chain}, Cut::Param());
+    EXPECT_FALSE(again.ChangesMesh());
+    EXPECT_EQ(again.AddedVertices(), 0);
+    EXPECT_EQ(again.AddedFaces(), 0);
+    const Cut::Result r2 = Cut::Apply(m, std::move(again));
+    EXPECT_EQ(m.vert.size(), vn + size_t(r.addedVertices));
+    EXPECT_EQ(r2.addedVertices + r2.addedFaces, 0);
+    EXPECT_EQ(r2.facesInside, r.facesInside);
+    // the same curve cut open changes the mesh; selecting by centroids never does
+    Cut::Param open;
+    open.mode = CutMode::CutOpen;
+    EXPECT_TRUE(Cut::Plan(m, {chain}, open).ChangesMesh());
+    Cut::Param only;
+    only.mode = CutMode::SelectOnly;
+    DMesh fresh;
+    Plate(fresh, 10, 1.0, 0.3, 5);
+    EXPECT_FALSE(Cut::Plan(fresh, {PolygonCurve(fresh, poly)}, only).ChangesMesh());
+    // a plan of a mesh changed since is refused, the mesh as it was
+    Cut::Planned stale = Cut::Plan(fresh, {PolygonCurve(fresh, poly)}, Cut::Param());
+    Cut::Apply(fresh, {PolygonCurve(fresh, poly)}, Cut::Param());
+    const std::string cutFresh = Snapshot(fresh);
+    EXPECT_THROW(Cut::Apply(fresh, std::move(stale)), SnakeError);
+    EXPECT_EQ(Snapshot(fresh), cutFresh);
+}
+
+TEST(MeshCutTest, ASmallPartOfASplitIsWholeAndItsOwnSize)
+{
+    // a part under an eighth of the mesh maps its vertices through a hash table sized to it
+    DMesh m, in, out;
+    Plate(m, 24, 1.0, 0.3, 7);
+    const std::vector<vcg::Point2d> poly = {{3.3, 3.6}, {7.7, 4.1}, {5.2, 7.9}};
+    const Cut::Result r = Cut::Split(m, {PolygonCurve(m, poly)}, Cut::Param(), in, out);
+    ASSERT_LT(8 * r.facesInside, r.facesInside + r.facesOutside);
+    EXPECT_EQ(in.fn, r.facesInside);
+    EXPECT_EQ(out.fn, r.facesOutside);
+    EXPECT_NEAR(Area(in), PolygonArea(poly), 1e-9);
+    EXPECT_NEAR(Area(in) + Area(out), 24.0 * 24.0, 1e-9);
+    // each part's vertices are the ones its faces use, none twice: inside, a disk (V - E + F = 1)
+    UpdateTopology<DMesh>::FaceFace(in);
+    int border = 0;
+    for (auto &f : in.face)
+        for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
+    const int edges = (3 * in.fn + border) / 2;
+    EXPECT_EQ(in.vn - edges + in.fn, 1);
+}

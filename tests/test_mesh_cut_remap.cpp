@@ -4,6 +4,9 @@
 // runs along the embedded curve, so the second select adds nothing and selects the same faces.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <string>
+
 #include <snake_test_util.h>
 #include <vcg_ext/cut/cut_session_map.h>
 #include <vcg_ext/cut/mesh_cut.h>
@@ -50,8 +53,25 @@ void ExpectSecondSelectAddsNothing(CMeshO &m, Controller &c)
     // the snake cut along keeps the embedded curve (traced anew on the split faces it moves by a
     // few percent of an edge and the second select refuses it, or splits faces again)
     EXPECT_TRUE(CutSessionMap<CMeshO>::KeepCurve(d, 0, first.chains[0], m));
+    // ... and keeps it through the session file (a layer switch, a restart): saved, read back
+    // as the tool reads it (SnakeController::Load, the lean parser)
+    const std::string file = testing::TempDir() + "gs_cut_remap_session.json";
+    d.Save(file);
+    Controller e(m);
+    ASSERT_TRUE(e.Load(file));
+    std::remove(file.c_str());
+    ASSERT_EQ(e.SnakeCount(), 1);
+    EXPECT_EQ(CurveOf(e).points.size(), CurveOf(d).points.size());
+    // a file without the embedded curve (older) still loads; its snake is traced anew
+    Controller::json old = d.ToJson();
+    ASSERT_TRUE(old["snakes"][0].contains("embedded"));
+    old["snakes"][0].erase("embedded");
+    Controller o(m);
+    o.FromJson(old);
+    EXPECT_EQ(o.SnakeCount(), 1);
     const size_t vn = m.vert.size(), fn = m.face.size();
-    const MeshCut<CMeshO>::Result again = MeshCut<CMeshO>::Apply(m, {CurveOf(d)}, MeshCut<CMeshO>::Param());
+    EXPECT_FALSE(MeshCut<CMeshO>::Plan(m, {CurveOf(e)}, MeshCut<CMeshO>::Param()).ChangesMesh());
+    const MeshCut<CMeshO>::Result again = MeshCut<CMeshO>::Apply(m, {CurveOf(e)}, MeshCut<CMeshO>::Param());
     EXPECT_EQ(again.addedVertices, 0);
     EXPECT_EQ(again.addedFaces, 0);
     EXPECT_EQ(m.vert.size(), vn);

@@ -119,6 +119,13 @@ public:
         j["initial"] = {{"samples", SamplesJson(m, s.InitialSamples())}, {"polyline", PolylineJson(m, s.InitialPolyline())}};
         j["samples"] = SamplesJson(m, s.Samples());
         j["polyline"] = PolylineJson(m, polyline);
+        // a curve running through mesh vertices only (the curve a cut embedded, kept by
+        // GeometricSnake::KeepPolyline): its points, so a restored snake keeps it instead of a
+        // new trace that would leave the embedded edges (older files lack it: traced anew)
+        if (OnVertices(polyline)) {
+            j["embedded"] = json::array();
+            for (const auto &p : polyline) j["embedded"].push_back(PointJson(m, p));
+        }
         j["params"] = ParamsJson(s.Params());
         j["stats"] = {{"operations", st.operations},
                       {"updates", st.updates},
@@ -151,6 +158,21 @@ public:
         }
         throw SnakeError(std::string("Snake JSON: \"") + what + "\" is " + v.dump() +
                          ", which is not a valid index (a whole number from 0).");
+    }
+
+    /// Every point at a vertex of its face (one barycentric coordinate 1).
+    static bool OnVertices(const std::vector<SurfacePoint> &pl)
+    {
+        for (const auto &p : pl)
+            if (std::max(p.bary[0], std::max(p.bary[1], p.bary[2])) < 1 - 1e-12) return false;
+        return !pl.empty();
+    }
+
+    static std::vector<SurfacePoint> PointsOf(const std::vector<SnakeSample> &s)
+    {
+        std::vector<SurfacePoint> out;
+        for (const auto &x : s) out.push_back(x.p);
+        return out;
     }
 
     static std::vector<SnakeSample> SamplesFromJson(const MeshType &m, const json &a)
@@ -212,6 +234,7 @@ public:
             const MeshType &m = s.GetSurface().Mesh();
             if (j.contains("params")) s.SetParams(ParamsFromJson(j["params"], s.Params()));
             s.InitFromSamples(SamplesFromJson(m, j["samples"]), j.value("closed", false), LengthScaleFrom(j));
+            if (j.contains("embedded")) s.KeepPolyline(PointsOf(SamplesFromJson(m, j["embedded"])));
         } catch (const json::exception &e) {
             throw SnakeError("Snake JSON: " + JsonErrorText(e) + ".");
         }

@@ -540,6 +540,8 @@ public:
         for (const auto &fs : f.snakes) {
             std::unique_ptr<Snake> s(new Snake(surface, fs.params));
             s->InitFromSamples(fs.samples, fs.closed, fs.lengthScale);
+            // the curve a cut embedded, as saved (false, the snake traced anew, if it no longer fits)
+            if (!fs.embedded.empty()) s->KeepPolyline(fs.embedded);
             nsn.push_back(std::move(s));
         }
         snakes = std::move(nsn);

@@ -37,6 +37,9 @@ struct SnakeSessionFile
         std::vector<SnakeSample> samples;
         bool closed = false;
         double lengthScale = 0;
+        /// the curve a cut embedded, through mesh vertices ("embedded", SnakeIO::ToJson): kept
+        /// by GeometricSnake::KeepPolyline; empty in older files
+        std::vector<SurfacePoint> embedded;
     };
 
     bool energyFromQuality = false; ///< the vertex quality as it is, not a computed energy
@@ -133,6 +136,7 @@ struct SnakeSessionFile
                 s.samples = IO::SamplesFromJson(m, js["samples"]);
                 s.closed = js.value("closed", false);
                 s.lengthScale = IO::LengthScaleFrom(js);
+                if (js.contains("embedded")) s.embedded = IO::PointsOf(IO::SamplesFromJson(m, js["embedded"]));
                 f.snakes.push_back(std::move(s));
             }
             const int n = int(f.snakes.size());
