@@ -137,7 +137,7 @@ in_root env GS_SETUP_SOURCE_ONLY=1 bash /opt/gs/src/scripts/setup.sh /opt/gs/bui
 t2=$(date +%s)
 echo "$tag building the plugins of $commit against MeshLab $ver"
 in_root cmake -S /opt/gs/src -B /opt/gs/build -DCMAKE_BUILD_TYPE=Release -DMESHLAB_SOURCE_DIR=/opt/gs/build/meshlab-src \
-        -DGS_BUILD_TESTS=OFF -DGS_BUILD_BENCH=OFF -DGS_BUILD_CLI=OFF > "$top/configure.log" 2>&1 ||
+        -DGS_BUILD_TESTS=OFF -DGS_BUILD_BENCH=OFF -DGS_BUILD_CLI=OFF -DGS_UNITY_BUILD=ON > "$top/configure.log" 2>&1 ||
   { cat "$top/configure.log" >&2; exit 1; }
 grep -E "plugin API|Building against" "$top/configure.log" | sed "s/^-- /$tag /"
 in_root nice -n 10 cmake --build /opt/gs/build -j2 > "$top/build.log" 2>&1 ||

@@ -23,7 +23,7 @@ if [ "$(id -u)" -eq 0 ] && [ $# -eq 0 ]; then
   done
 fi
 echo "[test] configure + build (build/)"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGS_UNITY_BUILD=ON
 cmake --build build -j2
 echo "[test] install plugins"
 $SUDO cmake --install build

@@ -15,7 +15,7 @@ src=${MESHLAB_SOURCE_DIR:-$here/build/meshlab-src}
 [ -d "$src/vcglib" ] || bash scripts/setup.sh "$here/build"
 echo "[sanitize] configure + build (build-asan/, clang, ASan + UBSan, libFuzzer)"
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DGS_SANITIZE=ON -DGS_BUILD_FUZZ=ON -DGS_BUILD_PLUGINS=OFF -DGS_BUILD_BENCH=OFF -DGS_BUILD_CLI=OFF \
+  -DGS_SANITIZE=ON -DGS_UNITY_BUILD=ON -DGS_BUILD_FUZZ=ON -DGS_BUILD_PLUGINS=OFF -DGS_BUILD_BENCH=OFF -DGS_BUILD_CLI=OFF \
   -DGS_FUZZ_SECONDS="${GS_FUZZ_SECONDS:-60}" -DMESHLAB_SOURCE_DIR="$src"
 cmake --build build-asan -j2
 echo "[sanitize] ctest -L 'unit|fuzz' (build-asan/)"

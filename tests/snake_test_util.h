@@ -43,6 +43,13 @@ void EnableSnakeAdjacency(M &m)
     vcg::tri::UpdateTopology<M>::VertexFace(m);
 }
 
+/// The rotated ico-cube (MakeRotatedIcoCube) with the engine's adjacency: the session tests' mesh.
+inline void MakeSnakeCube(CMeshO &m, int subdiv = 4)
+{
+    MakeRotatedIcoCube(m, subdiv);
+    EnableSnakeAdjacency(m);
+}
+
 /// Index of the mesh vertex nearest to p.
 /// The set-up most snake tests share: the engine's adjacency, unit face normals, the feature
 /// energy in the vertex quality (2 smoothing steps, as the filters' default) and a surface over it.

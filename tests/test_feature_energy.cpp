@@ -31,7 +31,7 @@ class PMesh : public vcg::tri::TriMesh<std::vector<PVertex>, std::vector<PFace>>
 const FeatureEnergyType kTypes[] = {FeatureEnergyType::NormalVariation, FeatureEnergyType::CurvatureNorm,
                                     FeatureEnergyType::QuadricError};
 
-const char *Name(FeatureEnergyType t)
+const char *EnergyName(FeatureEnergyType t)
 {
     return t == FeatureEnergyType::NormalVariation ? "NormalVariation"
            : t == FeatureEnergyType::CurvatureNorm ? "CurvatureNorm"
@@ -86,7 +86,7 @@ TEST(FeatureEnergy, FlatPlaneHasNoFeature)
             CMeshO m;
             gs_test::MakeFlatGrid(m, 20, 3.0);
             FE::Stats st = FE::Compute(m, t, steps);
-            for (const auto &v : m.vert) ASSERT_FLOAT_EQ(v.cQ(), 1.0f) << Name(t) << " steps " << steps;
+            for (const auto &v : m.vert) ASSERT_FLOAT_EQ(v.cQ(), 1.0f) << EnergyName(t) << " steps " << steps;
             EXPECT_EQ(st.degenerateFaces, 0);
             EXPECT_EQ(st.nonManifoldVertices, 0);
             EXPECT_GE(st.seconds, 0.0);
@@ -100,7 +100,7 @@ TEST(FeatureEnergy, AxisAlignedCubeFeatureIsExactlyOnEdges)
         vcg::tri::Box(m, vcg::Box3<float>(vcg::Point3f(-1, -1, -1), vcg::Point3f(1, 1, 1)));
         gs_test::Subdivide(m, 3000); // midpoint refinement keeps vertices exactly on the cube edges
         FE::Compute(m, t, 0);
-        ExpectValid(m, Name(t));
+        ExpectValid(m, EnergyName(t));
         double maxEdge = -1, minEdge = 2, minInterior = 2;
         int nEdge = 0;
         for (const auto &v : m.vert) {
@@ -114,9 +114,9 @@ TEST(FeatureEnergy, AxisAlignedCubeFeatureIsExactlyOnEdges)
             }
         }
         EXPECT_GT(nEdge, 50);
-        EXPECT_LT(maxEdge, minInterior) << Name(t); // every edge vertex below every face vertex
-        EXPECT_FLOAT_EQ(minEdge, 0.0f) << Name(t);  // the global minimum is on the edges
-        EXPECT_FLOAT_EQ(minInterior, 1.0f) << Name(t); // flat faces carry no feature
+        EXPECT_LT(maxEdge, minInterior) << EnergyName(t); // every edge vertex below every face vertex
+        EXPECT_FLOAT_EQ(minEdge, 0.0f) << EnergyName(t);  // the global minimum is on the edges
+        EXPECT_FLOAT_EQ(minInterior, 1.0f) << EnergyName(t); // flat faces carry no feature
     }
 }
 
@@ -126,18 +126,18 @@ TEST(FeatureEnergy, RotatedIcoCubeBandAlongEdges)
         CMeshO m;
         gs_test::MakeRotatedIcoCube(m, 4);
         FE::Compute(m, t, 0);
-        ExpectValid(m, Name(t));
+        ExpectValid(m, EnergyName(t));
         Bands b = BandStats(m, [](const vcg::Point3d &p) { return gs_test::DistToCubeEdges(p); });
         EXPECT_GT(b.nNear, 50);
         EXPECT_GT(b.nFar, 500);
-        EXPECT_LT(b.nearMean, 0.6) << Name(t);
-        EXPECT_GT(b.farMean, 0.95) << Name(t);
+        EXPECT_LT(b.nearMean, 0.6) << EnergyName(t);
+        EXPECT_GT(b.farMean, 0.95) << EnergyName(t);
         // And the single lowest vertex is close to an edge.
         const double L = vcg::tri::MeshValidation<CMeshO>::MeanEdgeLength(m);
         int best = 0;
         for (size_t i = 0; i < m.vert.size(); ++i)
             if (m.vert[i].cQ() < m.vert[best].cQ()) best = int(i);
-        EXPECT_LT(gs_test::DistToCubeEdges(P(m.vert[best])), 1.5 * L) << Name(t);
+        EXPECT_LT(gs_test::DistToCubeEdges(P(m.vert[best])), 1.5 * L) << EnergyName(t);
     }
 }
 
@@ -149,13 +149,13 @@ TEST(FeatureEnergy, OctahedronAndCylinderBands)
         gs_test::MakeRotatedIcoCylinder(c, 4);
         FE::Compute(o, t, 0);
         FE::Compute(c, t, 0);
-        ExpectValid(o, Name(t));
-        ExpectValid(c, Name(t));
+        ExpectValid(o, EnergyName(t));
+        ExpectValid(c, EnergyName(t));
         Bands bo = BandStats(o, [](const vcg::Point3d &p) { return gs_test::DistToOctahedronEdges(p); });
-        EXPECT_LT(bo.nearMean + 0.3, bo.farMean) << Name(t);
+        EXPECT_LT(bo.nearMean + 0.3, bo.farMean) << EnergyName(t);
         // The cylinder's side is curved, so its "far" band is not perfectly flat.
         Bands bc = BandStats(c, [](const vcg::Point3d &p) { return gs_test::DistToCylinderRims(p); });
-        EXPECT_LT(bc.nearMean + 0.3, bc.farMean) << Name(t);
+        EXPECT_LT(bc.nearMean + 0.3, bc.farMean) << EnergyName(t);
     }
 }
 
@@ -170,14 +170,14 @@ TEST(FeatureEnergy, ScaleInvariant)
         double maxDiff = 0;
         for (size_t i = 0; i < a.vert.size(); ++i)
             maxDiff = std::max(maxDiff, std::fabs(double(a.vert[i].cQ()) - double(b.vert[i].cQ())));
-        EXPECT_LT(maxDiff, 1e-3) << Name(t);
+        EXPECT_LT(maxDiff, 1e-3) << EnergyName(t);
         // Smoothed too.
         FE::Compute(a, t, 4);
         FE::Compute(b, t, 4);
         maxDiff = 0;
         for (size_t i = 0; i < a.vert.size(); ++i)
             maxDiff = std::max(maxDiff, std::fabs(double(a.vert[i].cQ()) - double(b.vert[i].cQ())));
-        EXPECT_LT(maxDiff, 1e-3) << Name(t);
+        EXPECT_LT(maxDiff, 1e-3) << EnergyName(t);
     }
 }
 
@@ -207,36 +207,36 @@ TEST(FeatureEnergy, SmoothingSuppressesNoiseKeepsEdges)
         FE::Compute(clean, t, 0);
         // Far from the edges, beyond the reach of 10 smoothing rounds, the faces are flat.
         const double farL = 8.0;
-        EXPECT_EQ(FarLocalMinima(clean, farL), 0) << Name(t); // sanity: without noise, no spurious minima
+        EXPECT_EQ(FarLocalMinima(clean, farL), 0) << EnergyName(t); // sanity: without noise, no spurious minima
 
         CMeshO m;
         gs_test::MakeRotatedIcoCube(m, 5);
         gs_test::AddVertexNoise(m, 0.05, 1234);
         FE::Compute(m, t, 0);
-        ExpectValid(m, Name(t));
+        ExpectValid(m, EnergyName(t));
         auto edgeDist = [](const vcg::Point3d &p) { return gs_test::DistToCubeEdges(p); };
         const Bands raw = BandStats(m, edgeDist, 1.0, farL);
         const int rawMinima = FarLocalMinima(m, farL);
-        EXPECT_GT(rawMinima, 20) << Name(t); // noise creates spurious minima away from the edges
-        EXPECT_GT(raw.farVar, 0.0) << Name(t);
+        EXPECT_GT(rawMinima, 20) << EnergyName(t); // noise creates spurious minima away from the edges
+        EXPECT_GT(raw.farVar, 0.0) << EnergyName(t);
 
         // (a) Sec. 6.3 averaging itself lowers the variance in the flat region, edges stay lower.
         FE::Smooth(m, 10);
         const Bands avg = BandStats(m, edgeDist, 1.0, farL);
-        EXPECT_LT(avg.farVar, 0.5 * raw.farVar) << Name(t);
-        EXPECT_LT(avg.nearMean, avg.farMean - 0.1) << Name(t);
+        EXPECT_LT(avg.farVar, 0.5 * raw.farVar) << EnergyName(t);
+        EXPECT_LT(avg.nearMean, avg.farMean - 0.1) << EnergyName(t);
 
         // (b) The full pipeline (smoothing + renormalization): far fewer spurious minima, edge
         // band still clearly lowest. (Variances are not compared here: the unsmoothed field is
         // clipped at 1 by the percentile normalization, which hides most of its noise.)
         FE::Compute(m, t, 10);
-        ExpectValid(m, Name(t));
+        ExpectValid(m, EnergyName(t));
         const Bands sm = BandStats(m, edgeDist, 1.0, farL);
-        EXPECT_LT(FarLocalMinima(m, farL), rawMinima / 4) << Name(t);
-        EXPECT_LT(sm.nearMean + 0.3, sm.farMean) << Name(t);
-        std::printf("%s: far var raw %.3g averaged %.3g; far minima raw %d smoothed %d; near/far %.3f/%.3f\n", Name(t),
+        EXPECT_LT(FarLocalMinima(m, farL), rawMinima / 4) << EnergyName(t);
+        EXPECT_LT(sm.nearMean + 0.3, sm.farMean) << EnergyName(t);
+        std::printf("%s: far var raw %.3g averaged %.3g; far minima raw %d smoothed %d; near/far %.3f/%.3f\n", EnergyName(t),
                     raw.farVar, avg.farVar, rawMinima, FarLocalMinima(m, farL), sm.nearMean, sm.farMean);
-        EXPECT_LT(sm.nearMean + 0.3, sm.farMean) << Name(t); // edge band still clearly lower
+        EXPECT_LT(sm.nearMean + 0.3, sm.farMean) << EnergyName(t); // edge band still clearly lower
     }
 }
 
@@ -449,8 +449,8 @@ TEST(FeatureEnergy, NonManifoldDegenerateBorderMultiComponentDoNotBreak)
                 CMeshO m;
                 mk.second(m);
                 FE::Stats st;
-                ASSERT_NO_THROW(st = FE::Compute(m, t, steps)) << mk.first << " " << Name(t);
-                ExpectValid(m, mk.first + " " + Name(t));
+                ASSERT_NO_THROW(st = FE::Compute(m, t, steps)) << mk.first << " " << EnergyName(t);
+                ExpectValid(m, mk.first + " " + EnergyName(t));
                 EXPECT_TRUE(std::isfinite(st.rawMin) && std::isfinite(st.rawMax));
                 for (const auto &v : m.vert)
                     if (!v.IsD())
@@ -474,7 +474,7 @@ TEST(FeatureEnergy, PlainMeshTypeWorks)
             if (gs_test::DistToCubeEdges(v.cP()) < 1e-9) maxEdge = std::max(maxEdge, v.cQ());
             else minInterior = std::min(minInterior, v.cQ());
         }
-        EXPECT_LT(maxEdge, minInterior) << Name(t);
+        EXPECT_LT(maxEdge, minInterior) << EnergyName(t);
         auto g = vcg::tri::FeatureEnergy<PMesh>::FaceGradients(m);
         EXPECT_EQ(g.size(), m.face.size());
     }
@@ -559,7 +559,7 @@ TEST(FeatureEnergy, ConstantEnergyIsReported)
     gs_test::MakeGridPlate(m, 20, 20, 0.05, 0.05);
     for (FeatureEnergyType t : kTypes) {
         const FE::Stats st = FE::Compute(m, t, 2);
-        EXPECT_TRUE(st.constant) << Name(t);
+        EXPECT_TRUE(st.constant) << EnergyName(t);
         for (const auto &v : m.vert) ASSERT_FLOAT_EQ(v.cQ(), 1.0f);
     }
     EXPECT_NE(FE::ConstantWarning(FeatureEnergyType::NormalVariation).find("constant"), std::string::npos);

@@ -18,15 +18,15 @@
 
 namespace {
 
-class PVertex;
-class PFace;
-struct PUsed : public vcg::UsedTypes<vcg::Use<PVertex>::AsVertexType, vcg::Use<PFace>::AsFaceType> {};
-class PVertex : public vcg::Vertex<PUsed, vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::vertex::Qualityd,
+class GVertex;
+class GFace;
+struct GUsed : public vcg::UsedTypes<vcg::Use<GVertex>::AsVertexType, vcg::Use<GFace>::AsFaceType> {};
+class GVertex : public vcg::Vertex<GUsed, vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::vertex::Qualityd,
                                    vcg::vertex::BitFlags> {};
-class PFace : public vcg::Face<PUsed, vcg::face::VertexRef, vcg::face::BitFlags> {};
-class PMesh : public vcg::tri::TriMesh<std::vector<PVertex>, std::vector<PFace>> {};
+class GFace : public vcg::Face<GUsed, vcg::face::VertexRef, vcg::face::BitFlags> {};
+class GMesh : public vcg::tri::TriMesh<std::vector<GVertex>, std::vector<GFace>> {};
 
-vcg::Point3d P(const CVertexO &v) { return vcg::Point3d::Construct(v.cP()); }
+vcg::Point3d Pos(const CVertexO &v) { return vcg::Point3d::Construct(v.cP()); }
 
 TEST(GeneratedMeshes, IcosphereIsUnitSphere)
 {
@@ -34,7 +34,7 @@ TEST(GeneratedMeshes, IcosphereIsUnitSphere)
     gs_test::MakeIcosphere(m, 3);
     EXPECT_EQ(m.fn, 1280);
     EXPECT_EQ(m.vn, 642);
-    for (const auto &v : m.vert) EXPECT_NEAR(P(v).Norm(), 1.0, 1e-6);
+    for (const auto &v : m.vert) EXPECT_NEAR(Pos(v).Norm(), 1.0, 1e-6);
     auto r = vcg::tri::MeshValidation<CMeshO>::Inspect(m);
     EXPECT_EQ(r.borderEdges, 0);
     EXPECT_EQ(r.nonManifoldEdges, 0);
@@ -48,7 +48,7 @@ TEST(GeneratedMeshes, RotatedIcoCubeLiesOnCubeAndStraddlesEdges)
     gs_test::MakeRotatedIcoCube(m, 3, half);
     EXPECT_EQ(m.fn, 1280);
     for (const auto &v : m.vert) {
-        const vcg::Point3d p = P(v);
+        const vcg::Point3d p = Pos(v);
         EXPECT_NEAR(std::max(std::fabs(p[0]), std::max(std::fabs(p[1]), std::fabs(p[2]))), half, 1e-5);
     }
     // Faces whose vertices lie on different cube faces straddle a cube edge.
@@ -67,7 +67,7 @@ TEST(GeneratedMeshes, RotatedIcoCubeLiesOnCubeAndStraddlesEdges)
     EXPECT_GT(straddling, 50);
     // No vertex is exactly on an edge (the rotation is generic).
     double minD = 1e9;
-    for (const auto &v : m.vert) minD = std::min(minD, gs_test::DistToCubeEdges(P(v), half));
+    for (const auto &v : m.vert) minD = std::min(minD, gs_test::DistToCubeEdges(Pos(v), half));
     EXPECT_GT(minD, 1e-6);
 }
 
@@ -76,14 +76,14 @@ TEST(GeneratedMeshes, OctahedronAndCylinderProjections)
     CMeshO o;
     gs_test::MakeRotatedIcoOctahedron(o, 3, 1.5);
     for (const auto &v : o.vert) {
-        const vcg::Point3d p = P(v);
+        const vcg::Point3d p = Pos(v);
         EXPECT_NEAR(std::fabs(p[0]) + std::fabs(p[1]) + std::fabs(p[2]), 1.5, 1e-5);
     }
     CMeshO c;
     gs_test::MakeRotatedIcoCylinder(c, 3, 0.5, 2.0);
     int onSide = 0, onCap = 0;
     for (const auto &v : c.vert) {
-        const vcg::Point3d p = P(v);
+        const vcg::Point3d p = Pos(v);
         const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
         const bool side = std::fabs(rho - 0.5) < 1e-5 && std::fabs(p[2]) <= 2.0 + 1e-5;
         const bool cap = std::fabs(std::fabs(p[2]) - 2.0) < 1e-5 && rho <= 0.5 + 1e-5;
@@ -119,7 +119,7 @@ TEST(GeneratedMeshes, NoiseIsDeterministicAndSized)
     gs_test::AddVertexNoise(b, 0.1, 7);
     for (size_t i = 0; i < a.vert.size(); ++i) {
         EXPECT_EQ(a.vert[i].cP(), b.vert[i].cP());
-        EXPECT_NEAR(vcg::Distance(P(a.vert[i]), P(ref.vert[i])), 0.1 * L, 1e-5);
+        EXPECT_NEAR(vcg::Distance(Pos(a.vert[i]), Pos(ref.vert[i])), 0.1 * L, 1e-5);
     }
     CMeshO c;
     gs_test::MakeIcosphere(c, 3);
@@ -149,12 +149,12 @@ TEST(GeneratedMeshes, SubdivideWithAndWithoutFF)
     gs_test::Subdivide(m, 1000);
     EXPECT_EQ(m.fn, 1280);
     EXPECT_EQ(m.vn, 642);
-    PMesh p; // no FF adjacency at all: fallback path
+    GMesh p; // no FF adjacency at all: fallback path
     gs_test::MakeIcosphere(p, 2);
     gs_test::Subdivide(p, 1000);
     EXPECT_EQ(p.fn, 1280);
     EXPECT_EQ(p.vn, 642);
-    auto r = vcg::tri::MeshValidation<PMesh>::Inspect(p);
+    auto r = vcg::tri::MeshValidation<GMesh>::Inspect(p);
     EXPECT_EQ(r.borderEdges, 0);
     EXPECT_EQ(r.components, 1);
 }
@@ -199,7 +199,7 @@ TEST(GeneratedMeshes, DataFiles)
     ASSERT_TRUE(gs_test::LoadMesh(cube, dir + "/icocube.ply"));
     EXPECT_EQ(cube.fn, 5120);
     for (const auto &v : cube.vert) {
-        const vcg::Point3d p = P(v);
+        const vcg::Point3d p = Pos(v);
         EXPECT_NEAR(std::max(std::fabs(p[0]), std::max(std::fabs(p[1]), std::fabs(p[2]))), 1.0, 1e-5);
     }
 }

@@ -18,12 +18,6 @@ using Fingerprint = SnakeMeshFingerprint;
 
 namespace {
 
-void MakeCube(CMeshO &m, int subdiv = 4)
-{
-    gs_test::MakeRotatedIcoCube(m, subdiv);
-    gs_test::EnableSnakeAdjacency(m);
-}
-
 // Seeds on the face x = 1, two edge lengths from the edge x = y = 1 (a crease to slither onto).
 std::vector<int> EdgeSeeds(const CMeshO &m)
 {
@@ -38,7 +32,7 @@ std::vector<int> EdgeSeeds(const CMeshO &m)
 TEST(SnakeMeshFingerprint, SeesEveryChangeTheSnakesDependOnAndNothingElse)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     const Fingerprint f = Fingerprint::Of(m);
     EXPECT_EQ(f, Fingerprint::Of(m));
     EXPECT_EQ(f.Change(Fingerprint::Of(m)), "");
@@ -49,22 +43,22 @@ TEST(SnakeMeshFingerprint, SeesEveryChangeTheSnakesDependOnAndNothingElse)
     EXPECT_EQ(f, Fingerprint::Of(m));
 
     CMeshO moved;
-    MakeCube(moved, 3);
+    gs_test::MakeSnakeCube(moved, 3);
     moved.vert[5].P()[0] += 1e-6f;
     EXPECT_EQ(f.Change(Fingerprint::Of(moved)), "vertices were moved");
 
     CMeshO flipped; // Invert Faces Orientation: the same counts, other vertex order
-    MakeCube(flipped, 3);
+    gs_test::MakeSnakeCube(flipped, 3);
     std::swap(flipped.face[3].V(1), flipped.face[3].V(2));
     EXPECT_EQ(f.Change(Fingerprint::Of(flipped)), "faces were changed or deleted (the same counts, other vertices)");
 
     CMeshO deleted; // a face deleted in place (not compacted): the slots stay, the live count drops
-    MakeCube(deleted, 3);
+    gs_test::MakeSnakeCube(deleted, 3);
     Allocator<CMeshO>::DeleteFace(deleted, deleted.face[0]);
     EXPECT_NE(f.Change(Fingerprint::Of(deleted)).find("added or removed"), std::string::npos);
 
     CMeshO grown;
-    MakeCube(grown, 3);
+    gs_test::MakeSnakeCube(grown, 3);
     Allocator<CMeshO>::AddVertex(grown, vcg::Point3f(0, 0, 0));
     const std::string why = f.Change(Fingerprint::Of(grown));
     EXPECT_NE(why.find(std::to_string(m.vn) + " vertices and " + std::to_string(m.fn) + " faces then, " +
@@ -90,7 +84,7 @@ TEST(SnakeMeshFingerprint, TakesMillisecondsOnALargeMesh)
 TEST(SnakeKeptHistory, UndoGoesOnInTheNextSessionOnTheSameMesh)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c1(m);
     c1.SetSeeds(EdgeSeeds(m));
     c1.CloseSeeds(false);
@@ -140,7 +134,7 @@ TEST(SnakeKeptHistory, UndoGoesOnInTheNextSessionOnTheSameMesh)
 TEST(SnakeKeptHistory, DroppedWhenTheMeshOrTheSessionChangedMeanwhile)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     SnakeUndo<int> h;
     h.Push(1, 4, "build");
     h.Push(2, 4, "run");

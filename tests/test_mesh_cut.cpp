@@ -24,31 +24,31 @@ using namespace vcg::tri;
 
 namespace {
 
-class DVertex;
-class DFace;
-struct DUsed : public vcg::UsedTypes<vcg::Use<DVertex>::AsVertexType, vcg::Use<DFace>::AsFaceType> {};
-class DVertex : public vcg::Vertex<DUsed, vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::vertex::Color4b,
+class CutVertex;
+class CutFace;
+struct CutUsed : public vcg::UsedTypes<vcg::Use<CutVertex>::AsVertexType, vcg::Use<CutFace>::AsFaceType> {};
+class CutVertex : public vcg::Vertex<CutUsed, vcg::vertex::Coord3d, vcg::vertex::Normal3d, vcg::vertex::Color4b,
                                    vcg::vertex::Qualityd, vcg::vertex::BitFlags> {};
-class DFace : public vcg::Face<DUsed, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::WedgeTexCoord2d,
+class CutFace : public vcg::Face<CutUsed, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::WedgeTexCoord2d,
                                vcg::face::Qualityd, vcg::face::FFAdj, vcg::face::BitFlags> {};
-class DMesh : public vcg::tri::TriMesh<std::vector<DVertex>, std::vector<DFace>> {};
+class CutMesh : public vcg::tri::TriMesh<std::vector<CutVertex>, std::vector<CutFace>> {};
 
-typedef MeshCut<DMesh> Cut;
+typedef MeshCut<CutMesh> Cut;
 
-void Build(DMesh &m, const std::vector<vcg::Point3d> &pts, const std::vector<std::array<int, 3>> &tris)
+void Build(CutMesh &m, const std::vector<vcg::Point3d> &pts, const std::vector<std::array<int, 3>> &tris)
 {
     m.Clear();
-    Allocator<DMesh>::AddVertices(m, pts.size());
+    Allocator<CutMesh>::AddVertices(m, pts.size());
     for (size_t i = 0; i < pts.size(); ++i) m.vert[i].P() = pts[i];
-    Allocator<DMesh>::AddFaces(m, tris.size());
+    Allocator<CutMesh>::AddFaces(m, tris.size());
     for (size_t i = 0; i < tris.size(); ++i)
         for (int k = 0; k < 3; ++k) m.face[i].V(k) = &m.vert[tris[i][k]];
-    UpdateBounding<DMesh>::Box(m);
-    UpdateNormal<DMesh>::PerVertexNormalizedPerFace(m);
+    UpdateBounding<CutMesh>::Box(m);
+    UpdateNormal<CutMesh>::PerVertexNormalizedPerFace(m);
 }
 
 /// An irregular plate [0, n*cell]^2 (jittered vertices, random diagonals; edge lengths vary).
-void Plate(DMesh &m, int n, double cell, double jitter, unsigned seed)
+void Plate(CutMesh &m, int n, double cell, double jitter, unsigned seed)
 {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> U(-1, 1);
@@ -74,13 +74,13 @@ void Plate(DMesh &m, int n, double cell, double jitter, unsigned seed)
 }
 
 /// A point of the plane z = 0 as a surface point of the plate (brute force).
-SurfacePoint Locate(const DMesh &m, const vcg::Point3d &x)
+SurfacePoint Locate(const CutMesh &m, const vcg::Point3d &x)
 {
     int best = -1;
     vcg::Point3d bb;
     double bm = -1e300;
     for (size_t f = 0; f < m.face.size(); ++f) {
-        vcg::Point3d l = CutCommit<DMesh>::Bary(m.face[f].cP(0), m.face[f].cP(1), m.face[f].cP(2), x);
+        vcg::Point3d l = CutCommit<CutMesh>::Bary(m.face[f].cP(0), m.face[f].cP(1), m.face[f].cP(2), x);
         const double mn = std::min(l[0], std::min(l[1], l[2]));
         if (mn > bm) { bm = mn; best = int(f); bb = l; }
     }
@@ -91,7 +91,7 @@ SurfacePoint Locate(const DMesh &m, const vcg::Point3d &x)
 
 /// A polygon in the plane of a flat mesh as a curve on it: its corners and every crossing of a
 /// mesh edge, in order (consecutive points share a face).
-CutCurve PolygonCurve(const DMesh &m, const std::vector<vcg::Point2d> &poly, bool closed = true)
+CutCurve PolygonCurve(const CutMesh &m, const std::vector<vcg::Point2d> &poly, bool closed = true)
 {
     CutCurve c;
     c.closed = closed;
@@ -134,7 +134,7 @@ double PolygonArea(const std::vector<vcg::Point2d> &p)
     return std::abs(a) / 2;
 }
 
-double Area(const DMesh &m, bool selectedOnly = false)
+double Area(const CutMesh &m, bool selectedOnly = false)
 {
     double a = 0;
     for (const auto &f : m.face)
@@ -143,7 +143,7 @@ double Area(const DMesh &m, bool selectedOnly = false)
 }
 
 /// Everything a cut could change, to compare byte for byte.
-std::string Snapshot(const DMesh &m)
+std::string Snapshot(const CutMesh &m)
 {
     std::string s;
     auto put = [&s](const void *p, size_t n) { s.append(static_cast<const char *>(p), n); };
@@ -172,7 +172,7 @@ std::string Snapshot(const DMesh &m)
 
 /// Edges with more than two faces (vcglib's CountNonManifoldEdgeFF takes a new bit flag per call
 /// and runs out of them in a long test).
-int NonManifoldEdges(const DMesh &m)
+int NonManifoldEdges(const CutMesh &m)
 {
     std::map<std::pair<size_t, size_t>, int> n;
     for (const auto &f : m.face)
@@ -187,7 +187,7 @@ int NonManifoldEdges(const DMesh &m)
 
 /// Validity of a cut mesh: manifold edges, no face below 1e-12 of the mean area, none turned
 /// over (normal against +z on a plate), the area preserved to 1e-9 relative.
-void ExpectValid(DMesh &m, double areaBefore, bool flat = true)
+void ExpectValid(CutMesh &m, double areaBefore, bool flat = true)
 {
     EXPECT_EQ(NonManifoldEdges(m), 0);
     const double mean = Area(m) / m.fn;
@@ -213,7 +213,7 @@ bool InPolygon(const std::vector<vcg::Point2d> &p, const vcg::Point2d &x)
 
 void ExpectSelectsPolygon(const std::vector<vcg::Point2d> &poly, int n = 12, double jitter = 0.3, unsigned seed = 3)
 {
-    DMesh m;
+    CutMesh m;
     Plate(m, n, 1.0, jitter, seed);
     const double before = Area(m);
     const CutCurve c = PolygonCurve(m, poly);
@@ -245,7 +245,7 @@ TEST(MeshCutTest, LoopThroughVerticesAndAlongEdges)
 TEST(MeshCutTest, SeveralCrossingsOfOneEdge)
 {
     // two triangles; a zigzag loop crosses their shared diagonal six times
-    DMesh m;
+    CutMesh m;
     Build(m, {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}}, {{0, 1, 2}, {0, 2, 3}});
     std::vector<vcg::Point2d> poly = {{2, 1}, {3.5, 5}, {2.5, 1.2}, {4.2, 6.3}, {4.5, 1}, {8.7, 9.4}, {1, 8.8}};
     const double before = Area(m);
@@ -290,7 +290,7 @@ TEST(MeshCutTest, TubeRingSplitsIntoTwoPartsWithTheRingAsBoundary)
             t.push_back({a, b, c});
             t.push_back({a, c, d});
         }
-    DMesh m;
+    CutMesh m;
     Build(m, p, t);
     const vcg::Point3d nrm(-0.1, 0, 1);
     const double off = 0.2;
@@ -335,7 +335,7 @@ TEST(MeshCutTest, TubeRingSplitsIntoTwoPartsWithTheRingAsBoundary)
         }
         for (size_t i = 1; i + 1 < poly.size(); ++i) below += ((poly[i] - poly[0]) ^ (poly[i + 1] - poly[0])).Norm() / 2;
     }
-    DMesh in, out;
+    CutMesh in, out;
     Cut::Param prm;
     const std::string before = Snapshot(m);
     const Cut::Result r = Cut::Split(m, {c}, prm, in, out);
@@ -349,8 +349,8 @@ TEST(MeshCutTest, TubeRingSplitsIntoTwoPartsWithTheRingAsBoundary)
     EXPECT_GT(r.addedVertices, nt);
     // each part: one boundary loop at the cut, the ring's polyline within 1e-6 of the diagonal
     const double diag = m.bbox.Diag();
-    for (DMesh *part : {&in, &out}) {
-        UpdateTopology<DMesh>::FaceFace(*part);
+    for (CutMesh *part : {&in, &out}) {
+        UpdateTopology<CutMesh>::FaceFace(*part);
         EXPECT_EQ(NonManifoldEdges(*part), 0);
         std::vector<vcg::Point3d> bnd;
         for (auto &f : part->face)
@@ -404,7 +404,7 @@ TEST(MeshCutTest, TorusMeridianIsRefusedAndTheMeshUnchanged)
             t.push_back({a, b, c});
             t.push_back({a, c, d});
         }
-    DMesh m;
+    CutMesh m;
     Build(m, p, t);
     // the meridian u = 0: the vertices i = 0, as corners of their faces
     CutCurve c;
@@ -425,14 +425,14 @@ TEST(MeshCutTest, TorusMeridianIsRefusedAndTheMeshUnchanged)
         }
         EXPECT_EQ(Snapshot(m), before);
     }
-    DMesh in, out;
+    CutMesh in, out;
     EXPECT_THROW(Cut::Split(m, {c}, Cut::Param(), in, out), SnakeError);
     EXPECT_EQ(Snapshot(m), before);
     // cut open, the meridian makes the torus a tube: allowed
     Cut::Param open;
     open.mode = CutMode::CutOpen;
     Cut::Apply(m, {c}, open);
-    UpdateTopology<DMesh>::FaceFace(m);
+    UpdateTopology<CutMesh>::FaceFace(m);
     int border = 0;
     for (auto &f : m.face)
         for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
@@ -441,7 +441,7 @@ TEST(MeshCutTest, TorusMeridianIsRefusedAndTheMeshUnchanged)
 
 TEST(MeshCutTest, FigureEightAndForeignCurvesAreRefusedAndTheMeshUnchanged)
 {
-    DMesh m;
+    CutMesh m;
     Plate(m, 10, 1.0, 0.3, 7);
     const std::string before = Snapshot(m);
     auto refused = [&](const CutCurve &c, const std::string &why) {
@@ -475,7 +475,7 @@ TEST(MeshCutTest, FigureEightAndForeignCurvesAreRefusedAndTheMeshUnchanged)
 
 TEST(MeshCutTest, OpenCurvesBoundaryToBoundarySelectAndEndingInsideOnlySlit)
 {
-    DMesh m;
+    CutMesh m;
     Plate(m, 10, 1.0, 0.3, 9);
     const double before = Area(m);
     const CutCurve across = PolygonCurve(m, {{0, 3.3}, {4.5, 5.2}, {10, 4.1}}, false);
@@ -486,7 +486,7 @@ TEST(MeshCutTest, OpenCurvesBoundaryToBoundarySelectAndEndingInsideOnlySlit)
     const double below = PolygonArea({{0, 0}, {10, 0}, {10, 4.1}, {4.5, 5.2}, {0, 3.3}});
     EXPECT_NEAR(Area(m, true), 100 - below, 1e-9 * before);
 
-    DMesh s;
+    CutMesh s;
     Plate(s, 10, 1.0, 0.3, 9);
     const std::string snap = Snapshot(s);
     const CutCurve slit = PolygonCurve(s, {{2.5, 3.3}, {4.5, 5.2}, {7.2, 4.1}}, false);
@@ -500,7 +500,7 @@ TEST(MeshCutTest, OpenCurvesBoundaryToBoundarySelectAndEndingInsideOnlySlit)
     prm.mode = CutMode::CutOpen;
     const Cut::Result r = Cut::Apply(s, {slit}, prm);
     ExpectValid(s, before);
-    UpdateTopology<DMesh>::FaceFace(s);
+    UpdateTopology<CutMesh>::FaceFace(s);
     int border = 0;
     for (auto &f : s.face)
         for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
@@ -510,7 +510,7 @@ TEST(MeshCutTest, OpenCurvesBoundaryToBoundarySelectAndEndingInsideOnlySlit)
 
 TEST(MeshCutTest, SelectOnlyKeepsTheMeshAndSelectsByCentroid)
 {
-    DMesh m;
+    CutMesh m;
     Plate(m, 12, 1.0, 0.3, 11);
     const std::vector<vcg::Point2d> poly = {{2.3, 2.7}, {8.6, 3.1}, {9.2, 8.4}, {3.1, 9.0}};
     const CutCurve c = PolygonCurve(m, poly);
@@ -528,7 +528,7 @@ TEST(MeshCutTest, SelectOnlyKeepsTheMeshAndSelectsByCentroid)
 
 TEST(MeshCutTest, TextureAndColourSurviveASplit)
 {
-    DMesh m;
+    CutMesh m;
     Plate(m, 8, 1.0, 0.3, 13);
     // per-wedge uv = a linear map of xy with a seam (faces with x < 4 in a second chart);
     // colour and quality linear in x and y
@@ -547,15 +547,15 @@ TEST(MeshCutTest, TextureAndColourSurviveASplit)
             f.WT(k).V() = t[1];
         }
     }
-    DMesh orig;
-    Append<DMesh, DMesh>::MeshCopy(orig, m);
+    CutMesh orig;
+    Append<CutMesh, CutMesh>::MeshCopy(orig, m);
     const CutCurve c = PolygonCurve(m, {{1.3, 1.7}, {6.6, 2.1}, {5.2, 6.4}, {1.1, 5.0}});
-    DMesh in, out;
+    CutMesh in, out;
     Cut::Split(m, {c}, Cut::Param(), in, out);
     std::mt19937 rng(1);
     std::uniform_real_distribution<double> U(0.05, 0.9);
     int compared = 0;
-    for (DMesh *part : {&in, &out})
+    for (CutMesh *part : {&in, &out})
         for (const auto &f : part->face) {
             double a = U(rng), b = U(rng) * (1 - a);
             const vcg::Point3d l(a, b, 1 - a - b);
@@ -589,7 +589,7 @@ TEST(MeshCutTest, TextureAndColourSurviveASplit)
 namespace {
 
 /// The boundary of label `lab` of a segmentation as curves of vertices (one per loop).
-std::vector<CutCurve> PartBoundary(const DMesh &m, const std::vector<int> &label, int lab)
+std::vector<CutCurve> PartBoundary(const CutMesh &m, const std::vector<int> &label, int lab)
 {
     std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edges; // edge -> (face, corner)
     for (size_t f = 0; f < m.face.size(); ++f)
@@ -634,9 +634,9 @@ TEST(MeshCutTest, PersonsPartBoundarySelectsExactlyThatPart)
     struct Case { const char *id; int person; };
     int tested = 0;
     for (const Case cs : {Case{"181", 0}, Case{"3", 0}}) {
-        DMesh m;
+        CutMesh m;
         int mask = 0;
-        if (vcg::tri::io::ImporterOFF<DMesh>::Open(m, (dir + "off/" + cs.id + ".off").c_str(), mask) != 0) {
+        if (vcg::tri::io::ImporterOFF<CutMesh>::Open(m, (dir + "off/" + cs.id + ".off").c_str(), mask) != 0) {
             ADD_FAILURE() << "cannot read " << cs.id;
             continue;
         }
@@ -644,7 +644,7 @@ TEST(MeshCutTest, PersonsPartBoundarySelectsExactlyThatPart)
         std::vector<int> label;
         for (int l; seg >> l;) label.push_back(l);
         ASSERT_EQ(label.size(), m.face.size());
-        UpdateBounding<DMesh>::Box(m);
+        UpdateBounding<CutMesh>::Box(m);
         const double total = Area(m);
         // every label whose part is bounded by one loop
         std::set<int> labels(label.begin(), label.end());
@@ -654,8 +654,8 @@ TEST(MeshCutTest, PersonsPartBoundarySelectsExactlyThatPart)
             double partArea = 0;
             for (size_t f = 0; f < m.face.size(); ++f)
                 if (label[f] == lab) partArea += vcg::DoubleArea(m.face[f]) / 2;
-            DMesh c;
-            Append<DMesh, DMesh>::MeshCopy(c, m);
+            CutMesh c;
+            Append<CutMesh, CutMesh>::MeshCopy(c, m);
             Cut::Param prm;
             prm.side = partArea < total / 2 ? CutSide::Smaller : CutSide::Larger;
             const Cut::Result r = Cut::Apply(c, b, prm);
@@ -676,7 +676,7 @@ TEST(MeshCutTest, InsideIsTheEnclosedSideWhateverTheDirection)
     std::vector<vcg::Point2d> poly = {{0.7, 0.6}, {9.4, 0.8}, {9.2, 9.3}, {0.5, 9.1}};
     const double enclosed = PolygonArea(poly);
     for (int dir = 0; dir < 2; ++dir) {
-        DMesh m;
+        CutMesh m;
         Plate(m, 10, 1.0, 0.3, 21);
         if (dir) std::reverse(poly.begin(), poly.end());
         const CutCurve c = PolygonCurve(m, poly);
@@ -685,7 +685,7 @@ TEST(MeshCutTest, InsideIsTheEnclosedSideWhateverTheDirection)
         Cut::Apply(m, {c}, prm);
         EXPECT_NEAR(Area(m, true), enclosed, 1e-9 * 100) << "direction " << dir;
         prm.side = CutSide::Smaller;
-        DMesh s;
+        CutMesh s;
         Plate(s, 10, 1.0, 0.3, 21);
         Cut::Apply(s, {PolygonCurve(s, poly)}, prm);
         EXPECT_NEAR(Area(s, true), 100 - enclosed, 1e-9 * 100);
@@ -694,7 +694,7 @@ TEST(MeshCutTest, InsideIsTheEnclosedSideWhateverTheDirection)
 
 TEST(MeshCutTest, NonManifoldEdgeAlongTheCutIsRefused)
 {
-    DMesh m;
+    CutMesh m;
     Plate(m, 6, 1.0, 0.0, 1);
     // a fin on the interior edge between vertices (2,3) and (3,3): three faces on that edge
     std::vector<vcg::Point3d> p;
@@ -720,7 +720,7 @@ TEST(MeshCutTest, NonManifoldEdgeAlongTheCutIsRefused)
 TEST(MeshCutTest, MeshLabMeshSplitKeepsItsOptionalTextureCoordinates)
 {
     // CMeshO keeps wedge texture coordinates and face quality optional: the parts have them too
-    DMesh d;
+    CutMesh d;
     Plate(d, 6, 1.0, 0.2, 5);
     CMeshO m;
     Allocator<CMeshO>::AddVertices(m, d.vert.size());
@@ -752,7 +752,7 @@ TEST(MeshCutTest, NonManifoldVertexAlongTheCutIsRefused)
 {
     // a regular plate and a fin of one face touching it only at the inner vertex (3,3): two
     // sheets of faces meet there; the square loop (1,1)-(3,1)-(3,3)-(1,3) runs through it
-    DMesh m;
+    CutMesh m;
     Plate(m, 6, 1.0, 0.0, 1);
     const CutCurve loop = PolygonCurve(m, {{1, 1}, {3, 1}, {3, 3}, {1, 3}});
     std::vector<vcg::Point3d> p;
@@ -776,7 +776,7 @@ TEST(MeshCutTest, NonManifoldVertexAlongTheCutIsRefused)
         }
         EXPECT_EQ(Snapshot(m), before);
     }
-    DMesh in, out;
+    CutMesh in, out;
     EXPECT_THROW(Cut::Split(m, {loop}, Cut::Param(), in, out), SnakeError);
     EXPECT_EQ(Snapshot(m), before);
     EXPECT_EQ(in.fn + out.fn, 0);
@@ -791,7 +791,7 @@ TEST(MeshCutTest, NewVerticesInterpolateNormalsColourAndQuality)
     // per-vertex attributes linear in x and y: normal (x, y, 10) (not unit), colour (10x, 10y,
     // 7, 255), quality x - 2y. Linear interpolation in the face a new vertex lies in gives the
     // same functions at it exactly (up to round-off); the normal is then normalised.
-    DMesh m;
+    CutMesh m;
     Plate(m, 10, 1.0, 0.3, 4);
     for (auto &v : m.vert) {
         const double x = v.P()[0], y = v.P()[1];
@@ -822,7 +822,7 @@ TEST(MeshCutTest, SurfacePointsOfTheMeshBeforeTheCutMapOntoItAfter)
     // gives the same points in space on the faces after it, inside their faces; the curve's own
     // points land on the embedded curve's vertices
     for (CutMode mode : {CutMode::Select, CutMode::CutOpen}) {
-        DMesh m;
+        CutMesh m;
         Plate(m, 12, 1.0, 0.3, 21);
         const CutCurve c = PolygonCurve(m, {{2.3, 2.7}, {8.6, 3.1}, {9.2, 8.4}, {5.5, 6.1}, {3.1, 9.0}});
         std::mt19937 rng(5);
@@ -855,7 +855,7 @@ TEST(MeshCutTest, SurfacePointsOfTheMeshBeforeTheCutMapOntoItAfter)
         EXPECT_GT(moved, 100); // many points were in split faces and went to added sub-faces
     }
     // the select-only mode does not change the mesh: its map is the identity
-    DMesh m;
+    CutMesh m;
     Plate(m, 8, 1.0, 0.3, 2);
     Cut::Param only;
     only.mode = CutMode::SelectOnly;
@@ -869,7 +869,7 @@ TEST(MeshCutTest, ACurveCutAgainRunsAlongTheEdgesOfItsFirstCut)
 {
     // the edit tool: Select inside embeds the snake; the curve traced again on the cut mesh runs
     // along its edges: selecting again adds nothing, cutting open adds a copy of each curve vertex
-    DMesh m;
+    CutMesh m;
     Plate(m, 10, 1.0, 0.0, 1);
     const double before = Area(m);
     const std::vector<vcg::Point2d> square = {{2.5, 2.5}, {7.5, 2.5}, {7.5, 7.5}, {2.5, 7.5}};
@@ -885,7 +885,7 @@ TEST(MeshCutTest, ACurveCutAgainRunsAlongTheEdgesOfItsFirstCut)
     const Cut::Result o = Cut::Apply(m, {c}, open);
     EXPECT_EQ(o.addedVertices, o.curveVertices); // one copy of each curve vertex, nothing else
     ExpectValid(m, before);
-    UpdateTopology<DMesh>::FaceFace(m);
+    UpdateTopology<CutMesh>::FaceFace(m);
     int border = 0;
     for (auto &f : m.face)
         for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);

@@ -68,7 +68,7 @@ struct Frame
     }
 };
 
-struct Outcome
+struct ScanOutcome
 {
     SnakeStop stop = SnakeStop::Running;
     int operations = 0, samples = 0;
@@ -85,7 +85,7 @@ double MeanEnergy(const CMeshO &m, const std::vector<double> &e, const std::vect
     return s / loop.size();
 }
 
-Outcome RunCase(CMeshO &m, const std::vector<int> &seeds, FeatureEnergyType t, const std::vector<double> &partEnergy,
+ScanOutcome RunCase(CMeshO &m, const std::vector<int> &seeds, FeatureEnergyType t, const std::vector<double> &partEnergy,
                 const Frame &fr)
 {
     SnakeController<CMeshO> ctl(m);
@@ -93,7 +93,7 @@ Outcome RunCase(CMeshO &m, const std::vector<int> &seeds, FeatureEnergyType t, c
     ctl.SetSeeds(seeds);
     ctl.CloseSeeds(true);
     GeometricSnake<CMeshO> &s = ctl.Get(0);
-    Outcome o;
+    ScanOutcome o;
     o.samples = s.SampleCount();
     const std::vector<P3> start = s.PolylinePositions();
     o.length0 = gs_parts::LoopLength(start);
@@ -179,13 +179,13 @@ std::vector<ScanCase> Cases()
 
 /// Runs the case's closed snake as the tool does (its controller, the clicks closed into a loop,
 /// Run with the panel's default limits) and prints what it did.
-Outcome RunScan(const ScanCase &sc, FeatureEnergyType t)
+ScanOutcome RunScan(const ScanCase &sc, FeatureEnergyType t)
 {
     Loaded &l = Mesh(sc.mesh);
-    if (l.m.fn == 0) return Outcome();
+    if (l.m.fn == 0) return ScanOutcome();
     const std::vector<int> seeds = gs_test::NearestVertices(l.m, sc.clicks);
     const Frame fr(l.m, seeds);
-    const Outcome o = RunCase(l.m, seeds, t, l.partEnergy, fr);
+    const ScanOutcome o = RunCase(l.m, seeds, t, l.partEnergy, fr);
     std::printf("%s, %s: %d samples, %s after %d operations, %.2f s; length %.2f of the start's (%.1f h), winding "
                 "%.2f round the clicks' centre, radius min %.1f h mean %.1f h (start %.1f h), part-boundary energy "
                 "%.2f (start %.2f)\n",
@@ -196,7 +196,7 @@ Outcome RunScan(const ScanCase &sc, FeatureEnergyType t)
 }
 
 /// Every Run ends by itself within the tool's limits and says why; never a point called converged.
-void ExpectEndsWithAReason(const ScanCase &sc, const Outcome &o)
+void ExpectEndsWithAReason(const ScanCase &sc, const ScanOutcome &o)
 {
     EXPECT_NE(o.stop, SnakeStop::Running) << sc.name;
     EXPECT_LE(o.operations, 500) << sc.name;
@@ -223,7 +223,7 @@ TEST(PartScans, LionEyesEndOnTheRimOrStopWithAReason)
     for (int i : {0, 1}) {
         const ScanCase &sc = cases[i];
         ASSERT_GT(Mesh(sc.mesh).m.fn, 0) << sc.mesh;
-        const Outcome o = RunScan(sc, FeatureEnergyType::PartBoundary);
+        const ScanOutcome o = RunScan(sc, FeatureEnergyType::PartBoundary);
         ExpectEndsWithAReason(sc, o);
         if (i == 0 || o.stop == SnakeStop::Converged) {
             EXPECT_EQ(o.stop, SnakeStop::Converged) << sc.name;
@@ -244,7 +244,7 @@ TEST(PartScans, BunnyEarBaseKeepsItsLengthAndEnds)
 {
     const ScanCase sc = Cases()[2];
     ASSERT_GT(Mesh(sc.mesh).m.fn, 0) << sc.mesh;
-    const Outcome o = RunScan(sc, FeatureEnergyType::PartBoundary);
+    const ScanOutcome o = RunScan(sc, FeatureEnergyType::PartBoundary);
     ExpectEndsWithAReason(sc, o);
     EXPECT_GT(o.length, 0.6 * o.length0) << sc.name;
     EXPECT_LT(o.energy, 0.75 * o.energy0) << sc.name;
@@ -258,7 +258,7 @@ TEST(PartScans, NormalVariationStopsInsteadOfEndingAtAPoint)
 {
     for (const ScanCase &sc : Cases()) {
         ASSERT_GT(Mesh(sc.mesh).m.fn, 0) << sc.mesh;
-        const Outcome o = RunScan(sc, FeatureEnergyType::NormalVariation);
+        const ScanOutcome o = RunScan(sc, FeatureEnergyType::NormalVariation);
         ExpectEndsWithAReason(sc, o);
         EXPECT_NE(o.stop, SnakeStop::Converged) << sc.name << ": the loop settled round the part with normal variation?";
     }

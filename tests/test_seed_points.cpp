@@ -16,7 +16,7 @@ namespace {
 
 using vcg::tri::SeedPointsParser;
 using vcg::tri::SnakeError;
-typedef vcg::tri::SeedPointSnap<CMeshO> Snap;
+typedef vcg::tri::SeedPointSnap<CMeshO> PointSnap;
 
 // A .pp file exactly as MeshLab's Pick Points tool writes it (QDomDocument::save, indent 1;
 // Qt orders the attributes by hash, so they come in no fixed order).
@@ -116,7 +116,7 @@ TEST(SeedPointSnap, SnapsToClosestSurfacePoint)
     const vcg::Point3d c = box.Center();
     const double diag = box.Diag();
     std::vector<vcg::Point3d> q{c + vcg::Point3d(0.013, 0.021, 0.05 * diag), c + vcg::Point3d(-0.2, 0.1, -0.01 * diag)};
-    auto r = Snap::Snap(m, q, 2);
+    auto r = PointSnap::Snap(m, q, 2);
     ASSERT_EQ(r.points.size(), 2u);
     for (int i = 0; i < 2; ++i) {
         vcg::Point3d p = r.points[i].Pd(m);
@@ -138,18 +138,18 @@ TEST(SeedPointSnap, RefusesFarTooFewAndRepeated)
     const vcg::Point3d c = box.Center();
     const double diag = box.Diag();
     try {
-        Snap::Snap(m, {c, c + vcg::Point3d(0, 0, 0.15 * diag)}, 2);
+        PointSnap::Snap(m, {c, c + vcg::Point3d(0, 0, 0.15 * diag)}, 2);
         FAIL();
     } catch (const SnakeError &e) {
         EXPECT_NE(std::string(e.what()).find("Seed point 2"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("10%"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(Snap::Snap(m, {c, c + vcg::Point3d(0, 0, 1e6 * diag)}, 2), SnakeError);
-    EXPECT_THROW(Snap::Snap(m, {c}, 2), SnakeError);
-    EXPECT_THROW(Snap::Snap(m, {c, c + vcg::Point3d(0.1, 0, 0)}, 3, true), SnakeError);
-    EXPECT_THROW(Snap::Snap(m, {c, c + vcg::Point3d(0, 0, 0.01 * diag)}, 2), SnakeError); // same surface point
+    EXPECT_THROW(PointSnap::Snap(m, {c, c + vcg::Point3d(0, 0, 1e6 * diag)}, 2), SnakeError);
+    EXPECT_THROW(PointSnap::Snap(m, {c}, 2), SnakeError);
+    EXPECT_THROW(PointSnap::Snap(m, {c, c + vcg::Point3d(0.1, 0, 0)}, 3, true), SnakeError);
+    EXPECT_THROW(PointSnap::Snap(m, {c, c + vcg::Point3d(0, 0, 0.01 * diag)}, 2), SnakeError); // same surface point
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    EXPECT_THROW(Snap::Snap(m, {c, vcg::Point3d(nan, 0, 0)}, 2), SnakeError);
+    EXPECT_THROW(PointSnap::Snap(m, {c, vcg::Point3d(nan, 0, 0)}, 2), SnakeError);
 }
 
 } // namespace

@@ -14,12 +14,6 @@ using Controller = SnakeController<CMeshO>;
 
 namespace {
 
-void MakeCube(CMeshO &m, int subdiv = 4)
-{
-    gs_test::MakeRotatedIcoCube(m, subdiv);
-    gs_test::EnableSnakeAdjacency(m);
-}
-
 // A face of the mesh having vertex v, and the barycentric coordinates of v in it.
 bool FaceAtVertex(const CMeshO &m, int v, int &face, vcg::Point3d &bary)
 {
@@ -71,7 +65,7 @@ std::string TempPath(const std::string &name)
 TEST(SnakeController, PickGivesNearestVertexOfTheHitTriangle)
 {
     CMeshO m;
-    MakeCube(m);
+    gs_test::MakeSnakeCube(m);
     Controller c(m);
     const auto &f = m.face[10];
     int v1 = int(f.cV(1) - &m.vert[0]);
@@ -90,7 +84,7 @@ TEST(SnakeController, PickGivesNearestVertexOfTheHitTriangle)
 TEST(SnakeController, ClicksInsideFacesMakeACurveThroughThemUndoableAndSaved)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     const std::vector<std::pair<int, vcg::Point3d>> picks{{3, {0.2, 0.3, 0.5}}, {40, {0.6, 0.3, 0.1}}};
     for (const auto &p : picks) c.AddSeedFromPick(p.first, p.second);
@@ -148,7 +142,7 @@ TEST(SnakeController, ClicksInsideFacesMakeACurveThroughThemUndoableAndSaved)
 TEST(SnakeController, BadInputThrowsAndChangesNothing)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     Controller c(m);
     EXPECT_THROW(c.AddSeedFromPick(-1, vcg::Point3d(1, 0, 0)), SnakeError);
     EXPECT_THROW(c.AddSeedFromPick(int(m.face.size()), vcg::Point3d(1, 0, 0)), SnakeError);
@@ -182,7 +176,7 @@ TEST(SnakeController, BadInputThrowsAndChangesNothing)
 TEST(SnakeController, SeedsBuildSnakeAndStepsConvergeOnCubeEdge)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     std::vector<int> seeds = EdgeSeeds(m, 2.0);
     for (int v : seeds) {
@@ -220,7 +214,7 @@ TEST(SnakeController, SeedsBuildSnakeAndStepsConvergeOnCubeEdge)
 TEST(SnakeController, PinHoldsExactlyAndUndoRedoRestore)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     BuildEdgeSnake(c, m);
     Controller::Snake &s = c.Get(0);
@@ -279,7 +273,7 @@ TEST(SnakeController, PinHoldsExactlyAndUndoRedoRestore)
 TEST(SnakeController, UndoTakesBackWholeRunsAndDrags)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     BuildEdgeSnake(c, m);
     const int built = int(c.UndoSteps()); // the seeds, the Build
@@ -336,7 +330,7 @@ TEST(SnakeController, UndoTakesBackWholeRunsAndDrags)
 TEST(SnakeController, UndoHistoryIsBoundedByMemory)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     BuildEdgeSnake(c, m);
     for (int i = 0; i < 300; ++i) c.Step();
@@ -357,7 +351,7 @@ TEST(SnakeController, UndoHistoryIsBoundedByMemory)
 TEST(SnakeController, SaveLoadRoundTripKeepsSnakesPinsAndParams)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     Controller c(m);
     SnakeParams p;
     p.alpha = 0.2;
@@ -381,7 +375,7 @@ TEST(SnakeController, SaveLoadRoundTripKeepsSnakesPinsAndParams)
     EXPECT_FALSE(c.Dirty());
 
     CMeshO m2;
-    MakeCube(m2, 3);
+    gs_test::MakeSnakeCube(m2, 3);
     Controller d(m2);
     ASSERT_TRUE(d.Load(path));
     ASSERT_EQ(d.SnakeCount(), 2);
@@ -412,7 +406,7 @@ TEST(SnakeController, SaveLoadRoundTripKeepsSnakesPinsAndParams)
 TEST(SnakeController, LoadRejectsOtherMeshAndBrokenFilesWithoutChange)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     Controller c(m);
     c.SetSeeds(EdgeSeeds(m, 1.0));
     c.CloseSeeds(false);
@@ -420,7 +414,7 @@ TEST(SnakeController, LoadRejectsOtherMeshAndBrokenFilesWithoutChange)
     c.Save(path);
 
     CMeshO small;
-    MakeCube(small, 2);
+    gs_test::MakeSnakeCube(small, 2);
     Controller d(small);
     d.AddSeedVertex(1);
     EXPECT_THROW(d.Load(path), SnakeError);
@@ -437,7 +431,7 @@ TEST(SnakeController, LoadRejectsOtherMeshAndBrokenFilesWithoutChange)
     nlohmann::json j = c.ToJson();
     j["snakes"][0]["samples"][0]["face"] = 999999;
     CMeshO m3;
-    MakeCube(m3, 3);
+    gs_test::MakeSnakeCube(m3, 3);
     Controller e(m3);
     EXPECT_THROW(e.FromJson(j), SnakeError);
     EXPECT_EQ(e.SnakeCount(), 0);
@@ -447,7 +441,7 @@ TEST(SnakeController, LoadRejectsOtherMeshAndBrokenFilesWithoutChange)
 TEST(SnakeController, AutosaveIsThrottledAndForced)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     Controller c(m);
     std::string path = TempPath("auto.snakes.json");
     std::remove(path.c_str());
@@ -462,7 +456,7 @@ TEST(SnakeController, AutosaveIsThrottledAndForced)
     EXPECT_TRUE(c.Autosave(true));
     EXPECT_FALSE(c.Dirty());
     CMeshO m2;
-    MakeCube(m2, 3);
+    gs_test::MakeSnakeCube(m2, 3);
     Controller d(m2);
     EXPECT_TRUE(d.Load(path));
     EXPECT_EQ(d.Get(0).positions().size(), c.Get(0).positions().size());
@@ -472,7 +466,7 @@ TEST(SnakeController, AutosaveIsThrottledAndForced)
 TEST(SnakeController, ExportSelectedOrAll)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     Controller c(m);
     c.SetSeeds(EdgeSeeds(m, 1.0));
     c.CloseSeeds(false);
@@ -500,7 +494,7 @@ TEST(SnakeController, ExportSelectedOrAll)
 TEST(SnakeController, SelectionStrokeAndSeedEditing)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     EXPECT_THROW(c.SeedsFromSelection(), SnakeError); // nothing selected
     std::vector<int> seeds = EdgeSeeds(m, 2.0);
@@ -531,7 +525,7 @@ TEST(SnakeController, SelectionStrokeAndSeedEditing)
 TEST(SnakeController, SeveralSnakesSelectDeleteAndNearestSample)
 {
     CMeshO m;
-    MakeCube(m, 3);
+    gs_test::MakeSnakeCube(m, 3);
     Controller c(m);
     c.SetSeeds(EdgeSeeds(m, 1.0));
     c.CloseSeeds(false);
@@ -560,7 +554,7 @@ TEST(SnakeController, BoundaryAndSeveralComponents)
 {
     CMeshO a, b;
     gs_test::MakeFlatGrid(a, 20);
-    MakeCube(b, 2);
+    gs_test::MakeSnakeCube(b, 2);
     gs_test::AppendMesh(a, b);
     gs_test::EnableSnakeAdjacency(a);
     Controller c(a);
@@ -584,7 +578,7 @@ TEST(SnakeController, BoundaryAndSeveralComponents)
 TEST(SnakeController, BuildingASecondSnakeKeepsTheFirstConverged)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     BuildEdgeSnake(c, m, 2000);
     ASSERT_TRUE(c.Get(0).Converged());
@@ -605,7 +599,7 @@ TEST(SnakeController, BuildingASecondSnakeKeepsTheFirstConverged)
 TEST(SnakeController, VertexSeedWithoutFacesIsRefused)
 {
     CMeshO m;
-    MakeCube(m);
+    gs_test::MakeSnakeCube(m);
     const int lone = int(m.vert.size());
     vcg::tri::Allocator<CMeshO>::AddVertex(m, CMeshO::CoordType(3, 3, 3));
     gs_test::EnableSnakeAdjacency(m);
@@ -627,7 +621,7 @@ TEST(SnakeController, VertexSeedWithoutFacesIsRefused)
 TEST(SnakeController, SelectionChangesAreUndoneInOrderWithTheSnakes)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     BuildEdgeSnake(c, m, 2000);
     ASSERT_EQ(c.UndoLabel(), "run");
@@ -697,7 +691,7 @@ TEST(SnakeController, SelectionChangesAreUndoneInOrderWithTheSnakes)
 TEST(SnakeController, SessionMapsOntoTheMeshAfterACut)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     Controller c(m);
     c.SetSeeds(gs_test::NearestVertices(m, {vcg::Point3d(1, -0.5, -0.5), vcg::Point3d(1, 0.5, -0.5),
                                             vcg::Point3d(1, 0.5, 0.5), vcg::Point3d(1, -0.5, 0.5)}));
@@ -736,7 +730,7 @@ TEST(SnakeController, SessionMapsOntoTheMeshAfterACut)
 TEST(SnakeController, PreparingInBackgroundBuildsTheSameSnakeOnASecondThread)
 {
     CMeshO m;
-    MakeCube(m, 4);
+    gs_test::MakeSnakeCube(m, 4);
     std::vector<vcg::Point3d> plain;
     {
         Controller c(m);

@@ -96,7 +96,7 @@ struct EndCase
     const char *name;
 };
 
-std::shared_ptr<Surface> Prepare(CMeshO &m)
+std::shared_ptr<Surface> PrepareEnds(CMeshO &m)
 {
     return gs_test::SurfaceWithEnergy(m);
 }
@@ -139,7 +139,7 @@ EndReport RunOnChamfer(const EndCase &c, bool fineOnly = false)
     ChamferPlate plate;
     CMeshO m;
     plate.Make(m);
-    auto surf = Prepare(m);
+    auto surf = PrepareEnds(m);
     if (fineOnly) surf->SetCaptureSmoothing(0);
     std::vector<vcg::Point3d> line;
     for (int i = 0; i <= 400; ++i) line.push_back(plate.At(-35 + 70.0 * i / 400, 0));
@@ -227,7 +227,7 @@ TEST_P(CurvedCreaseEnds, EndsHoldSpanStays)
     const EndCase c = GetParam();
     CMeshO m;
     gs_test::MakeRotatedIcoCylinder(m, 4);
-    auto surf = Prepare(m);
+    auto surf = PrepareEnds(m);
     const double h = surf->MeanEdge();
     std::vector<vcg::Point3d> rim;
     for (int i = 0; i <= 600; ++i) {

@@ -159,7 +159,7 @@ TEST(SnakePartition, LongSnakeWithCornersEverywhereIsFast)
 
 namespace {
 
-std::shared_ptr<Surface> PrepareGrid(CMeshO &m, int n)
+std::shared_ptr<Surface> PrepareSnakeGrid(CMeshO &m, int n)
 {
     gs_test::MakeFlatGrid(m, n);
     EnableSnakeAdjacency(m);
@@ -184,7 +184,7 @@ TEST(SnakePartition, GridPlaneWithSeventySixSeedsBackAndForth)
     // issue 8: a batch snake on a 100x100 grid plane with 76 seeds going back and forth read
     // past the samples (sharp corners pushed the last borders beyond the end)
     CMeshO m;
-    auto surf = PrepareGrid(m, 100);
+    auto surf = PrepareSnakeGrid(m, 100);
     std::vector<int> seeds;
     for (int i = 0; i < 76; ++i) seeds.push_back(50 * 101 + 40 + (i % 2) * 5); // 5 edges back and forth
     for (bool closed : {false, true}) {
@@ -207,7 +207,7 @@ TEST(SnakePartition, RandomPinsAndCornersThroughTheEngine)
 {
     // zig-zag snakes (a corner at most samples) with random pins: pins hold, nothing leaves the snake
     CMeshO m;
-    auto surf = PrepareGrid(m, 60);
+    auto surf = PrepareSnakeGrid(m, 60);
     std::mt19937 rng(7);
     for (int t = 0; t < 12; ++t) {
         const bool closed = t % 2 == 1;
@@ -246,7 +246,7 @@ TEST(SnakePartition, SidecarOfTenThousandZigZagSamplesRestores)
     // issue 8: a sidecar of 10,000 samples crashed meshlabserver through FromJson -> Polyline ->
     // retrace -> partition. Samples zig-zag between two faces, so every sample is a corner.
     CMeshO m;
-    auto surf = PrepareGrid(m, 100);
+    auto surf = PrepareSnakeGrid(m, 100);
     nlohmann::json j;
     j["closed"] = false;
     j["samples"] = nlohmann::json::array();

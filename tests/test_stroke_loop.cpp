@@ -20,7 +20,7 @@ using gs_test::EnableSnakeAdjacency;
 namespace {
 
 const int kAround = 48;
-const double kRadius = 1, kHeight = 4;
+const double kRadius = 1, kLimbHeight = 4;
 
 /// A body (a flat annulus round the limb, radii 1 to 3.5 in z = 0) with a limb (a tube of
 /// radius 1 from z = 0 to 4, flat cap). Returns the tip vertex (centre of the cap); the annulus'
@@ -30,7 +30,7 @@ int MakeLimbOnBody(CMeshO &m)
     m.Clear();
     const double h = 2 * M_PI * kRadius / kAround; // edge length round the limb
     std::vector<vcg::Point3f> pts;
-    const int ringsBody = int(std::lround(2.5 / h)), ringsLimb = int(std::lround(kHeight / h));
+    const int ringsBody = int(std::lround(2.5 / h)), ringsLimb = int(std::lround(kLimbHeight / h));
     for (int j = 0; j <= ringsBody; ++j) { // outer ring first, the base circle last
         const double r = 3.5 - 2.5 * j / ringsBody;
         for (int i = 0; i < kAround; ++i) {
@@ -39,13 +39,13 @@ int MakeLimbOnBody(CMeshO &m)
         }
     }
     for (int j = 1; j <= ringsLimb; ++j) {
-        const double z = kHeight * j / ringsLimb;
+        const double z = kLimbHeight * j / ringsLimb;
         for (int i = 0; i < kAround; ++i) {
             const double a = 2 * M_PI * (i + 0.5 * ((ringsBody + j) % 2)) / kAround;
             pts.emplace_back(float(kRadius * std::cos(a)), float(kRadius * std::sin(a)), float(z));
         }
     }
-    pts.emplace_back(0.f, 0.f, float(kHeight));
+    pts.emplace_back(0.f, 0.f, float(kLimbHeight));
     const int rings = ringsBody + ringsLimb + 1, tip = int(pts.size()) - 1;
     auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, pts.size());
     for (size_t k = 0; k < pts.size(); ++k) m.vert[k].P() = pts[k];
@@ -75,7 +75,7 @@ int MakeLimbOnBody(CMeshO &m)
                                 vcg::Point3d::Construct(f.V(2)->P())) / 3.0;
         const vcg::Point3d n = (vcg::Point3d::Construct(f.V(1)->P()) - vcg::Point3d::Construct(f.V(0)->P())) ^
                                (vcg::Point3d::Construct(f.V(2)->P()) - vcg::Point3d::Construct(f.V(0)->P()));
-        vcg::Point3d out = c[2] < 1e-6 ? vcg::Point3d(0, 0, 1) : c[2] > kHeight - 1e-6 ? vcg::Point3d(0, 0, 1)
+        vcg::Point3d out = c[2] < 1e-6 ? vcg::Point3d(0, 0, 1) : c[2] > kLimbHeight - 1e-6 ? vcg::Point3d(0, 0, 1)
                                                                                        : vcg::Point3d(c[0], c[1], 0);
         if (n * out < 0) std::swap(f.V(1), f.V(2));
     }
