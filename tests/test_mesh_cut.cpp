@@ -895,7 +895,7 @@ TEST(MeshCutTest, ACurveCutAgainRunsAlongTheEdgesOfItsFirstCut)
 TEST(MeshCutTest, APlanSaysWhetherTheMeshWillChangeAndChangesNothing)
 {
     // the edit tool copies the mesh for its undo only when the cut will change it (Plan first)
-    DMesh m;
+    CutMesh m;
     Plate(m, 10, 1.0, 0.3, 5);
     const std::vector<vcg::Point2d> poly = {{2.3, 2.7}, {7.4, 3.1}, {6.2, 7.3}, {2.9, 6.6}};
     const std::string before = Snapshot(m);
@@ -923,7 +923,7 @@ TEST(MeshCutTest, APlanSaysWhetherTheMeshWillChangeAndChangesNothing)
     EXPECT_TRUE(Cut::Plan(m, {chain}, open).ChangesMesh());
     Cut::Param only;
     only.mode = CutMode::SelectOnly;
-    DMesh fresh;
+    CutMesh fresh;
     Plate(fresh, 10, 1.0, 0.3, 5);
     EXPECT_FALSE(Cut::Plan(fresh, {PolygonCurve(fresh, poly)}, only).ChangesMesh());
     // a plan of a mesh changed since is refused, the mesh as it was
@@ -937,7 +937,7 @@ TEST(MeshCutTest, APlanSaysWhetherTheMeshWillChangeAndChangesNothing)
 TEST(MeshCutTest, ASmallPartOfASplitIsWholeAndItsOwnSize)
 {
     // a part under an eighth of the mesh maps its vertices through a hash table sized to it
-    DMesh m, in, out;
+    CutMesh m, in, out;
     Plate(m, 24, 1.0, 0.3, 7);
     const std::vector<vcg::Point2d> poly = {{3.3, 3.6}, {7.7, 4.1}, {5.2, 7.9}};
     const Cut::Result r = Cut::Split(m, {PolygonCurve(m, poly)}, Cut::Param(), in, out);
@@ -947,7 +947,7 @@ TEST(MeshCutTest, ASmallPartOfASplitIsWholeAndItsOwnSize)
     EXPECT_NEAR(Area(in), PolygonArea(poly), 1e-9);
     EXPECT_NEAR(Area(in) + Area(out), 24.0 * 24.0, 1e-9);
     // each part's vertices are the ones its faces use, none twice: inside, a disk (V - E + F = 1)
-    UpdateTopology<DMesh>::FaceFace(in);
+    UpdateTopology<CutMesh>::FaceFace(in);
     int border = 0;
     for (auto &f : in.face)
         for (int k = 0; k < 3; ++k) border += vcg::face::IsBorder(f, k);
