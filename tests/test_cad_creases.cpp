@@ -147,6 +147,26 @@ TEST(CadCreases, OpenEndsHoldOnACurvedRim)
     EXPECT_TRUE(r.Captured());
 }
 
+// The same rim on an ear-clipped cap, whose faces are slivers up to 50:1 fanning across the
+// disk: the local embedding of such slivers is far from conformal, and the one way across the
+// rim in space maps to plane directions up to 90 degrees apart in neighbouring slivers. The ends
+// walked in the plane, so they bent along the rim as they crossed slivers (85 % of the seeded
+// span covered at 2 and 3 h, not captured); they move straight in space now.
+TEST(CadCreases, OpenEndsCrossSliverCapsStraight)
+{
+    CMeshO m;
+    std::vector<gs_crease::Chain> ch;
+    const double e = MakeTessShaft(m, gs_crease::CapStyle::EarClip, ch);
+    const int top = ChainNear(ch, Point3d(10 - 3 * e, 0, 85 * e));
+    ASSERT_LE(gs_test::DistToPolyline(Point3d(10 - 3 * e, 0, 85 * e), ch[top].pts, ch[top].closed), 0.01);
+    for (double off : {2.0, 3.0}) {
+        SCOPED_TRACE(off);
+        const gs_capture::Result r = RunCase(m, ch, top, off, false, "tess: ear-clipped top rim, open");
+        EXPECT_GE(r.coverage, 0.95);
+        EXPECT_TRUE(r.Captured());
+    }
+}
+
 // A block whose bore comes 3 edge lengths from its top edge, remeshed to that edge length: the
 // closed snake seeded on the bore's wall ends on the rim, not on the edge 3 h away. The open
 // snake seeded on the front face below the edge covers the edge but is not yet captured (72 %
