@@ -118,6 +118,17 @@ double MakeTessShaft(CMeshO &m, gs_crease::CapStyle st, std::vector<gs_crease::C
     return e;
 }
 
+/// The tessellated shaft (MakeTessShaft) and the index of its top rim's chain (r 7; -1 if not found).
+int TessShaftTopRim(CMeshO &m, gs_crease::CapStyle st, std::vector<gs_crease::Chain> &ch)
+{
+    const double e = MakeTessShaft(m, st, ch);
+    const Point3d onRim(10 - 3 * e, 0, 85 * e);
+    const int top = ChainNear(ch, onRim);
+    const bool found = top >= 0 && gs_test::DistToPolyline(onRim, ch[top].pts, ch[top].closed) <= 0.01;
+    EXPECT_TRUE(found);
+    return found ? top : -1;
+}
+
 // The shoulder of a tessellated stepped shaft is 3 chain edges wide: snakes seeded 2 chain
 // edges beside either of its rims (1.5x nearer that rim than the other) end on that rim.
 TEST(CadCreases, TessellatedShoulderRimsAreCapturedApart)
@@ -139,12 +150,30 @@ TEST(CadCreases, OpenEndsHoldOnACurvedRim)
 {
     CMeshO m;
     std::vector<gs_crease::Chain> ch;
-    const double e = MakeTessShaft(m, gs_crease::CapStyle::Fan, ch);
-    const int top = ChainNear(ch, Point3d(10 - 3 * e, 0, 85 * e));
-    ASSERT_LE(gs_test::DistToPolyline(Point3d(10 - 3 * e, 0, 85 * e), ch[top].pts, ch[top].closed), 0.01);
+    const int top = TessShaftTopRim(m, gs_crease::CapStyle::Fan, ch);
+    ASSERT_GE(top, 0);
     const gs_capture::Result r = RunCase(m, ch, top, 3, false, "tess: top rim, open, 3 off");
     EXPECT_GE(r.coverage, 0.95);
     EXPECT_TRUE(r.Captured());
+}
+
+// The same rim on an ear-clipped cap, whose faces are slivers up to 50:1 fanning across the
+// disk: the local embedding of such slivers is far from conformal, and the one way across the
+// rim in space maps to plane directions up to 90 degrees apart in neighbouring slivers. The ends
+// walked in the plane, so they bent along the rim as they crossed slivers (85 % of the seeded
+// span covered at 2 and 3 h, not captured); they move straight in space now.
+TEST(CadCreases, OpenEndsCrossSliverCapsStraight)
+{
+    CMeshO m;
+    std::vector<gs_crease::Chain> ch;
+    const int top = TessShaftTopRim(m, gs_crease::CapStyle::EarClip, ch);
+    ASSERT_GE(top, 0);
+    for (double off : {2.0, 3.0}) {
+        SCOPED_TRACE(off);
+        const gs_capture::Result r = RunCase(m, ch, top, off, false, "tess: ear-clipped top rim, open");
+        EXPECT_GE(r.coverage, 0.95);
+        EXPECT_TRUE(r.Captured());
+    }
 }
 
 // A block whose bore comes 3 edge lengths from its top edge, remeshed to that edge length: the

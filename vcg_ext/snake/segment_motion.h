@@ -134,9 +134,8 @@ public:
             return E.JinvT(t) * d;
         };
         // an open end's way straight across the feature (acrossFeatureEnd): the field's direction
-        // in space, mapped into the plane as a vector (not a gradient), unit length
-        auto acrossFeature = [&](int lev, int t, const Eigen::RowVector3d &bary, Eigen::Vector2d &u) -> bool {
-            vcg::Point3d a;
+        // in space (`a`), mapped into the plane as a vector (not a gradient), unit length
+        auto acrossFeature = [&](int lev, int t, const Eigen::RowVector3d &bary, Eigen::Vector2d &u, vcg::Point3d &a) -> bool {
             if (!surf->EnergyField().AcrossFeature(lev, SurfacePoint(region.faces[t], toPoint(bary)), a)) return false;
             const auto &T = region.tri[t];
             const vcg::Point3d e1 = region.pos[T[1]] - region.pos[T[0]], e2 = region.pos[T[2]] - region.pos[T[0]];
@@ -168,6 +167,7 @@ public:
             across.assign(k, Eigen::Vector2d::Zero());
             pull.assign(k, Eigen::Vector2d::Zero());
             std::vector<Eigen::Vector2d> crossing(k, Eigen::Vector2d::Zero()); // acrossFeatureEnd
+            std::vector<vcg::Point3d> crossingSpace(k, vcg::Point3d(0, 0, 0));  // its way in space
             for (int u = 0; u < updates; ++u) {
                 auto tu = SnakeClock::Now();
                 for (int j = 0; j < k; ++j) {
@@ -179,7 +179,7 @@ public:
                     const Eigen::Vector2d g = gradient(lev, lf[j], B.row(j));
                     slope[j] = g.norm();
                     if (lev > 0 && faceLinear) pull[j] = g; // alongPullBlend
-                    else if (st.IsOpenEnd(seg.idx[j]) && !acrossFeature(lev, lf[j], B.row(j), crossing[j]))
+                    else if (st.IsOpenEnd(seg.idx[j]) && !acrossFeature(lev, lf[j], B.row(j), crossing[j], crossingSpace[j]))
                         crossing[j].setZero();
                     Eigen::Vector2d f = st.params.externalWeight * gain * g;
                     Eigen::Vector2d t = (X.row(wholeClosed ? (j + 1) % k : std::min(j + 1, k - 1)) -
@@ -222,6 +222,8 @@ public:
                     RegionWalk::Result &w = work.walk;
                     RegionWalk::Walk(emb.uv, region.tri, region.adj, lf[j], X.row(j).transpose(), X.row(j).transpose() + d,
                                      false, w);
+                    if (st.IsOpenEnd(seg.idx[j]) && pull[j].norm() == 0 && crossing[j].norm() > 0)
+                        straightInSpace(E, lf[j], B.row(j), d, crossing[j], crossingSpace[j], w);
                     SnakeSample &smp = st.samples[seg.idx[j]];
                     const int lev = SampleLevel(smp, level);
                     const SurfacePoint pOld(region.faces[lf[j]], toPoint(B.row(j))), pNew(region.faces[w.face], toPoint(w.bary));
@@ -399,6 +401,33 @@ private:
         if (!acrossEnergies(E, t, x, nrm, r, lo, hi)) return false;
         slope = (hi - lo) / (2 * r);
         return true;
+    }
+    /// An open end moving straight across its feature (acrossFeatureEnd) moves straight in space:
+    /// the plane move d (along the way across, `u` in the plane, `a` in space) is taken as the
+    /// space step it is in the end's own face, and the end goes to the surface point nearest
+    /// x + s a. The plane walk bends wherever the embedding is not conformal: on a cap of 50:1
+    /// slivers the same way across maps 90 degrees apart in neighbouring faces, and an end that
+    /// crossed them walked along the rim (ear-clipped cap, 85 % of the span covered). Where the
+    /// point is not in the region the walk `w` stands.
+    void straightInSpace(Embedding &E, int t, const Eigen::RowVector3d &bary, const Eigen::Vector2d &d,
+                         const Eigen::Vector2d &u, const vcg::Point3d &a, RegionWalk::Result &w)
+    {
+        const auto &T = E.region.tri[t];
+        Eigen::Matrix2d J;
+        J.col(0) = E.emb.uv[T[1]] - E.emb.uv[T[0]];
+        J.col(1) = E.emb.uv[T[2]] - E.emb.uv[T[0]];
+        if (!(std::abs(J.determinant()) > 1e-30) || !(a.SquaredNorm() > 0)) return;
+        const Eigen::Vector2d ab = J.inverse() * (d.dot(u) * u);
+        const vcg::Point3d v = (E.region.pos[T[1]] - E.region.pos[T[0]]) * ab[0] + (E.region.pos[T[2]] - E.region.pos[T[0]]) * ab[1];
+        const double step = v * a;
+        if (!std::isfinite(step) || step == 0) return;
+        const SurfacePoint p0(E.region.faces[t], toPoint(bary));
+        const SurfacePoint q = SurfaceProjection<MeshType>::Closest(*surf, p0.face, p0.Pd(surf->Mesh()) + a * step,
+                                                                    1.5 * std::abs(step));
+        const int tq = q.face < 0 ? -1 : E.LocalFace(q.face);
+        if (tq < 0 || tq >= E.region.RealFaces()) return;
+        w.face = tq;
+        w.bary = Eigen::Vector3d(q.bary[0], q.bary[1], q.bary[2]);
     }
     /// The surface point at x + v (plane), walking from local face t; false when it leaves the region.
     bool planeProbe(Embedding &E, int t, const Eigen::Vector2d &x, const Eigen::Vector2d &v, SurfacePoint &q)
