@@ -544,3 +544,69 @@ TEST(ValleyLoop, EndsOnTheValleyWhereEdgeLengthsVary20x)
         EXPECT_LT(ratio, 1.1);
     }
 }
+
+namespace {
+
+// A tube whose wall turns outwards at z = 0 (radius 1 + 0.2 z below, 1 + z above: a concave
+// crease ring, the base of a flaring part), rings kKneeStep apart with kKneeStep-long edges
+// round them, one ring exactly on the crease, quads split by one diagonal. The shortest loops
+// round it lie below the crease.
+const double kKneeStep = 0.05;
+double KneeRadius(double z) { return 1.0 + (z < 0 ? 0.2 : 1.0) * z; }
+
+void MakeKneeTube(CMeshO &m)
+{
+    const int rings = 25, n = int(std::lround(2 * M_PI / kKneeStep));
+    for (int j = 0; j < rings; ++j) {
+        const double z = (j - rings / 2) * kKneeStep;
+        auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, n);
+        for (int k = 0; k < n; ++k, ++vi)
+            vi->P() = Point3m(KneeRadius(z) * std::cos(2 * M_PI * k / n), KneeRadius(z) * std::sin(2 * M_PI * k / n), z);
+    }
+    for (int j = 0; j + 1 < rings; ++j)
+        for (int k = 0; k < n; ++k) {
+            auto V = [&](int jj, int kk) { return &m.vert[jj * n + kk % n]; };
+            vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k), V(j, k + 1), V(j + 1, k)); // outward
+            vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k + 1), V(j + 1, k + 1), V(j + 1, k));
+        }
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+}
+
+} // namespace
+
+// The valley loop follows the mesh's own concave crease where the energy is a flat-floored
+// valley wider than the band (here a constant 0.5: the energy cannot tell where in the valley
+// the crease runs). The loop round the tube a ring below the crease ends on the crease's
+// ring of edges, every vertex exactly on it; by energy and length alone (concavityWeight 0, as
+// before) it ran on a shorter ring of the band, below the crease.
+TEST(ValleyLoop, FollowsTheConcaveCreaseInAFlatValley)
+{
+    CMeshO m;
+    MakeKneeTube(m);
+    const std::vector<double> flat(m.vert.size(), 0.5);
+    std::vector<P3> loop;
+    std::vector<P3> near;
+    for (int i = 0; i < 32; ++i) {
+        const P3 x = P3(std::cos(M_PI * i / 16), std::sin(M_PI * i / 16), 0) * KneeRadius(-kKneeStep) + P3(0, 0, -kKneeStep);
+        loop.push_back(x);
+        near.push_back(x);
+    }
+    std::vector<int> faces;
+    for (int v : gs_test::NearestVertices(m, near)) faces.push_back(int(m.vert[v].cVFp() - &m.face[0]));
+    auto farthest = [&](const std::vector<int> &vl) {
+        double z = 0;
+        for (int v : vl) z = std::max(z, std::fabs(m.vert[v].cP()[2]) / kKneeStep);
+        return z;
+    };
+    const std::vector<int> crease = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep);
+    ValleyLoop<CMeshO>::Param plain;
+    plain.concavityWeight = 0;
+    const std::vector<int> shortest = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep, plain);
+    std::printf("knee tube: with the crease term %zu vertices, max %.2f rings off the crease; without %zu, %.2f\n",
+                crease.size(), farthest(crease), shortest.size(), farthest(shortest));
+    ASSERT_GE(crease.size(), 100u); // round the whole tube (126 vertices a ring)
+    EXPECT_LT(farthest(crease), 1e-6);
+    ASSERT_GE(shortest.size(), 100u);
+    EXPECT_GT(farthest(shortest), 0.9); // the mechanism: length alone leaves the crease
+}

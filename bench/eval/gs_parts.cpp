@@ -5,13 +5,18 @@
 //
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
-//            [--max-ops N] [--no-valley-loop] [--out FILE.csv]
+//            [--max-ops N] [--no-valley-loop] [--valley-concavity W] [--out FILE.csv]
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
-//   host ends a converged part-boundary loop on, snake/valley_loop.h)
+//   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
+//   Param::concavityWeight, 0 = by energy and length alone, as before session 22)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
-//   the part, from the nearest vertex, and the mean energy on the loop and on that boundary.)
+//   the part, from the nearest vertex, and the mean energy on the loop and on that boundary.
+//   GS_PARTS_GAPS=1: per failed loop, each agreeing person's coverage and the stretches of their
+//   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
+//   success as measured and under the strictest reading of the issue, one person's cut both
+//   holding 90 % of the loop and 90 % covered by it.)
 //
 // Success (the issue's criterion): capture >= 90 % (share of the loop within 1 h of a person's
 // cut) and coverage >= 90 % (share of that cut within 1 h of the loop); h = mean edge length.
@@ -63,6 +68,7 @@ int main(int argc, char **argv)
     int seedCount = 8, maxOps = 400;
     double balloon = 0, alpha = -1, beta = -1, ext = -1;
     bool valleyLoop = true;
+    ValleyLoop<CMeshO>::Param vlp;
     int smoothing = 2, capture = -1; // -1: the tool's choice for the energy
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -80,6 +86,7 @@ int main(int argc, char **argv)
         else if (a == "--smoothing") smoothing = std::stoi(next());
         else if (a == "--capture") capture = std::stoi(next());
         else if (a == "--no-valley-loop") valleyLoop = false;
+        else if (a == "--valley-concavity") vlp.concavityWeight = std::stod(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
@@ -156,7 +163,7 @@ int main(int argc, char **argv)
                         s.Run(maxOps);
                         const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host
-                        if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false);
+                        if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
@@ -191,6 +198,41 @@ int main(int argc, char **argv)
                                              en.c_str(), id, p.index, side > 0 ? "inside" : "outside", ring,
                                              int(sc.Success()), nIn, nOn, nOut, sr.front(), sr[sr.size() / 2],
                                              sr.back(), eLoop, eCut);
+                        }
+                        if (std::getenv("GS_PARTS_JOINT")) {
+                            // the strict reading: one person whose cut both holds the loop and is covered by it
+                            bool joint = false;
+                            for (const auto &c : p.cuts) {
+                                gs_parts::Part q = p;
+                                q.cuts = {c};
+                                joint = joint || gs_parts::Measure(loop, q, md.h, md.h).Success();
+                            }
+                            std::fprintf(stderr, "JOINT %d %d %d %d\n", id, p.index, int(sc.Success()), int(joint));
+                        }
+                        if (std::getenv("GS_PARTS_GAPS") && !sc.Success()) {
+                            // per person: coverage, the uncovered runs of the cut (length, max distance, in h)
+                            const std::vector<vcg::Point3d> pts = gs_parts::ResampleLoop(loop, 0.25 * md.h);
+                            std::fprintf(stderr, "GAPS %d %d %s %d cap=%.2f cov=%.2f loopL=%.1fh n=%zu |", id, p.index,
+                                         side > 0 ? "in" : "out", ring, sc.capture, sc.coverage, L1 / md.h, loop.size());
+                            for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
+                                const std::vector<vcg::Point3d> cp = gs_parts::ResampleLoop(p.cuts[ci], 0.25 * md.h);
+                                std::vector<double> d(cp.size());
+                                int cov = 0;
+                                for (size_t k = 0; k < cp.size(); ++k) cov += (d[k] = gs_parts::DistToLoop(cp[k], pts)) <= md.h;
+                                std::fprintf(stderr, " p%zu L=%.1fh cov=%.2f runs:", ci, gs_parts::LoopLength(p.cuts[ci]) / md.h,
+                                             double(cov) / cp.size());
+                                size_t k0 = 0;
+                                while (k0 < cp.size() && d[k0] > md.h) ++k0;
+                                for (size_t j = 0; j < cp.size(); ++j) {
+                                    const size_t k = (k0 + j) % cp.size();
+                                    if (d[k] <= md.h) continue;
+                                    double mx = 0;
+                                    size_t n = 0;
+                                    while (j < cp.size() && d[(k0 + j) % cp.size()] > md.h) mx = std::max(mx, d[(k0 + j) % cp.size()]), ++n, ++j;
+                                    if (n * 0.25 >= 0.5) std::fprintf(stderr, " %.1f@%.1f", n * 0.25, mx / md.h);
+                                }
+                            }
+                            std::fprintf(stderr, "\n");
                         }
                         Tally &t = tally[en][md.category], &all = tally[en]["ALL"];
                         for (Tally *x : {&t, &all}) ++x->n, x->ok += sc.Success(), x->points += point;
