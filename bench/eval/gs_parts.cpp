@@ -5,10 +5,12 @@
 //
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
-//            [--max-ops N] [--no-valley-loop] [--valley-concavity W] [--out FILE.csv]
+//            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
+//            [--valley-band B] [--valley-lambda L] [--out FILE.csv]
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
-//   Param::concavityWeight, 0 = by energy and length alone, as before session 22)
+//   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
+//   --valley-lambda: its bandWidth and lambda)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -87,6 +89,8 @@ int main(int argc, char **argv)
         else if (a == "--capture") capture = std::stoi(next());
         else if (a == "--no-valley-loop") valleyLoop = false;
         else if (a == "--valley-concavity") vlp.concavityWeight = std::stod(next());
+        else if (a == "--valley-band") vlp.bandWidth = std::stod(next());
+        else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());

@@ -44,7 +44,9 @@ public:
         /// Band half-width, in the snake's length units. On the benchmark's 220 loops
         /// (bench/eval/gs_parts) 1.5, 2, 2.5 and 3 units gave 47, 55, 49 and 44 %: wider bands
         /// reach other valleys, or cover a thin part's tip so that they are no longer a ring.
-        double bandWidth = 2.0;
+        /// With the concavity term below (session 22) other valleys cost more than the crease
+        /// beside the loop: 2, 2.5 and 3 units gave 60, 62 and 62 % (133, 137, 137 of 220).
+        double bandWidth = 2.5;
         /// Length cost added to the energy (in [0,1]): 1 weighs the loop's length as much as its
         /// depth. 0, 0.2, 1, 3 and 100 (the shortest loop in the band) gave 46, 54, 55, 50 and 44 %.
         double lambda = 1.0;
