@@ -3,8 +3,9 @@
 
 // The cheapest loop of mesh edges in a band around a closed snake (issue 33): once a closed
 // snake has settled in a part's valley, the loop of edges within `bandWidth` of it that goes
-// round the same way (homotopic to it in the band) and minimizes sum(length * (E + lambda)),
-// E the per-vertex feature energy averaged on the edge. People draw part boundaries as the
+// round the same way (homotopic to it in the band) and minimizes sum(length * (E + lambda +
+// mu (1 - c))), E the per-vertex feature energy averaged on the edge, c the edge's concavity
+// (its dihedral angle where the surface bends inwards, Param). People draw part boundaries as the
 // shortest way round the part through its concave ground (the minima rule plus the cut's
 // length, Lee et al., "Mesh Scissoring with Minima Rule and Part Salience", CAGD 2005); the
 // snake, smooth and held by its tension and rigidity, settles where its own energy balances,
