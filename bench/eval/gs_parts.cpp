@@ -12,6 +12,8 @@
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
 //   the part, from the nearest vertex, and the mean energy on the loop and on that boundary.)
+//   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
+//   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
 // Success (the criterion): capture >= 90 % (share of the loop within 1 h of a person's
 // cut) and coverage >= 90 % (share of that cut within 1 h of the loop); h = mean edge length.
