@@ -261,13 +261,25 @@ inline void Rings(CMeshO &m, const Part &p, std::vector<int> &dist, std::vector<
 
 /// Seeds `ring` rings off the boundary on `sideWanted` (+1 inside, -1 outside): for evenly
 /// spaced loop vertices, the vertex of that ring nearest along edges (ties: nearest in space).
-/// Empty if the side has no such ring or fewer than 3 distinct seeds.
+/// Empty if the side has no such ring or fewer than 3 distinct seeds. Ring 0: vertices of the
+/// cut itself, for side +1 only.
 inline std::vector<int> Seeds(CMeshO &m, const Part &p, int ring, int sideWanted, int count)
 {
     std::vector<int> dist, side;
     Rings(m, p, dist, side);
     std::vector<int> seeds;
     const int n = int(p.loop.size());
+    if (ring == 0) {
+        // on the cut itself (once per part, as "inside"): does the energy hold a loop put there?
+        if (sideWanted < 0) return seeds;
+        for (int i = 0; i < count; ++i) {
+            const int v = p.loop[(long(i) * n) / count];
+            if (seeds.empty() || seeds.back() != v) seeds.push_back(v);
+        }
+        if (seeds.size() > 1 && seeds.back() == seeds.front()) seeds.pop_back();
+        if (seeds.size() < 3) seeds.clear();
+        return seeds;
+    }
     for (int i = 0; i < count; ++i) {
         const int b = p.loop[(long(i) * n) / count];
         // breadth-first from b over vertices of the wanted side (and the loop)

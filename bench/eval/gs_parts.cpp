@@ -19,6 +19,8 @@
 //   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
 //   success as measured and under the strictest reading of the issue, one person's cut both
 //   holding 90 % of the loop and 90 % covered by it.)
+//   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
+//   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
 // Success (the issue's criterion): capture >= 90 % (share of the loop within 1 h of a person's
 // cut) and coverage >= 90 % (share of that cut within 1 h of the loop); h = mean edge length.
