@@ -936,7 +936,7 @@ TEST(MeshCutTest, APlanSaysWhetherTheMeshWillChangeAndChangesNothing)
 
 TEST(MeshCutTest, ASmallPartOfASplitIsWholeAndItsOwnSize)
 {
-    // a part under an eighth of the mesh maps its vertices through a hash table sized to it
+    // a part under an eighth of the mesh: the vertex table both parts share is reset between them
     CutMesh m, in, out;
     Plate(m, 24, 1.0, 0.3, 7);
     const std::vector<vcg::Point2d> poly = {{3.3, 3.6}, {7.7, 4.1}, {5.2, 7.9}};

@@ -192,24 +192,17 @@ public:
         r.facesInside = int(inFaces.size());
         r.facesOutside = int(outFaces.size());
         r.msCommit = ms(t0);
-        r.msSplit = 0;
+        t0 = clock::now();
+        // work vertex -> part vertex: one table over the work mesh's vertices for both parts,
+        // filled once per split (in msSplit); writePart resets the entries its part set, so
+        // each part costs in proportion to its own size
+        std::vector<int> slot(w.pos.size(), -1);
         for (int part = 0; part < 2; ++part) {
             const auto tp = clock::now();
-            const std::vector<int> &faces = part == 0 ? inFaces : outFaces;
-            MeshType &dst = part == 0 ? inside : outside;
-            // work vertex -> part vertex: a table over the work mesh's vertices for a part of
-            // more than an eighth of the mesh, a hash table sized to the part for a smaller one
-            // (std::unordered_map took 3x as long per face on the 1.2M-face plate)
-            if (8 * faces.size() > w.face.size()) {
-                std::vector<int> dense(w.pos.size(), -1);
-                writePart(w, src, faces, m, dst, [&](int v) -> int & { return dense[v]; });
-            } else {
-                VertexSlots sparse(faces.size());
-                writePart(w, src, faces, m, dst, [&](int v) -> int & { return sparse[v]; });
-            }
+            writePart(w, src, part == 0 ? inFaces : outFaces, m, part == 0 ? inside : outside, slot);
             r.msPart[part] = ms(tp);
-            r.msSplit += r.msPart[part];
         }
+        r.msSplit = ms(t0);
         CutCheck::Parts(inside, outside, wk.r.areaInside, wk.r.areaOutside, wk.totalArea);
         return wk.r;
     }
@@ -238,62 +231,10 @@ private:
     { if (s.IsTexCoordEnabled() && !d.IsTexCoordEnabled()) d.EnableTexCoord(); }
     template <class C> static void enableVT(C &, const C &, long) {}
 
-    /// Open addressing (linear probing) from vertex indices to ints, -1 until set; it grows
-    /// to keep at most half full, so it costs in proportion to the keys it holds.
-    class VertexSlots
-    {
-    public:
-        explicit VertexSlots(size_t expected) { rehash(std::max<size_t>(16, 2 * expected)); }
-        int &operator[](int key)
-        {
-            size_t i = slotOf(key);
-            if (keys[i] == key) return vals[i];
-            if (2 * (used + 1) > keys.size()) {
-                rehash(2 * keys.size());
-                i = slotOf(key);
-            }
-            ++used;
-            keys[i] = key;
-            return vals[i];
-        }
-
-    private:
-        std::vector<int> keys, vals;
-        size_t used = 0, mask = 0;
-        int shift = 0;
-        size_t slotOf(int key) const
-        {
-            size_t i = size_t((unsigned long long)(unsigned)key * 0x9E3779B97F4A7C15ull >> shift) & mask;
-            while (keys[i] != key && keys[i] != -1) i = (i + 1) & mask;
-            return i;
-        }
-        void rehash(size_t cap)
-        {
-            size_t c = 16;
-            int bits = 4;
-            while (c < cap) {
-                c <<= 1;
-                ++bits;
-            }
-            std::vector<int> k = std::move(keys), v = std::move(vals);
-            keys.assign(c, -1);
-            vals.assign(c, -1);
-            mask = c - 1;
-            shift = 64 - bits;
-            for (size_t i = 0; i < k.size(); ++i)
-                if (k[i] != -1) {
-                    const size_t j = slotOf(k[i]);
-                    keys[j] = k[i];
-                    vals[j] = v[i];
-                }
-        }
-    };
-
-    /// One part of a split: the work mesh's `faces` and their vertices into dst; slot(v) is the
-    /// part's index of work vertex v (-1 until it has one).
-    template <class Slot>
+    /// One part of a split: the work mesh's `faces` and their vertices into dst; slot[v] is the
+    /// part's index of work vertex v, -1 until it has one, and -1 again on return.
     static void writePart(const CutWorkMesh &w, const CutCommit<MeshType> &src, const std::vector<int> &faces,
-                          const MeshType &m, MeshType &dst, Slot slot)
+                          const MeshType &m, MeshType &dst, std::vector<int> &slot)
     {
         dst.Clear();
         // the optional components MeshLab's meshes hold (texture coordinates, face colour and
@@ -302,7 +243,7 @@ private:
         std::vector<int> verts;
         for (int f : faces)
             for (int k = 0; k < 3; ++k) {
-                int &i = slot(w.face[f].v[k]);
+                int &i = slot[w.face[f].v[k]];
                 if (i < 0) {
                     i = int(verts.size());
                     verts.push_back(w.face[f].v[k]);
@@ -313,9 +254,10 @@ private:
         if (!faces.empty()) vcg::tri::Allocator<MeshType>::AddFaces(dst, faces.size());
         for (size_t i = 0; i < faces.size(); ++i) {
             const CutWorkMesh::Face &wf = w.face[faces[i]];
-            src.Face(dst.face[i], faces[i], &dst.vert[slot(wf.v[0])], &dst.vert[slot(wf.v[1])],
-                     &dst.vert[slot(wf.v[2])], true);
+            src.Face(dst.face[i], faces[i], &dst.vert[slot[wf.v[0]]], &dst.vert[slot[wf.v[1]]],
+                     &dst.vert[slot[wf.v[2]]], true);
         }
+        for (int v : verts) slot[v] = -1;
         vcg::tri::UpdateSelection<MeshType>::Clear(dst);
         vcg::tri::UpdateBounding<MeshType>::Box(dst);
     }
