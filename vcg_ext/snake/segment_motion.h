@@ -162,12 +162,14 @@ public:
             SnakeSpline &spline = splines.For(k, wholeClosed, st.params.alpha, st.params.beta, st.params.gamma, fixed);
             Eigen::MatrixXd &F = work.F;
             F.resize(k, 2);
-            std::vector<double> slope(k, 0.0);
-            std::vector<Eigen::Vector2d> &across = work.across, &pull = work.pull;
+            std::vector<double> &slope = work.slope;
+            slope.assign(k, 0.0);
+            std::vector<Eigen::Vector2d> &across = work.across, &pull = work.pull, &crossing = work.crossing;
             across.assign(k, Eigen::Vector2d::Zero());
             pull.assign(k, Eigen::Vector2d::Zero());
-            std::vector<Eigen::Vector2d> crossing(k, Eigen::Vector2d::Zero()); // acrossFeatureEnd
-            std::vector<vcg::Point3d> crossingSpace(k, vcg::Point3d(0, 0, 0));  // its way in space
+            crossing.assign(k, Eigen::Vector2d::Zero());
+            std::vector<vcg::Point3d> &crossingSpace = work.crossingSpace;
+            crossingSpace.assign(k, vcg::Point3d(0, 0, 0));
             for (int u = 0; u < updates; ++u) {
                 auto tu = SnakeClock::Now();
                 for (int j = 0; j < k; ++j) {
@@ -491,6 +493,9 @@ private:
         Eigen::MatrixXd X, B, F, Xn;
         RegionWalk::Result walk, probe;
         std::vector<Eigen::Vector2d> across, pull; // the curve's normal, the coarse gradient (plane)
+        std::vector<Eigen::Vector2d> crossing;     // an open end's way across the feature (acrossFeatureEnd) ...
+        std::vector<vcg::Point3d> crossingSpace;   // ... and in space
+        std::vector<double> slope;                 // the energy's slope at each sample
         struct Aside // build(): the first region while a grown one is tried
         {
             LocalRegion<MeshType> region;
