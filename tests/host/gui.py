@@ -9,7 +9,8 @@ server (Xvfb), driven by xdotool and photographed with ImageMagick's `import`.
 - the tool's JSON (written after every change to $GS_SNAKE_AUTOEXPORT) and its Log lines;
 - the cube's geometry (data/icocube.ply, [-1,1]^3): distances to its edges, as the mesh has them.
 
-A test sets its work folder with start(name) and ends with `return finish()`.
+A test script is a function test(work) run by main(name, test), which sets its work folder and
+exits with the verdict; MeshLab runs in a `with MeshLab(...) as ml:` block, which kills it.
 """
 import json
 import math
@@ -21,6 +22,7 @@ import struct
 import subprocess
 import sys
 import time
+import traceback
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.environ.get("GS_DATA_DIR", os.path.join(HERE, "..", "..", "data"))
@@ -49,6 +51,19 @@ def finish():
         return 1
     log("all checks passed")
     return 0
+
+
+def main(name, test):
+    """A GUI test script's main: test(work) in the work folder start(name), then the verdict
+    (finish) as the exit status. A test returns early only after a failed check; an exception
+    is a failed check too."""
+    work = start(name)
+    try:
+        test(work)
+    except Exception as e:  # noqa: BLE001 (any error of the test is its failure, with the artifacts)
+        traceback.print_exc()
+        check(False, "the test runs to its end (%s: %s)" % (type(e).__name__, e))
+    sys.exit(finish())
 
 
 def copy_data(name):
@@ -251,9 +266,11 @@ def wait_json(path, pred, timeout):
 class MeshLab:
     """MeshLab on `mesh`, its window at 0,0 and 1600x1000, fresh settings, its Log (stdout) in
     meshlab_<tag>.log. With `autoexport` the tool writes its JSON to WORK/auto.json after every
-    change (the test hook $GS_SNAKE_AUTOEXPORT)."""
+    change (the test hook $GS_SNAKE_AUTOEXPORT). A context manager: the end of the `with` block
+    kills MeshLab with signal `kill` (SIGKILL: like a crash, no chance to save at exit)."""
 
-    def __init__(self, mesh, tag, autoexport=True):
+    def __init__(self, mesh, tag, autoexport=True, kill=signal.SIGTERM):
+        self.kill_signal = kill
         env = dict(os.environ)
         env["LIBGL_ALWAYS_SOFTWARE"] = "1"
         if autoexport:
@@ -273,12 +290,20 @@ class MeshLab:
                 self.win = ids[-1]
                 break
         if not self.win:
+            self.kill()
             raise RuntimeError("MeshLab window did not appear")
         time.sleep(2)
         xdo("windowmove", self.win, 0, 0)
         screen = re.match(r"(\d+) (\d+)", xdo("getdisplaygeometry"))
         xdo("windowsize", self.win, min(1600, int(screen.group(1))) if screen else 1280, 1000)
         time.sleep(2)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.kill(self.kill_signal)
+        return False
 
     def log_text(self):
         self.logf.flush()

@@ -22,20 +22,18 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gui import (MAGENTA, Image, MeshLab, check, copy_data, dist_cube_edges, dist_polyline, drag,  # noqa: E402
-                 edge_on_mesh, finish, front_face_extent, gl_box, log, mean_edge, mesh_ply,
-                 nearest_cube_edge, sample_near, screenshot, snake_rows, start, wait_json, xdo)
+                 edge_on_mesh, front_face_extent, gl_box, log, main, mean_edge, mesh_ply,
+                 nearest_cube_edge, sample_near, screenshot, snake_rows, wait_json, xdo)
 
 
-def main():
-    WORK = start("edit_gui")
+def test(WORK):
     mesh = copy_data("icocube.ply")
     V, F = mesh_ply(mesh)
     h = mean_edge(V, F)
     auto = os.path.join(WORK, "auto.json")
     sidecar = mesh + ".snakes.json"
 
-    ml = MeshLab(mesh, "run1")
-    try:
+    with MeshLab(mesh, "run1", kill=signal.SIGKILL) as ml:  # like a crash: no chance to save at exit
         check(ml.start_tool(), "the tool starts from the Edit menu")
         img = Image(screenshot("01_started.png"))
         time.sleep(1)  # the tool logs where its panel is once the main window has laid it out
@@ -55,7 +53,7 @@ def main():
         s = wait_json(auto, lambda s: len(s) == 1 and len(s[0]["samples"]) >= 5, 20)
         check(s is not None and len(s) == 1, "Enter builds the snake from the clicked seeds")
         if not s:
-            return 1
+            return
         d0 = [dist_cube_edges(x["position"]) for x in s[0]["samples"][1:-1]]
         log("initial mean distance to the edge: %.2f h" % (sum(d0) / len(d0) / h))
         check(sum(d0) / len(d0) > 1.0 * h, "the initial snake is away from the edge (%.2f h)" % (sum(d0) / len(d0) / h))
@@ -119,15 +117,12 @@ def main():
             check(sc.get("format") == "geometric-snake-session" and len(sc["snakes"]) == 1,
                   "the sidecar file holds the snake")
             check(any(x["fixed"] for x in sc["snakes"][0]["samples"]), "the sidecar file keeps the pin")
-    finally:
-        ml.kill(signal.SIGKILL)  # like a crash: no chance to save at exit
 
     # ---- restart: the tool restores the snake from the sidecar file
     time.sleep(1)
     if os.path.exists(auto):
         os.remove(auto)
-    ml = MeshLab(mesh, "run2")
-    try:
+    with MeshLab(mesh, "run2") as ml:
         check(ml.start_tool(), "the tool starts again after the crash")
         time.sleep(1.5)
         img = Image(screenshot("05_restored.png"))
@@ -140,11 +135,7 @@ def main():
         s = wait_json(auto, lambda s: len(s) == 1, 10)
         if s:
             check(any(x["fixed"] for x in s[0]["samples"]), "the restored snake keeps its pin")
-    finally:
-        ml.kill()
-
-    return finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main("edit_gui", test)

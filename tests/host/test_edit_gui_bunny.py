@@ -42,11 +42,10 @@ def section_seeds(V, axis, frac, h, n=8):
     return [ring[k * len(ring) // n] for k in range(n)]
 
 
-def main():
-    WORK = g.start("edit_gui_bunny")
+def test(WORK):
     src = os.path.join(MESHES, "bunny00.off")
     if not check(os.path.exists(src), "the bunny scan is there (%s)" % os.path.normpath(src)):
-        return g.finish()
+        return
     mesh = os.path.join(WORK, "bunny00.off")
     with open(src) as f, open(mesh, "w") as o:
         o.write(f.read())
@@ -58,10 +57,9 @@ def main():
               open(mesh + ".snakes.json", "w"))
     auto = os.path.join(WORK, "auto.json")
 
-    ml = g.MeshLab(mesh, "run")
-    try:
+    with g.MeshLab(mesh, "run") as ml:
         if not check(ml.start_tool(), "the tool starts on the bunny with the restored seeds"):
-            return g.finish()
+            return
         time.sleep(1.5)
         xdo("mousemove", 400, 950, "click", 1)  # focus the 3D view, away from the mesh
         time.sleep(0.3)
@@ -73,7 +71,7 @@ def main():
         built = wait_for(lambda: (lambda j: j if j and samples(j) and samples(j)[0]["closed"] else None)(
             snakes_of(auto)), 30)
         if not check(bool(built), "Shift+Enter builds a closed snake from the seeds"):
-            return g.finish()
+            return
         n = len(samples(built)[0]["samples"])
         check(120 <= n <= 150, "the closed snake has about the issue's 135 samples, at the session's spacing (%d)" % n)
         best = None
@@ -96,10 +94,7 @@ def main():
             state, ops, comp, wall = best
             check(ops >= 100, "a long Run (%d operations)" % ops)
             check(wall <= 2 * comp + 0.5, "wall time %.3f s <= 2 x compute %.3f s + 0.5 s" % (wall, comp))
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_bunny", test)

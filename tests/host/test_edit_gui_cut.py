@@ -28,22 +28,20 @@ def selected_pixels(png, x, y, w, h):
     return sum(1 for i in range(0, len(raw) - 2, 3) if raw[i] > raw[i + 1] + 50 and raw[i] > raw[i + 2] + 50)
 
 
-def main():
-    WORK = g.start("edit_gui_cut")
+def test(WORK):
     mesh, _, curve = mlhost.plate_and_square(WORK)
     session = {"format": "geometric-snake-session", "version": 1, "mesh": {"vertices": 121, "faces": 200},
                "snakes": [curve], "selected": 0}
     with open(mesh + ".snakes.json", "w") as f:
         json.dump(session, f)
-    ml = g.MeshLab(mesh, "cut", autoexport=False)
-    try:
+    with g.MeshLab(mesh, "cut", autoexport=False) as ml:
         if not check(ml.start_tool(), "the tool starts"):
-            return 1
+            return
         time.sleep(2)
         g.screenshot("01_started.png")
         pg = panel_geometry(ml.log_text())
         if not check(bool(pg) and pg[0], "the panel is docked (its Log line)"):
-            return g.finish()
+            return
         _, px, py, pw, ph = pg
         g.log("panel at %d,%d size %dx%d" % (px, py, pw, ph))
         # the Cut section's header, last in the panel (below Parameters), opens it
@@ -91,10 +89,7 @@ def main():
                       ml.log_text())
         check(bool(m) and int(m.group(2)) >= int(m.group(1)),
               "Cut open gives the curve's vertices a copy on the other side (%s)" % (str(m.groups()) if m else "no Log line"))
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_cut", test)

@@ -51,22 +51,20 @@ def plateau_and_square(folder, n=10):
                   "params": {"balloon": 2.0}}
 
 
-def main():
-    WORK = g.start("edit_gui_cut_undo")
+def test(WORK):
     mesh, curve = plateau_and_square(WORK)
     session = {"format": "geometric-snake-session", "version": 1, "mesh": {"vertices": 121, "faces": 200},
                "snakes": [curve], "selected": 0}
     with open(mesh + ".snakes.json", "w") as f:
         json.dump(session, f)
     auto = os.path.join(WORK, "auto.json")
-    ml = g.MeshLab(mesh, "cut_undo")
-    try:
+    with g.MeshLab(mesh, "cut_undo") as ml:
         if not check(ml.start_tool(), "the tool starts"):
-            return 1
+            return
         time.sleep(2)
         pg = panel_geometry(ml.log_text())
         if not check(bool(pg) and pg[0], "the panel is docked (its Log line)"):
-            return g.finish()
+            return
         _, px, py, pw, ph = pg
         # the 3D view as the tool's Log gives it, above MeshLab's info overlay
         view = (g.VIEW[0], g.VIEW[1], g.VIEW[2], g.VIEW[3] - 105) if g.VIEW else (40, 120, 760, 760)
@@ -163,10 +161,7 @@ def main():
         g.xdo("key", "ctrl+z")  # then the Run, as before the cut
         time.sleep(2)
         check(curve_state(snakes_of(auto))[0][3] == 0, "the next Ctrl+Z takes back the Run (the history before the cut)")
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_cut_undo", test)

@@ -56,27 +56,25 @@ def polyline_length(pts, closed=False):
     return sum(math.dist(pts[i], pts[(i + 1) % n]) for i in range(n if closed else n - 1))
 
 
-def main():
-    WORK = g.start("edit_gui_drag")
+def test(WORK):
     mesh = g.copy_data("icocube.ply")
     V, F = g.mesh_ply(mesh)
     h = g.mean_edge(V, F)
     auto = os.path.join(WORK, "auto.json")
 
-    ml = g.MeshLab(mesh, "run")
-    try:
+    with g.MeshLab(mesh, "run", kill=signal.SIGKILL) as ml:
         face = g.start_on_front_face(ml, "01_started.png")
         if not face:
-            return 1
+            return
         left, right, top, bottom = face
         hpx = (right - left) / 2.0 * h
         xm = (left + right) // 2
         if not check(bool(g.build_from_clicks(auto, left, right, top + 2.2 * hpx)), "Enter builds the snake"):
-            return 1
+            return
         xdo("key", "r")
         conv = wait_for(lambda: (lambda j: j if j and samples(j)[0]["stats"]["converged"] else None)(snakes_of(auto)), 60)
         if not check(bool(conv), "Run: the snake converges onto the top edge of the front face"):
-            return 1
+            return
         pos0 = [tuple(x["position"]) for x in samples(conv)[0]["samples"]]
         edge = g.nearest_cube_edge(pos0[len(pos0) // 2])
         axis = next(k for k in range(3) if edge[0][k] != edge[1][k])  # the edge runs along this axis
@@ -109,7 +107,7 @@ def main():
         img = g.Image(g.screenshot("03_grazing.png"))
         if not check(tilt is not None and tilt[1] <= 120, "a grazing view of the top face (%s px high for 2 units)" % (
                 tilt[1] if tilt else "?")):
-            return 1
+            return
         left, right, _, _ = g.front_face_extent(img)
         pixel = 2.0 / (right - left)  # the size of a pixel at the edge's depth (the front face spans 2 units)
         ye = edge_y(img, xm)
@@ -122,7 +120,7 @@ def main():
         dragged = wait_for(lambda: (lambda j: j if j and any(x["fixed"] for x in samples(j)[0]["samples"]) else None)(
             snakes_of(auto)), 10)
         if not check(bool(dragged), "the drag moves and pins a sample"):
-            return 1
+            return
         g.screenshot("04_dragged.png")
         pin = next(i for i, x in enumerate(samples(dragged)[0]["samples"]) if x["fixed"])
         pinpos = tuple(samples(dragged)[0]["samples"][pin]["position"])
@@ -143,7 +141,7 @@ def main():
                                                                        "Run stopped" in ml.log_text()) else None)(
             snakes_of(auto)), 60)
         if not check(bool(rerun), "the Run after the drag ends"):
-            return 1
+            return
         time.sleep(1.0)
         rerun = snakes_of(auto)
         g.screenshot("05_rerun.png")
@@ -161,10 +159,7 @@ def main():
         L0, L = polyline_length(pos0), polyline_length(pos)
         check(L <= L0 + 2 * off + 2 * h, "the curve's length is sane: %.2f h (before the drag %.2f h, pin offset %.2f h)" % (
             L / h, L0 / h, off / h))
-    finally:
-        ml.kill(signal.SIGKILL)
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_drag", test)

@@ -56,25 +56,23 @@ def close_to(a, b, tol=1e-5):
     return len(a) == len(b) and all(math.dist(p, q) <= tol for p, q in zip(a, b))
 
 
-def main():
-    WORK = g.start("edit_gui_edit")
+def test(WORK):
     mesh = g.copy_data("icocube.ply")
     mesh_bytes = read_bytes(mesh)
     V, F = g.mesh_ply(mesh)
     h = g.mean_edge(V, F)
     auto = os.path.join(WORK, "auto.json")
 
-    ml = g.MeshLab(mesh, "run")
-    try:
+    with g.MeshLab(mesh, "run", kill=signal.SIGKILL) as ml:
         face = g.start_on_front_face(ml, "20_panel.png")
         if not face:
-            return 1
+            return
         left, right, top, bottom = face
         hpx = (right - left) / 2.0 * h
         xm = (left + right) // 2
         s0 = g.build_from_clicks(auto, left, right, top + 2.2 * hpx, min_samples=5)
         if not check(bool(s0), "Enter builds the snake"):
-            return 1
+            return
         n0 = len(samples(s0)[0]["samples"])
 
         # ------------------------------------------------------------ 1. keys: insert, pin, delete
@@ -131,7 +129,7 @@ def main():
         xdo("key", "Return")
         two = wait_for(lambda: (lambda j: j if j and len(samples(j)) == 2 else None)(snakes_of(auto)), 20)
         if not check(bool(two), "New, seeds and Enter build a second snake"):
-            return 1
+            return
         check(samples(two)[0]["stats"]["converged"] and samples(two)[0]["samples"] == samples(conv)[0]["samples"],
               "the first snake keeps its state and its \"converged\"")
         xdo("mousemove", *PANEL_LIST, "click", 1)  # the list: its popup ...
@@ -264,11 +262,7 @@ def main():
         time.sleep(1.0)
         g.screenshot("28_restarted.png")
         check(ml.p.poll() is None, "keys with no mesh to work on do no harm")
-    finally:
-        ml.kill(signal.SIGKILL)
-
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_edit", test)

@@ -77,12 +77,11 @@ def shown(text, what):
         text)]
 
 
-def main():
+def test(WORK):
     t_start = time.time()
-    WORK = g.start("edit_gui_large")
     src = os.path.join(MESHES, "bunny00.off")
     if not check(os.path.exists(src), "the bunny scan is there (%s)" % os.path.normpath(src)):
-        return g.finish()
+        return
     cached = os.path.join(os.path.dirname(WORK), "bunny00_x16.ply")
     subdivided_bunny(src, cached)
     mesh = os.path.join(WORK, "bunny00_x16.ply")  # its session (sidecar) is this run's only
@@ -91,10 +90,9 @@ def main():
     auto = os.path.join(WORK, "auto.json")
 
     t0 = time.time()
-    ml = g.MeshLab(mesh, "large")
-    try:
+    with g.MeshLab(mesh, "large") as ml:
         if not check(ml.start_tool(), "the tool starts on the 1.2M-face bunny"):
-            return g.finish()
+            return
         log("mesh made/loaded and tool started in %.1f s (MeshLab %.1f s)" % (time.time() - t_start, time.time() - t0))
         # MeshLab may still be busy with the 1.2M faces when the window is sized: size it again,
         # then focus the view (a click beside the bunny places nothing; Esc twice resumes the
@@ -116,7 +114,7 @@ def main():
         a, b = g.longest_run([g.is_mesh(img.px(x, y)) for x in range(x0, right)])
         a, b = a + x0, b + x0
         if not check(b - a > 100, "the bunny is in the view (%d px wide on row %d)" % (b - a, y)):
-            return g.finish()
+            return
         for f in (0.25, 0.42, 0.58, 0.75):
             x = int(a + f * (b - a))
             n = len(shown(ml.log_text(), "seed"))
@@ -126,19 +124,19 @@ def main():
         for i, s in enumerate(seeds):
             log("click %d: seed shown after %.0f ms (tool %.0f ms, %s %.0f ms)" % ((i + 1,) + s))
         if not check(len(seeds) == 4, "four clicks on the bunny place four seeds (%d)" % len(seeds)):
-            return g.finish()
+            return
         green = Image(g.screenshot("01_seeds.png")).count((0, 230, 0), (x0, y - 40, x1, y + 40))
         check(green >= 4 * 20, "the four seeds are on screen (%d green pixels)" % green)
         xdo("key", "Return")
         built = wait_for(lambda: (lambda j: j if j and samples(j) else None)(snakes_of(auto)), 30)
         if not check(bool(built), "Enter builds an open snake from the seeds"):
-            return g.finish()
+            return
         b = wait_for(lambda: shown(ml.log_text(), "build"), 10)
         n = len(samples(built)[0]["samples"])
         check(60 <= n <= 200, "the snake has about the issue's 92 samples (%d)" % n)
         g.screenshot("02_built.png")
         if not check(bool(b), "the tool logs when the built snake is shown"):
-            return g.finish()
+            return
         log("build: %d samples, shown after %.0f ms (tool %.0f ms, %s %.0f ms)" % ((n,) + b[0]))
         med = statistics.median(s[0] for s in seeds)
         log("median click-to-seed %.0f ms (first click %.0f ms), build %.0f ms; total test %.1f s" % (
@@ -147,10 +145,7 @@ def main():
             check(med <= CLICK_MS, "median click shows its seed within %d ms (%.0f ms)" % (CLICK_MS, med))
             check(max(s[0] for s in seeds) <= 3 * CLICK_MS, "every click within %d ms" % (3 * CLICK_MS))
             check(b[0][0] <= BUILD_MS, "Build shows the snake within %d ms (%.0f ms)" % (BUILD_MS, b[0][0]))
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_large", test)

@@ -11,7 +11,6 @@ the sidecar must hold the converged snake, the filter applies; the tool started 
 history is back, and Ctrl+Z returns exactly to the snake as built (the Run taken back), Ctrl+Y
 to the converged curve.
 """
-import json
 import os
 import re
 import sys
@@ -22,31 +21,29 @@ import gui as g  # noqa: E402  (the MeshLab driver, the tool's JSON and Log)
 from gui import check, curve_state, log, run_lines, samples, snakes_of, wait_for, xdo  # noqa: E402
 
 
-def main():
-    WORK = g.start("edit_gui_lifecycle")
+def test(WORK):
     mesh = g.copy_data("icocube.ply")
     V, F = g.mesh_ply(mesh)
     h = g.mean_edge(V, F)
     auto = os.path.join(WORK, "auto.json")
     t_start = time.time()
-    ml = g.MeshLab(mesh, "lifecycle")
-    try:
+    with g.MeshLab(mesh, "lifecycle") as ml:
         box = g.start_on_front_face(ml, "01_started.png")
         if not box:
-            return g.finish()
+            return
         left, right, top, bottom = box
         hpx = (right - left) / 2.0 * h
         built = g.build_from_clicks(auto, left, right, int(top + 2.2 * hpx), min_samples=5)
         if not check(bool(built), "Enter builds a snake"):
-            return g.finish()
+            return
         xdo("key", "r")
         if not check(bool(wait_for(lambda: run_lines(ml.log_text()), 20)), "R runs it to its end"):
-            return g.finish()
+            return
         ran = wait_for(lambda: (lambda j: j if j and curve_state(j) != curve_state(built) and
                                 samples(j)[0]["stats"]["stop"] != "running" else None)(snakes_of(auto)), 10)
         if not check(bool(ran), "the Run moved the snake (%s)" % (
                 samples(ran)[0]["stats"]["stop"] if ran else "no JSON")):
-            return g.finish()
+            return
 
         # Filters > Selection > Select All: MeshLab ends the tool as its dialog opens
         xdo("key", "ctrl+shift+a")
@@ -92,10 +89,7 @@ def main():
         check(bool(redone) and [s["samples"] for s in samples(redone)] == [s["samples"] for s in samples(ran)],
               "Ctrl+Y gives the converged curve again")
         log("test time %.1f s" % (time.time() - t_start))
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_lifecycle", test)

@@ -13,18 +13,16 @@ import gui as g  # noqa: E402
 from gui import check  # noqa: E402
 
 
-def main():
-    WORK = g.start("edit_gui_panel_place")
+def test(WORK):
     mesh = g.copy_data("icocube.ply")
     conf = os.path.join(WORK, "config", "VCG")  # MeshLab 2020.09's settings (XDG_CONFIG_HOME)
     os.makedirs(conf)
     with open(os.path.join(conf, "MeshLab_64bit_fp.conf"), "w") as f:
         f.write("[GeometricSnake]\nPanel\\area=2\nPanel\\floating=false\nPanel\\width=360\n")
 
-    ml = g.MeshLab(mesh, "place")
-    try:
+    with g.MeshLab(mesh, "place") as ml:
         if not check(ml.start_tool(), "the tool starts"):
-            return g.finish()
+            return
         boxes = g.panel_and_layer_dialog(ml)
         g.screenshot("01_right.png")
         if boxes:
@@ -33,10 +31,7 @@ def main():
             check(shown == "visible" and not g.overlap(pbox, lbox),
                   "beside the layer dialog, whose Log stays visible (not a tab over it)")
             check(abs(pbox[2] - 360) <= 30, "the panel has the width it had (%d px, was 360)" % pbox[2])
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_panel_place", test)

@@ -89,8 +89,7 @@ def run_case(name, mesh_name, seeds, round_centre):
     mesh = g.session_with_seeds(src, seeds, {"type": PART_BOUNDARY, "smoothing": 2})
     clicks = [off_vertices(mesh)[s] for s in seeds]
     auto = os.path.join(g.WORK, "auto.json")
-    ml = g.MeshLab(mesh, name)
-    try:
+    with g.MeshLab(mesh, name) as ml:
         built = g.build_closed_from_session(ml, name, auto, "seeds and energy")
         if not built:
             return
@@ -134,16 +133,12 @@ def run_case(name, mesh_name, seeds, round_centre):
             check(reason in ("collapsed", "left_part", "max_operations", "time_limit"),
                   "%s: the Log says why the Run stopped (%s)" % (name, reason))
             check(reds is not None and reds > 40, "%s: the status line shows the stop in red (%s red pixels)" % (name, reds))
-    finally:
-        ml.kill()
 
 
-def main():
-    g.start("edit_gui_part_loop")
+def test(work):
     for c in CASES:
         run_case(*c)
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_part_loop", test)

@@ -41,8 +41,7 @@ def run_case(name, mesh_name, seeds, expect):
         return
     mesh = g.session_with_seeds(src, seeds)
     auto = os.path.join(g.WORK, "auto.json")
-    ml = g.MeshLab(mesh, name)
-    try:
+    with g.MeshLab(mesh, name) as ml:
         built = g.build_closed_from_session(ml, name, auto)
         if not built:
             return
@@ -69,8 +68,6 @@ def run_case(name, mesh_name, seeds, expect):
         reds = g.status_reds(text, name)
         if reds is not None:
             check(reds > 40, "%s: the status line shows the stop in red (%d red pixels)" % (name, reds))
-    finally:
-        ml.kill()
 
 
 def typed_limits(panel):
@@ -81,8 +78,7 @@ def typed_limits(panel):
     name, mesh_name, seeds = "typed_limits", CASES[1][1], CASES[1][2]
     mesh = g.session_with_seeds(os.path.join(MESHES, mesh_name), seeds)
     auto = os.path.join(g.WORK, "auto.json")
-    ml = g.MeshLab(mesh, name)
-    try:
+    with g.MeshLab(mesh, name) as ml:
         if not g.build_closed_from_session(ml, name, auto):
             return
         # room for the Parameters section (closed by default): the sections above it closed
@@ -114,18 +110,14 @@ def typed_limits(panel):
         st = panel(lambda s: s.get("error"))
         check(bool(st.get("error")) and "25" in st.get("status", ""),
               "%s: the status line shows the limit in red (%r)" % (name, st.get("status")))
-    finally:
-        ml.kill()
 
 
-def main():
-    g.start("edit_gui_run_end")
-    panel = g.panel_state_reader(os.path.join(g.WORK, "panel.json"))
+def test(work):
+    panel = g.panel_state_reader(os.path.join(work, "panel.json"))
     for c in CASES:
         run_case(*c)
     typed_limits(panel)
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_run_end", test)

@@ -19,8 +19,7 @@ import gui as g  # noqa: E402  (the MeshLab driver, screenshots, pixel counts)
 from gui import check, panel_geometry, read_bytes, red_pixels  # noqa: E402
 
 
-def main():
-    WORK = g.start("edit_gui_sidecar")
+def test(WORK):
     mesh = g.copy_data("icocube.ply")
     sidecar = mesh + ".snakes.json"
     # a session file cut in the middle, as a crash of another program or a full disk leaves it
@@ -34,10 +33,9 @@ def main():
         f.write("an older backup the user keeps\n")
     before, bak_before = read_bytes(sidecar), read_bytes(sidecar + ".bak")
 
-    ml = g.MeshLab(mesh, "run", autoexport=False)
-    try:
+    with g.MeshLab(mesh, "run", autoexport=False) as ml:
         if not check(ml.start_tool(), "the tool starts"):
-            return 1
+            return
         time.sleep(1)
         g.screenshot("01_started.png")
         check(read_bytes(sidecar) == before, "starting the tool leaves the truncated sidecar as it was")
@@ -65,8 +63,6 @@ def main():
         g.xdo("mousemove", 141, 84, "click", 1)
         time.sleep(3)
         g.screenshot("03_ended.png")
-    finally:
-        ml.kill()
 
     check(read_bytes(sidecar) == before, "the truncated sidecar is unchanged byte for byte")
     check(read_bytes(sidecar + ".bak") == bak_before, "the old .bak file is not replaced")
@@ -75,8 +71,7 @@ def main():
         j = json.load(open(rec[0]))
         check(j.get("format") == "geometric-snake-session", "the recovery file is a session")
         check(len(j.get("seeds", [])) == 1, "it holds the placed seed (%d seeds)" % len(j.get("seeds", [])))
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_sidecar", test)

@@ -11,7 +11,6 @@ R runs it: it ends by itself, converged on the limb's base (the circle of radius
 import json
 import math
 import os
-import re
 import sys
 import time
 
@@ -23,8 +22,7 @@ from gui import check, log, run_lines, samples, snakes_of, wait_for, xdo  # noqa
 from test_cli_run_end import limb_on_body  # noqa: E402
 
 
-def main():
-    WORK = g.start("edit_gui_stroke_loop")
+def test(WORK):
     mesh = os.path.join(WORK, "limb.off")
     h = limb_on_body(mesh, up_y=True)
     tok = open(mesh).read().split()
@@ -35,16 +33,15 @@ def main():
     json.dump({"format": "geometric-snake-session", "version": 1, "mesh": {"vertices": nv, "faces": nf},
                "seeds": seeds, "snakes": []}, open(mesh + ".snakes.json", "w"))
     auto = os.path.join(WORK, "auto.json")
-    ml = g.MeshLab(mesh, "run")
-    try:
+    with g.MeshLab(mesh, "run") as ml:
         if not check(ml.start_tool(), "the tool starts with the five restored seeds"):
-            return g.finish()
+            return
         g.focus_view()
         xdo("key", "l")
         built = wait_for(lambda: g.closed_snake(auto), 30)
         g.screenshot("01_loop.png")
         if not check(bool(built), "L completes the stroke into a closed snake"):
-            return g.finish()
+            return
         init = [s["position"] for s in samples(built)[0]["samples"]]
         sectors = {int((math.degrees(math.atan2(p[2], p[0])) + 180) // 45) for p in init}
         check(len(sectors) == 8, "the loop goes all round the limb (%d of 8 sectors round its axis)" % len(sectors))
@@ -54,7 +51,7 @@ def main():
         time.sleep(1.0)
         g.screenshot("02_run.png")
         if not check(bool(lines), "the Run ends by itself"):
-            return g.finish()
+            return
         state, ops, comp, wall = lines[0]
         j = wait_for(lambda: (lambda s: s if s and samples(s)[0].get("stats", {}).get("stop") not in (None, "running")
                               else None)(snakes_of(auto)), 10)
@@ -64,10 +61,7 @@ def main():
             state, ops, wall, d, h))
         check(state == "converged", "the Run converges (%s)" % state)
         check(d < h, "the snake settles on the limb's base: every sample within an edge length (%.3f < %.3f)" % (d, h))
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_stroke_loop", test)

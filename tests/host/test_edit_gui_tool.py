@@ -34,16 +34,14 @@ from gui import curve_state, run_lines, samples, snakes_of, wait_for, window_geo
 check, log, xdo = g.check, g.log, g.xdo
 
 
-def main():
-    WORK = g.start("edit_gui_tool")
+def test(WORK):
     mesh = g.copy_data("icocube.ply")
     V, F = g.mesh_ply(mesh)
     h = g.mean_edge(V, F)
     auto = os.path.join(WORK, "auto.json")
     sidecar = mesh + ".snakes.json"
 
-    ml = g.MeshLab(mesh, "run1")
-    try:
+    with g.MeshLab(mesh, "run1", kill=signal.SIGKILL) as ml:
         # ---------------------------------------------------------------- 1. data safety
         xdo("mousemove", 400, 500, "click", 1)  # focus the 3D view (a click does not rotate)
         time.sleep(0.5)
@@ -74,7 +72,7 @@ def main():
         s = g.build_from_clicks(auto, left, right, ys, min_samples=5)
         check(bool(s), "Enter builds the snake")
         if not s:
-            return 1
+            return
         n0 = len(samples(s)[0]["samples"])
         time.sleep(1.0)
         img = g.Image(g.screenshot("11_built.png"))
@@ -168,8 +166,6 @@ def main():
         redone = wait_for(lambda: (lambda j: j if j and j != before else None)(snakes_of(auto)), 5)
         check(bool(redone) and curve_state(redone) == curve_state(converged), "Ctrl+Y redoes the first Run")
         g.screenshot("15_undone.png")
-    finally:
-        ml.kill(signal.SIGKILL)
 
     # -------------------------------------------------------------------- 4. wall time
     # The session restored from its sidecar with the first snake as built and a convergence
@@ -189,8 +185,7 @@ def main():
     json.dump(sc, open(sidecar, "w"))
     if os.path.exists(auto):
         os.remove(auto)
-    ml = g.MeshLab(mesh, "run2")
-    try:
+    with g.MeshLab(mesh, "run2") as ml:
         check(ml.start_tool(), "the tool starts with the restored session")
         time.sleep(1.5)
         xdo("mousemove", 400, 950, "click", 1)  # focus the 3D view, away from the snake
@@ -221,7 +216,7 @@ def main():
         xdo("key", "Return")  # builds the long snake from the pending seeds
         long_snake = wait_for(lambda: (lambda j: j if j and len(samples(j)) == 2 else None)(snakes_of(auto)), 20)
         if not check(bool(long_snake), "Enter builds a second snake from the restored seeds"):
-            return 1
+            return
         nlong = len(samples(long_snake)[1]["samples"])
         check(nlong >= 150, "the second snake has the fine spacing (%d samples)" % nlong)
         time.sleep(0.5)
@@ -261,11 +256,7 @@ def main():
         img = g.Image(g.screenshot("17_back_on_cube.png"))
         n = img.count(g.MAGENTA, g.gl_box(img))
         check(ml.p.poll() is None and n > 300, "back on the cube, the snake is there again (%d px)" % n)
-    finally:
-        ml.kill()
-
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_tool", test)

@@ -22,16 +22,14 @@ import gui as g  # noqa: E402
 from gui import check, wait_for, xdo  # noqa: E402
 
 
-def main():
-    WORK = g.start("edit_gui_view")
+def test(WORK):
     mesh = g.copy_data("icocube.ply")
     panel = g.panel_state_reader(os.path.join(WORK, "panel.json"))
 
-    ml = g.MeshLab(mesh, "view")
-    try:
+    with g.MeshLab(mesh, "view") as ml:
         face = g.start_on_front_face(ml, "01_started.png")
         if not face:
-            return g.finish()
+            return
         left, right, top, bottom = face
         cx, cy = (left + right) // 2, (top + bottom) // 2
 
@@ -119,10 +117,7 @@ def main():
         g.screenshot("07_closed.png")
         check(not prompt and ml.p.poll() is None,
               "Close Project asks nothing: starting the tool left the layer unmodified (no save prompt)")
-    finally:
-        ml.kill()
-    return g.finish()
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    g.main("edit_gui_view", test)
