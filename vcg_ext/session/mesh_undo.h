@@ -15,12 +15,13 @@
 // mesh alone exceeds the limit is not kept (Push says so).
 
 #include <cstddef>
-#include <deque>
 #include <memory>
 #include <string>
 #include <utility>
 
 #include <vcg/complex/append.h>
+
+#include <vcg_ext/session/undo.h>
 
 namespace vcg {
 namespace tri {
@@ -62,16 +63,28 @@ void EnableOptionalLike(M &c, const M &f)
 }
 } // namespace detail
 
+/// One step of SnakeMeshUndo: the mesh, the session as saved and its undo history.
 template <class MeshType, class History>
-class SnakeMeshUndo
+struct SnakeMeshStep
 {
+    std::unique_ptr<MeshType> mesh;
+    std::string session;
+    History history;
+};
+
+template <class MeshType, class History>
+class SnakeMeshUndo : private SnakeUndo<SnakeMeshStep<MeshType, History>>
+{
+    typedef SnakeMeshStep<MeshType, History> Step;
+    typedef SnakeUndo<Step> Steps; // the steps, their labels, bounds and sides
+
 public:
     struct Param
     {
         size_t byteLimit = size_t(512) << 20; ///< all steps' mesh copies, undo and redo
         size_t maxSteps = 2;                  ///< undo steps kept (the newest)
     };
-    explicit SnakeMeshUndo(Param p = Param()) : par(p) {}
+    explicit SnakeMeshUndo(Param p = Param()) : Steps(p.byteLimit, p.maxSteps), par(p) {}
 
     /// The memory a copy of `m` takes (an estimate: the elements, twice for optional components).
     static size_t MeshBytes(const MeshType &m)
@@ -96,19 +109,14 @@ public:
                   std::to_string(par.byteLimit >> 20) + " MB)";
             return nullptr;
         }
-        std::unique_ptr<MeshType> c(new MeshType);
-        detail::EnableOptionalLike(*c, m);
-        Copy(*c, m);
-        return c;
+        return copyOf(m);
     }
     /// Keeps `before` (Snapshot of the mesh before the action `label`), the session and its
     /// history then, as the newest step, and drops the redo side.
     void Push(std::unique_ptr<MeshType> before, std::string session, History history, const std::string &label)
     {
-        clear(redo);
         const size_t b = MeshBytes(*before);
-        undo.push_back(Step{std::move(before), std::move(session), std::move(history), label, b});
-        while (undo.size() > 1 && (undo.size() > par.maxSteps || Bytes() > par.byteLimit)) undo.pop_front();
+        Steps::Push(Step{std::move(before), std::move(session), std::move(history)}, b, label);
     }
     /// Snapshot and Push at once: false (nothing kept, the redo side dropped, `why` says why) if
     /// the mesh cannot be kept.
@@ -116,38 +124,28 @@ public:
     {
         std::unique_ptr<MeshType> c = Snapshot(m, why);
         if (!c) {
-            clear(redo);
+            Steps::ClearRedo();
             return false;
         }
         Push(std::move(c), std::move(session), std::move(history), label);
         return true;
     }
 
-    bool CanUndo() const { return !undo.empty(); }
-    bool CanRedo() const { return !redo.empty(); }
-    std::string UndoLabel() const { return undo.empty() ? std::string() : undo.back().label; }
-    std::string RedoLabel() const { return redo.empty() ? std::string() : redo.back().label; }
-    size_t UndoCount() const { return undo.size(); }
-    size_t RedoCount() const { return redo.size(); }
-    size_t Bytes() const
-    {
-        size_t b = 0;
-        for (const auto &s : undo) b += s.bytes;
-        for (const auto &s : redo) b += s.bytes;
-        return b;
-    }
+    using Steps::CanRedo;
+    using Steps::CanUndo;
+    using Steps::Bytes;
+    using Steps::Clear;
+    using Steps::ClearRedo;
+    using Steps::RedoCount;
+    using Steps::RedoLabel;
+    using Steps::UndoCount;
+    using Steps::UndoLabel;
 
     /// Brings back the mesh before the newest action: `m` becomes the step's mesh, `session` and
     /// `history` (in: the current ones, kept for Redo) the step's. False if there is none. `m` must
     /// have no deleted elements (as after the action, which compacts).
-    bool Undo(MeshType &m, std::string &session, History &history) { return swap(undo, redo, m, session, history); }
-    bool Redo(MeshType &m, std::string &session, History &history) { return swap(redo, undo, m, session, history); }
-    void ClearRedo() { clear(redo); }
-    void Clear()
-    {
-        clear(undo);
-        clear(redo);
-    }
+    bool Undo(MeshType &m, std::string &session, History &history) { return swap(false, m, session, history); }
+    bool Redo(MeshType &m, std::string &session, History &history) { return swap(true, m, session, history); }
 
     /// Sets `m` to `from` exactly (Append::MeshCopy, after clearing what MeshCopy appends to: the
     /// textures). Adjacency is not copied: the caller updates it.
@@ -159,27 +157,22 @@ public:
     }
 
 private:
-    struct Step
-    {
-        std::unique_ptr<MeshType> mesh;
-        std::string session;
-        History history;
-        std::string label;
-        size_t bytes;
-    };
     Param par;
-    std::deque<Step> undo, redo;
 
-    static void clear(std::deque<Step> &d) { d.clear(); }
-    bool swap(std::deque<Step> &from, std::deque<Step> &to, MeshType &m, std::string &session, History &history)
+    static std::unique_ptr<MeshType> copyOf(const MeshType &m)
     {
-        if (from.empty()) return false;
-        Step s = std::move(from.back());
-        from.pop_back();
-        std::unique_ptr<MeshType> now(new MeshType);
-        detail::EnableOptionalLike(*now, m);
-        Copy(*now, m);
-        to.push_back(Step{std::move(now), std::move(session), std::move(history), s.label, MeshBytes(m)});
+        std::unique_ptr<MeshType> c(new MeshType);
+        detail::EnableOptionalLike(*c, m);
+        Copy(*c, m);
+        return c;
+    }
+    bool swap(bool redoSide, MeshType &m, std::string &session, History &history)
+    {
+        if (!Steps::Peek(redoSide)) return false;
+        // the state now goes to the other side; the step's comes back
+        Step s{copyOf(m), std::move(session), std::move(history)};
+        const size_t b = MeshBytes(m);
+        redoSide ? Steps::Redo(s, b) : Steps::Undo(s, b);
         Copy(m, *s.mesh);
         session = std::move(s.session);
         history = std::move(s.history);

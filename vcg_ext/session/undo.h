@@ -18,17 +18,21 @@ template <class State>
 class SnakeUndo
 {
 public:
-    explicit SnakeUndo(size_t byteLimit = size_t(100) << 20) : limit(byteLimit) {}
+    /// At most `byteLimit` bytes of states, and `maxEntries` undo entries.
+    explicit SnakeUndo(size_t byteLimit = size_t(100) << 20, size_t maxEntries = size_t(-1))
+        : limit(byteLimit), maxCount(maxEntries)
+    {
+    }
 
     /// Records `before`, the state a new action is about to change (costing `bytes`), and
-    /// drops the redo branch. The oldest entries go when the history exceeds its limit; the
+    /// drops the redo branch. The oldest entries go when the history exceeds its limits; the
     /// newest entry is always kept, even alone over the limit.
     void Push(State before, size_t bytes, std::string label)
     {
         clear(redo, redoBytes);
         undo.push_back(Entry{std::move(before), bytes, std::move(label)});
         undoBytes += bytes;
-        while (undo.size() > 1 && undoBytes + redoBytes > limit) {
+        while (undo.size() > 1 && (undo.size() > maxCount || undoBytes + redoBytes > limit)) {
             undoBytes -= undo.front().bytes;
             undo.pop_front();
         }
@@ -85,7 +89,7 @@ private:
     };
     std::deque<Entry> undo, redo;
     size_t undoBytes = 0, redoBytes = 0;
-    size_t limit;
+    size_t limit, maxCount;
 
     static void clear(std::deque<Entry> &d, size_t &bytes)
     {
