@@ -166,6 +166,10 @@ inline void Remesh(CMeshO &m, double h, int iterations = 8)
     par.SetFeatureAngleDeg(30);
     par.iter = iterations;
     par.surfDistCheck = false;
+    // vcglib leaves it unset, and ProjectToSurface searches within 1.5x it: a value off the stack
+    // made the remeshed mesh differ from run to run (valgrind: uninitialised, the closest-face
+    // query's distance). The vertices move far less than an edge between projections.
+    par.maxSurfDist = float(h);
     CMeshO target; // what the vertices are projected back onto (with the marks its grid needs)
     vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(target, m);
     gs_test::EnableSnakeAdjacency(target);
