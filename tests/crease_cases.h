@@ -255,7 +255,8 @@ struct Case
 };
 
 /// Seeds `off` h to one side of chain `ci` (left or right of its direction; the first side
-/// where it works), each within (0.5 off h, off h + h/2] of the chain and 1.5x nearer to it than
+/// where it works), each within (0.5 off h, off h + h/2] of the chain, nearest to it within
+/// off h + h (along the chain) of the point it was offset from, and 1.5x nearer to it than
 /// to any other sharp edge. Open: 4 seeds over a share of the chain (drawn closer together
 /// until the rule holds; chains shorter than 12 h are skipped); closed (loops only): 6 seeds
 /// all around. False if no side works.
@@ -299,8 +300,18 @@ inline bool MakeCase(CMeshO &m, const std::vector<Chain> &chains, int ci, double
         const P3 nrm = P3::Construct(m.face[it->second].cN());
         const P3 dir = (nrm ^ (left ? b - a : a - b)).Normalize(); // into that face
         q = project(a + (b - a) * t + dir * (off * h));
-        const double dt = gs_test::DistToPolyline(q, ch.pts, ch.closed);
-        return dt > 0.5 * off * h && dt <= off * h + 0.5 * h && 1.5 * dt <= nearestOther(q);
+        // the chain's point nearest the seed (its arclength sq): the seed must be beside s, not
+        // across a loop narrower than 2 off (inside a small rim, off h inwards passes its centre)
+        double dt = 1e300, sq = 0;
+        for (size_t i = 0; i < segs; ++i) {
+            const P3 u = ch.pts[i], d = ch.pts[(i + 1) % n] - u;
+            const double L2 = d.SquaredNorm(), ti = L2 > 0 ? std::max(0.0, std::min(1.0, ((q - u) * d) / L2)) : 0.0;
+            const double di = (q - (u + d * ti)).Norm();
+            if (di < dt) dt = di, sq = cum[i] + ti * (cum[i + 1] - cum[i]);
+        }
+        double along = std::abs(sq - s);
+        if (ch.closed) along = std::min(along, cum.back() - along);
+        return dt > 0.5 * off * h && dt <= off * h + 0.5 * h && along <= off * h + h && 1.5 * dt <= nearestOther(q);
     };
     for (bool left : {true, false}) {
         std::vector<P3> picks;

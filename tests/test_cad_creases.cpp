@@ -176,6 +176,27 @@ TEST(CadCreases, OpenEndsCrossSliverCapsStraight)
     }
 }
 
+// The cases' seeds are beside the crease point they were offset from. Offset 11 chain edges into
+// the shaft's top cap (its rim r 7 is 10.2 chain edges round), a seed passes the cap's centre and
+// is nearest the far side of the rim: such seeds were once taken (the bearings' small rims at 4 h),
+// the snake then started as a cluster at the centre. The case now takes the other side, down the
+// shaft's wall, where every seed is nearest the rim point above it.
+TEST(CadCreases, CaseSeedsNeverCrossALoop)
+{
+    CMeshO m;
+    std::vector<gs_crease::Chain> ch;
+    const int top = TessShaftTopRim(m, gs_crease::CapStyle::Fan, ch);
+    ASSERT_GE(top, 0);
+    const double e = 2 * M_PI * 10 / 64, h = ch[top].h, topZ = 85 * e;
+    ASSERT_NEAR((10 - 3 * e) / h, 10.2, 0.1);
+    for (bool closed : {true, false}) {
+        SCOPED_TRACE(closed);
+        gs_crease::Case k;
+        ASSERT_TRUE(gs_crease::MakeCase(m, ch, top, 11, closed, k));
+        for (const Point3d &q : k.seeds) EXPECT_LT(q[2], topZ - 5 * h); // on the wall, none on the cap
+    }
+}
+
 // A block whose bore comes 3 edge lengths from its top edge, remeshed to that edge length: the
 // closed snake seeded on the bore's wall ends on the rim, not on the edge 3 h away. The open
 // snake seeded on the front face below the edge covers the edge but is not yet captured (72 %
