@@ -50,6 +50,11 @@ public:
         double bandWidth = 2.5;
         /// Length cost added to the energy (in [0,1]): 1 weighs the loop's length as much as its
         /// depth. 0, 0.2, 1, 3 and 100 (the shortest loop in the band) gave 46, 54, 55, 50 and 44 %.
+        /// With the concavity term and the descent over bands below (session 23): 0, 0.25,
+        /// 0.35, 0.5, 0.7, 1 and 2 gave 138, 146, 147, 149, 147, 143 and 131 of 220 (0.5
+        /// without the descent: 140), but below 1 the loop zigzags through noise: the
+        /// generated waist with 3 % noise ends 0.50 h off at 0.5 and 0.7 (0.5 allowed,
+        /// PartBoundaryLoop.SettlesOnTheWaistFromEitherSide). 1 is kept.
         double lambda = 1.0;
         /// Cost per length of an edge that does not bend the surface inwards (the mesh's own
         /// crease, beside the energy's valley): concavityWeight * (1 - c), c in [0,1] the edge's
