@@ -16,6 +16,8 @@
 // sheets; for each vertex beside the seam, Dijkstra from it on sheet 0 to itself on sheet 1.
 // The band grows from the snake's faces through the mesh's adjacency and reads the energy in
 // place: its cost follows the band, not the mesh (bench_edit_response BM_ValleyLoop).
+// The search is repeated round its own loop while the loop gets cheaper in total and per
+// length (Param::iterations): a descent that reaches a deeper valley beyond the first band.
 
 #include <algorithm>
 #include <cmath>
