@@ -93,6 +93,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-concavity") vlp.concavityWeight = std::stod(next());
         else if (a == "--valley-band") vlp.bandWidth = std::stod(next());
         else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
+        else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
