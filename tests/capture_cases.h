@@ -39,6 +39,7 @@ struct Result
 {
     double capture = 0, coverage = 0, meanDist = 0;
     int operations = 0;
+    int embeddings = 0, reuses = 0; ///< the Run's embeddings built and kept ones reused (Sec. 4.2)
     bool converged = false;
     bool Captured() const { return capture >= 0.9 && coverage >= 0.9; }
 };

@@ -368,6 +368,8 @@ inline gs_capture::Result Run(CMeshO &m, const Case &k, vcg::tri::FeatureEnergyT
     gs_capture::Result r = gs_capture::Measure(s.PolylinePositions(), k.closed, k.c);
     r.converged = conv;
     r.operations = s.Stats().operations;
+    r.embeddings = s.Stats().embeddings;
+    r.reuses = s.Stats().reuses;
     return r;
 }
 

@@ -9,8 +9,10 @@
 //           fandisk (5-7 h off); ground truth: edges above 30 degrees
 // One CSV row per run; a summary per set and energy on stderr.
 //
-//   gs_creases [--sets dense,tess,shared] [--energy normal,crease] [--chains N] [--max-ops N]
-//              [--out FILE.csv]
+//   gs_creases [--sets dense,tess,shared] [--meshes NAME,...] [--energy normal,crease] [--chains N]
+//              [--max-ops N] [--out FILE.csv]
+// (--meshes: only the meshes of those names, e.g. shaft-strip,fandisk). The log and the CSV give the
+// embeddings each run built and the kept ones it reused (Sec. 4.2).
 
 #include <chrono>
 #include <cstdio>
@@ -44,20 +46,21 @@ struct Mesh
 
 int main(int argc, char **argv)
 {
-    std::vector<std::string> sets = {"dense", "tess", "shared"}, energies = {"normal", "crease"};
+    std::vector<std::string> sets = {"dense", "tess", "shared"}, energies = {"normal", "crease"}, only;
     std::string out = "creases.csv";
     int chains = 6, maxOps = 400;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
         if (a == "--sets") sets = List(next());
+        else if (a == "--meshes") only = List(next());
         else if (a == "--energy") energies = List(next());
         else if (a == "--chains") chains = std::stoi(next());
         else if (a == "--max-ops") maxOps = std::stoi(next());
         else if (a == "--out") out = next();
         else {
-            std::fprintf(stderr, "usage: gs_creases [--sets dense,tess,shared] [--energy normal,crease] [--chains N] "
-                                 "[--max-ops N] [--out FILE.csv]\n");
+            std::fprintf(stderr, "usage: gs_creases [--sets dense,tess,shared] [--meshes NAME,...] [--energy normal,crease] "
+                                 "[--chains N] [--max-ops N] [--out FILE.csv]\n");
             return 2;
         }
     }
@@ -94,8 +97,12 @@ int main(int argc, char **argv)
                           }});
     }
 
+    if (!only.empty())
+        meshes.erase(std::remove_if(meshes.begin(), meshes.end(),
+                                    [&](const Mesh &mm) { return std::find(only.begin(), only.end(), mm.name) == only.end(); }),
+                     meshes.end());
     std::ofstream csv(out);
-    csv << "set,mesh,chain,closed,offset,h,energy,capture,coverage,mean_dist_h,operations,converged,captured,ms\n";
+    csv << "set,mesh,chain,closed,offset,h,energy,capture,coverage,mean_dist_h,operations,embeddings,reuses,converged,captured,ms\n";
     struct Tally { int n = 0, ok = 0; };
     std::map<std::pair<std::string, std::string>, Tally> tally;
     const auto t0 = std::chrono::steady_clock::now();
@@ -133,13 +140,15 @@ int main(int argc, char **argv)
                         }
                         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - a).count();
                         csv << mm.set << ',' << mm.name << ',' << ci << ',' << closed << ',' << off << ',' << k.c.h << ',' << e << ','
-                            << r.capture << ',' << r.coverage << ',' << r.meanDist << ',' << r.operations << ',' << r.converged
+                            << r.capture << ',' << r.coverage << ',' << r.meanDist << ',' << r.operations << ',' << r.embeddings << ',' << r.reuses << ',' << r.converged
                             << ',' << r.Captured() << ',' << ms << '\n';
                         Tally &t = tally[{mm.set, e}];
                         ++t.n, t.ok += r.Captured();
-                        std::fprintf(stderr, "  %-7s chain %2d %s off %.0f: capture %5.1f%% coverage %5.1f%% mean %.2f h%s\n",
+                        std::fprintf(stderr,
+                                     "  %-7s chain %2d %s off %.0f: capture %5.1f%% coverage %5.1f%% mean %.2f h"
+                                     " (%d ops, %d embeddings, %d reuses)%s\n",
                                      e.c_str(), ci, closed ? "closed" : "open  ", off, 100 * r.capture, 100 * r.coverage,
-                                     r.meanDist, r.Captured() ? "" : "  MISSED");
+                                     r.meanDist, r.operations, r.embeddings, r.reuses, r.Captured() ? "" : "  MISSED");
                     }
                 }
             used += any;

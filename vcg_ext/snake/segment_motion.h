@@ -325,7 +325,8 @@ private:
             }
             return true;
         };
-        const double margin = std::max(2 * st.params.spacing * unit, 1.5 * longestCrossed(st, seg));
+        const double minMargin = 2 * st.params.spacing * unit;
+        const double margin = std::max(minMargin, 1.5 * longestCrossed(st, seg));
         if (!attempt(margin)) return false;
         // Too distorted where the samples are: grow the region once (a wider band moves the
         // free border, or the virtual boundary, away from them); keep the better of the two.
@@ -344,6 +345,17 @@ private:
             swapAside();
             if (!attempt(2 * margin)) return false;
             if (!(E.distortion <= a.distortion)) swapAside();
+            // Still too distorted, and the margin was set by long edges: slivers spanning a
+            // curved part made the region reach around it (a strip-tessellated CAD cap: its
+            // slivers span the cap, so the margin took the cap and its side walls, a cup,
+            // embedded with distortion 13.5 on the cap's faces), and growing does not help. The
+            // narrowest margin (the sample spacing's) keeps the region near the samples' own
+            // faces, and it is still kept while they stay in it. The cup's embedding, kept, had
+            // served a closed snake there for its whole run, which stayed 0.6-1.6 h off the rim.
+            if (!(E.distortion <= kMaxDistortion) && margin > minMargin) {
+                swapAside();
+                if (!attempt(minMargin) || !(E.distortion < a.distortion)) swapAside();
+            }
         }
         E.jinvT.resize(E.region.RealFaces());
         E.jDone.assign(E.region.RealFaces(), 0);
