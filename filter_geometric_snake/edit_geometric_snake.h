@@ -175,6 +175,7 @@ private:
     // the Run loop (edit_snake_run.cpp)
     void stepOnce();
     void setRunning(bool on);
+    void step(); // one operation; the held sample indices follow the samples it inserted
     bool running() const { return runTimer.isActive(); }
     void runProgress(const char *state);
     // the end of a Run (edit_snake_run_end.cpp)

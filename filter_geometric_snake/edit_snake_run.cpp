@@ -9,10 +9,19 @@
 
 #include "snake_dock.h"
 
+void EditGeometricSnakePlugin::step()
+{
+    ctl->Step();
+    // an open snake that lengthened got samples in its long gaps: the sample being edited or
+    // dragged keeps its place among them
+    currentSample = ctl->FollowSample(currentSample);
+    dragSample = ctl->FollowSample(dragSample);
+}
+
 void EditGeometricSnakePlugin::stepOnce()
 {
     setRunning(false);
-    if (guardedFn("step", [&] { ctl->Step(); lastTimed = QString("step, %1 ms").arg(ctl->LastOperationMs(), 0, 'f', 1);
+    if (guardedFn("step", [&] { step(); lastTimed = QString("step, %1 ms").arg(ctl->LastOperationMs(), 0, 'f', 1);
                                  lastTimedRevision = ctl->Revision(); }))
         afterChange();
 }
@@ -30,7 +39,7 @@ void EditGeometricSnakePlugin::setRunning(bool on)
         sliceMs = 30;
         sliceEnd = -1;
         // a converged snake restarts (e.g. after new parameters, it may move again)
-        if (ctl->SelectedSnake()->Converged() && !guardedFn("run", [&] { ctl->Step(); })) {
+        if (ctl->SelectedSnake()->Converged() && !guardedFn("run", [&] { step(); })) {
             ctl->EndAction();
             on = false;
         } else {
@@ -83,7 +92,7 @@ void EditGeometricSnakePlugin::runTick()
     if (sliceEnd >= 0) sliceMs = std::min(300.0, std::max(30.0, 2.0 * double(start - sliceEnd)));
     bool ok = true;
     do {
-        ok = guardedFn("run", [&] { ctl->Step(); });
+        ok = guardedFn("run", [&] { step(); });
         if (ok) runEnd = runCheck(); // converged, stopped by the engine, or a limit reached
     } while (ok && runEnd == vcg::tri::SnakeStop::Running && runClock.elapsed() - start < sliceMs);
     if (!ok || runEnd != vcg::tri::SnakeStop::Running) {

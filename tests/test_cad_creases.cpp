@@ -218,6 +218,51 @@ TEST(CadCreases, ClosedSnakeOnAStripTessellatedCapCapturesItsRim)
     }
 }
 
+// The top rim of a cap tessellated as a strip (slivers running across the disk), open snakes
+// seeded 2, 3 and 4 chain edges inside it over 252 degrees of the rim: the curve must lengthen
+// 1.4-1.6x to reach the rim. With only the samples it was built with, they spread up to 4
+// spacings apart where the curve cut across the cap, and the spline held that stretch as a
+// chord 3-5 chain edges inside the rim (38-62 % captured, 28-54 % covered). The snake keeps its
+// density now (SnakeGapRefine): its gaps stay within twice its spacing, and the embeddings kept
+// across operations follow the inserted samples instead of being built anew.
+TEST(CadCreases, OpenSnakeLengtheningAcrossAStripCapKeepsItsDensity)
+{
+    CMeshO m;
+    std::vector<gs_crease::Chain> ch;
+    const int top = TessShaftTopRim(m, gs_crease::CapStyle::Strip, ch);
+    ASSERT_GE(top, 0);
+    for (double off : {2.0, 3.0, 4.0}) {
+        SCOPED_TRACE(off);
+        gs_crease::Case k;
+        ASSERT_TRUE(gs_crease::MakeCase(m, ch, top, off, false, k));
+        vcg::tri::SnakeController<CMeshO> ctl(m);
+        ctl.SetEnergySettings(FeatureEnergyType::Crease, 2);
+        ctl.CreateSnakeFromSeedPoints(vcg::tri::SeedPointSnap<CMeshO>::Snap(m, k.seeds, 2, false).points, false);
+        auto &s = ctl.Get(0);
+        const int built = s.SampleCount();
+        int inserting = 0, reusing = 0; // operations that inserted samples, and those of them that reused embeddings
+        for (int op = 0; op < 400 && !s.Converged(); ++op) {
+            const int reuses = s.Stats().reuses;
+            s.Step();
+            if (s.LastInserted().empty()) continue;
+            ++inserting;
+            reusing += s.Stats().reuses > reuses;
+        }
+        const gs_capture::Result r = gs_capture::Measure(s.PolylinePositions(), false, k.c);
+        std::printf("[creases] strip cap, top rim, open, %.0f off: capture %5.1f%% coverage %5.1f%% mean %.3f h, %d "
+                    "operations, %d -> %d samples; %d embeddings built, %d of the %d operations that inserted samples "
+                    "reused them\n",
+                    off, 100 * r.capture, 100 * r.coverage, r.meanDist, s.Stats().operations, built, s.SampleCount(),
+                    s.Stats().embeddings, reusing, inserting);
+        EXPECT_TRUE(r.Captured());
+        EXPECT_GT(inserting, 3);
+        const auto pos = s.positions();
+        for (size_t i = 0; i + 1 < pos.size(); ++i)
+            EXPECT_LE((pos[i + 1] - pos[i]).Norm(), 2.5 * s.Params().spacing * s.LengthScale()) << i;
+        EXPECT_GE(reusing, 0.8 * inserting);
+    }
+}
+
 // A block whose bore comes 3 edge lengths from its top edge, remeshed to that edge length: the
 // closed snake seeded on the bore's wall ends on the rim, not on the edge 3 h away. The open
 // snake seeded on the front face below the edge covers the edge but is not yet captured (72 %

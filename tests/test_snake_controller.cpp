@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include <crease_cases.h>
 #include <snake_test_util.h>
 #include <vcg_ext/cut/cut_session_map.h>
 #include <vcg_ext/cut/mesh_cut.h>
@@ -758,4 +759,121 @@ TEST(SnakeController, PreparingInBackgroundBuildsTheSameSnakeOnASecondThread)
         Controller dropped(m);
         dropped.PrepareInBackground();
     }
+}
+
+namespace {
+
+// The open snake of gs_creases' strip-cap case (tests/crease_cases.h): seeded 4 chain edges
+// inside the top rim of the tessellated stepped shaft, whose cap is a strip of slivers, with
+// the crease energy; it lengthens ~1.6x on its way to the rim, and gets samples as it does.
+int BuildStretchingSnake(Controller &c, CMeshO &m)
+{
+    const int n = 64;
+    const double e = 2 * M_PI * 10 / n;
+    gs_crease::MakeSteppedShaft(m, n, 10, 50 * e, 10 - 3 * e, 35 * e, gs_crease::CapStyle::Strip);
+    gs_test::EnableSnakeAdjacency(m);
+    const std::vector<gs_crease::Chain> ch = gs_crease::SharpChains(m);
+    int top = -1;
+    for (size_t i = 0; i < ch.size(); ++i)
+        if (gs_test::DistToPolyline(vcg::Point3d(10 - 3 * e, 0, 85 * e), ch[i].pts, ch[i].closed) < 0.01) top = int(i);
+    gs_crease::Case k;
+    if (top < 0 || !gs_crease::MakeCase(m, ch, top, 4, false, k)) return -1;
+    c.SetEnergySettings(FeatureEnergyType::Crease, 2);
+    return c.CreateSnakeFromSeedPoints(SeedPointSnap<CMeshO>::Snap(m, k.seeds, 2, false).points, false);
+}
+
+} // namespace
+
+// The edit tool holds sample indices across operations (the sample being edited, the one being
+// dragged), and an operation inserts samples into an open snake that lengthened: the indices
+// follow their samples (FollowSample), so a pin, insert or drag after a Run step hits the sample
+// the user chose. The sample pinned here stays pinned where it was; the old index points to
+// another sample once samples went in before it.
+TEST(SnakeController, HeldSampleIndicesFollowSamplesInsertedByOperations)
+{
+    CMeshO m;
+    Controller c(m);
+    ASSERT_EQ(BuildStretchingSnake(c, m), 0);
+    Controller::Snake &s = c.Get(0);
+    const int n0 = s.SampleCount();
+    int pinned = n0 / 2, last = n0 - 1, none = -1;
+    c.SetFixed(pinned, true);
+    const SurfacePoint pin = s.Samples()[pinned].p;
+    const int pinned0 = pinned;
+    int opsWithInsertions = 0;
+    for (int op = 0; op < 150 && !c.Converged(); ++op) {
+        const std::vector<vcg::Point3d> before = s.positions();
+        c.Step();
+        const std::vector<int> &ins = s.LastInserted();
+        ASSERT_EQ(s.SampleCount(), int(before.size() + ins.size()));
+        opsWithInsertions += !ins.empty();
+        // the samples that were not inserted are the old ones, in order
+        std::vector<int> old;
+        for (int i = 0; i < s.SampleCount(); ++i)
+            if (!std::binary_search(ins.begin(), ins.end(), i)) old.push_back(i);
+        ASSERT_EQ(old.size(), before.size());
+        for (int i = 0; i < int(before.size()); ++i) ASSERT_EQ(c.FollowSample(i), old[i]) << i;
+        for (int k : ins) { // inserted between two old samples, never at an end
+            EXPECT_GT(k, 0);
+            EXPECT_LT(k, s.SampleCount() - 1);
+        }
+        pinned = c.FollowSample(pinned);
+        last = c.FollowSample(last);
+        none = c.FollowSample(none);
+        ASSERT_TRUE(s.Samples()[pinned].fixed) << "operation " << op;
+        EXPECT_EQ(s.Samples()[pinned].p.face, pin.face);
+        EXPECT_EQ(s.Samples()[pinned].p.bary, pin.bary);
+    }
+    EXPECT_GT(opsWithInsertions, 3);
+    EXPECT_GT(pinned, pinned0) << "samples went in before the pinned one";
+    EXPECT_FALSE(s.Samples()[pinned0].fixed) << "its old index is another sample now";
+    EXPECT_EQ(last, s.SampleCount() - 1);
+    EXPECT_EQ(none, -1);
+    // any other change ends what the last operation inserted
+    c.SetFixed(pinned, false);
+    EXPECT_TRUE(s.LastInserted().empty());
+    EXPECT_EQ(c.FollowSample(3), 3);
+}
+
+// The edit tool's wall-time Run (host_edit_gui_tool, part 4): the session restored with an open
+// snake as built (seeded across the cube's front face, 2.2 edge lengths below its top edge),
+// its spacing lowered to the finest 0.05 edge lengths and a convergence window of 300
+// operations, then a Run of 300 operations. The spacing applies when a snake is built: the
+// snake keeps the density it was built with (SnakeGapRefine), instead of growing ~20x, and its
+// kept embeddings serve the Run (an embedding per segment rebuilt at every operation made 24
+// operations in 56 s).
+TEST(SnakeController, LoweringTheSpacingOfABuiltSnakeDoesNotDensifyIt)
+{
+    CMeshO m;
+    ASSERT_TRUE(gs_test::LoadMesh(m, std::string(GS_DATA_DIR) + "/icocube.ply"));
+    gs_test::EnableSnakeAdjacency(m);
+    Controller c(m);
+    const double h = c.MeanEdge();
+    std::vector<vcg::Point3d> clicks;
+    for (double x : {-0.6, -0.2, 0.2, 0.6}) clicks.push_back(vcg::Point3d(x, 1 - 2.2 * h, 1));
+    c.CreateSnakeFromSeedPoints(SeedPointSnap<CMeshO>::Snap(m, clicks, 2, false).points, false);
+    const int built = c.Get(0).SampleCount();
+    nlohmann::json j = c.ToJson();
+    for (auto *p : {&j["params"], &j["snakes"][0]["params"]}) {
+        (*p)["spacing"] = 0.05;
+        (*p)["convergence_window"] = 300;
+    }
+    Controller d(m);
+    d.FromJson(j);
+    ASSERT_EQ(d.Get(0).Params().spacing, 0.05);
+    const Controller::Snake &s = d.Get(0);
+    {
+        Controller::Action run(d, "run"); // as the tool's Run: operations one by one
+        for (int op = 0; op < 300; ++op) {
+            d.Step();
+            ASSERT_LE(s.SampleCount(), 2 * built) << "operation " << op << ", built with " << built;
+        }
+    }
+    std::printf("[spacing] built with %d samples, %d after 300 operations at spacing 0.05; %d embeddings built, %d "
+                "reuses\n", built, s.SampleCount(), s.Stats().embeddings, s.Stats().reuses);
+    EXPECT_EQ(s.Stats().operations, 300);
+    EXPECT_FALSE(s.Converged()); // the window of 300 operations is not full
+    EXPECT_LE(s.Stats().embeddings, 30) << s.Stats().reuses << " reuses";
+    // the snake moved to the edge (it does not sit still because it does not refine)
+    EXPECT_LT(MeanEdgeError(d, 0), 0.5 * h);
 }

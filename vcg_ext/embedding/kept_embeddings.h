@@ -137,6 +137,46 @@ public:
         return int(std::unique(e.begin(), e.end()) - e.begin());
     }
 
+    /// Samples were inserted into an open snake of `before` samples (their indices now,
+    /// ascending: SnakeGapRefine): the embeddings go on serving, filed under their segments
+    /// renumbered, and one whose segment an inserted sample falls into holds it too (it lies on
+    /// the curve between two of its samples; Locate still checks that it is well inside). A region
+    /// without a margin serves only its own samples as they were: it is dropped then. Closed
+    /// snakes drop them all.
+    void SamplesInserted(const std::vector<int> &inserted, int before, bool closed)
+    {
+        if (inserted.empty()) return;
+        if (closed) {
+            Clear();
+            return;
+        }
+        auto follow = [&](int i) {
+            for (int k : inserted)
+                if (k <= i) ++i;
+            return i;
+        };
+        std::map<std::pair<int, int>, std::shared_ptr<Embedding>> next;
+        std::vector<Embedding *> done;
+        for (auto &e : kept) {
+            const int f = follow(e.first.first), l = follow(e.first.first + e.first.second - 1);
+            Embedding *E = e.second.get();
+            if (E && std::find(done.begin(), done.end(), E) == done.end()) {
+                done.push_back(E);
+                if (E->samples == before) {
+                    const int ef = follow(E->first), el = follow(E->first + E->count - 1);
+                    if (el - ef + 1 != E->count && !(E->region.margin > 0)) E->valid = false;
+                    E->first = ef;
+                    E->count = el - ef + 1;
+                    E->samples = before + int(inserted.size());
+                } else {
+                    E->valid = false;
+                }
+            }
+            next[std::make_pair(f, l - f + 1)] = std::move(e.second);
+        }
+        kept.swap(next);
+    }
+
     /// A new operation: embeddings that served neither the last one nor the one before are
     /// dropped (the partition moved on), so that the kept ones stay about one per segment.
     void BeginOperation()

@@ -338,6 +338,15 @@ public:
         return ops;
     }
     bool Converged() { return SelectedSnake() && SelectedSnake()->Converged(); }
+    /// Where sample i of the selected snake before its last operation is now: an operation
+    /// inserts samples into an open snake that lengthened (GeometricSnake::LastInserted), so a
+    /// host that holds a sample index across Steps (the sample being edited or dragged) follows
+    /// it after each one. -1 stays -1.
+    int FollowSample(int i) const
+    {
+        const Snake *s = (selected >= 0 && selected < int(snakes.size())) ? snakes[selected].get() : nullptr;
+        return s ? s->FollowSample(i) : i;
+    }
 
     /// The sample nearest to p (3D), over all snakes (ties: the selected one first).
     bool NearestSample(const vcg::Point3d &p, int &snake, int &sample,

@@ -131,6 +131,9 @@ struct SnakeCurve
     bool closed = false;
     SnakeParams params;
     double unit = 1; ///< the length unit of positions, spacing, step caps and tolerances (local scale)
+    /// The spacing of the samples when the snake was built or restored (length units; 0:
+    /// unknown): an open snake that lengthens keeps that density (SnakeGapRefine).
+    double builtSpacing = 0;
 
     int NumGaps() const
     {

@@ -15,6 +15,7 @@
 #include <vcg_ext/session/history.h>
 #include <vcg_ext/snake/curve.h>
 #include <vcg_ext/snake/error.h>
+#include <vcg_ext/snake/gap_refine.h>
 #include <vcg_ext/snake/partition.h>
 #include <vcg_ext/snake/polyline.h>
 #include <vcg_ext/snake/projection_motion.h>
@@ -108,6 +109,7 @@ public:
         st.closed = closed;
         st.unit = lengthScale;
         st.gaps.assign(numGaps(), Gap());
+        st.builtSpacing = Refine::MedianGap(*surf, st);
         if (initialSamples.empty()) {
             initialSamples = st.samples;
             initialPolyline = Polyline();
@@ -156,13 +158,16 @@ public:
     /// One snake operation (Sec. 4.3, Fig. 1): partition, then for every segment build the
     /// local region, embed it, map samples and energy gradients into the plane, do up to
     /// `updatesPerOperation` updates of Eq. 4 and map back; then the overlapping segments
-    /// across the borders. Returns the largest sample move in local length units (LengthScale()).
+    /// across the borders. An open snake first gets a sample in every gap it stretched past
+    /// twice its spacing (SnakeGapRefine, LastInserted). Returns the largest sample move in
+    /// local length units (LengthScale()).
     double Step()
     {
         if (st.samples.empty()) throw SnakeError("Geometric snake: the snake has no samples.");
         if (!surf->MatchesMesh()) throw SnakeError("Geometric snake: the mesh changed since the snake was created.");
         pushUndo();
         auto t0 = SnakeClock::Now();
+        refine();
         std::vector<vcg::Point3d> before = positions();
         run.Begin(st, before);
         if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
@@ -309,6 +314,7 @@ public:
     bool Undo()
     {
         if (!history.Undo(st)) return false;
+        inserted.clear();
         clearCaches();
         resetRun();
         return true;
@@ -316,6 +322,7 @@ public:
     bool Redo()
     {
         if (!history.Redo(st)) return false;
+        inserted.clear();
         clearCaches();
         resetRun();
         return true;
@@ -344,6 +351,12 @@ public:
     /// The traced gaps; their crossings are the shortest path through their faces only once
     /// Polyline() has been read since the last operation (the motion reads their faces).
     const std::vector<Gap> &Gaps() const { return st.gaps; }
+    /// The samples the last operation inserted (SnakeGapRefine: an open snake that lengthens
+    /// keeps its density), their indices now, ascending; empty after any other change.
+    const std::vector<int> &LastInserted() const { return inserted; }
+    /// Where sample i before the last operation is now (a host holding a sample index, the one
+    /// being dragged or edited, follows it); -1 stays -1.
+    int FollowSample(int i) const { return Refine::Follow(i, inserted); }
 
     /// Closed snakes: per sample, the unit direction on the surface towards the inside of the
     /// loop (the side a negative Balloon deflates it to; a positive one pushes it away from it),
@@ -393,6 +406,7 @@ private:
     typedef SnakeSegment Segment;
     typedef SnakeRunControl<MeshType> RunControl;
     typedef SnakePolyline<MeshType> Line; // the curve between the samples: the gaps
+    typedef SnakeGapRefine<MeshType> Refine;
 
     std::shared_ptr<Surface> surf;
     SnakeSegmentMotion<MeshType> motion;
@@ -405,6 +419,7 @@ private:
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
     RunControl run;
+    std::vector<int> inserted; // by the last operation (LastInserted)
 
 public:
     /// Everything a user sees of the snake (curve, pins, parameters, counters, convergence),
@@ -445,6 +460,7 @@ public:
         seedPoints = m.seedPoints;
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
+        inserted.clear();
         clearCaches();
     }
 
@@ -459,6 +475,7 @@ private:
         st.gaps = std::move(r.gaps);
         st.closed = closed;
         st.unit = r.unit;
+        st.builtSpacing = Refine::MedianGap(*surf, st);
         initialSamples = st.samples;
         initialPolyline = Polyline();
         resetRun();
@@ -471,7 +488,22 @@ private:
                              std::to_string(st.samples.size()) + ").");
     }
     void checkPoint(const SurfacePoint &p) const { Initial::CheckPoint(*surf, p); }
-    void pushUndo() { history.Push(st); }
+    void pushUndo()
+    {
+        history.Push(st);
+        inserted.clear(); // every change ends what the last operation inserted
+    }
+
+    /// Before an operation: an open snake that lengthened gets samples in its long gaps
+    /// (SnakeGapRefine); the kept embeddings and the convergence test follow them.
+    void refine()
+    {
+        const int before = int(st.samples.size());
+        inserted = Refine::Refine(*surf, st);
+        if (inserted.empty()) return;
+        motion.SamplesInserted(inserted, before, st.closed);
+        run.SamplesInserted(inserted);
+    }
 
     SnakeMotionFrame frame() const
     {

@@ -62,11 +62,16 @@ public:
     /// where the polyline is read: the motion does not read the crossings.
     static void Tighten(const Surface &surf, SnakeCurve &c)
     {
-        for (auto &gap : c.gaps)
-            if (gap.traced && gap.tightenPending) {
-                PathTighten<MeshType>::Tighten(surf.Mesh(), gap.tracedFrom, gap.crossings, gap.tracedTo);
-                gap.tightenPending = false;
-            }
+        for (int g = 0; g < int(c.gaps.size()); ++g) TightenGap(surf, c, g);
+    }
+    /// Tighten for gap g only.
+    static void TightenGap(const Surface &surf, SnakeCurve &c, int g)
+    {
+        SnakeGap &gap = c.gaps[g];
+        if (gap.traced && gap.tightenPending) {
+            PathTighten<MeshType>::Tighten(surf.Mesh(), gap.tracedFrom, gap.crossings, gap.tracedTo);
+            gap.tightenPending = false;
+        }
     }
 
     /// Points strictly inside gap i (edge crossings); falls back to the shared-edge
@@ -102,10 +107,10 @@ public:
     }
 
     /// The point halfway along gap g (by length on the polyline), where an inserted sample goes.
-    /// Tightens the traced gaps first.
+    /// Tightens the gap first.
     static SurfacePoint GapMiddle(const Surface &surf, SnakeCurve &c, int g)
     {
-        Tighten(surf, c);
+        TightenGap(surf, c, g);
         std::vector<SurfacePoint> pts = GapPoints(surf, c, g);
         std::vector<vcg::Point3d> xyz = Positions(surf, pts);
         double L = 0;

@@ -75,6 +75,18 @@ public:
         return state.stage < 0 ? top : std::min(state.stage, top);
     }
 
+    /// Samples were inserted between others (their indices now, ascending: SnakeGapRefine): the
+    /// positions kept for the convergence test get them too, halfway between their neighbours
+    /// (on the curve as it was), so that a curve that did not move still compares as unmoved.
+    void SamplesInserted(const std::vector<int> &inserted)
+    {
+        for (auto &p : state.positions)
+            for (int k : inserted)
+                if (k > 0 && k <= int(p.size())) p.insert(p.begin() + k, k < int(p.size()) ? (p[k - 1] + p[k]) / 2 : p[k - 1]);
+        for (int k : inserted)
+            if (k >= 0 && k <= int(wellMiss.size())) wellMiss.insert(wellMiss.begin() + k, 0);
+    }
+
     /// Before an operation, with the samples where they are.
     void Begin(const SnakeCurve &st, const Positions &pos)
     {

@@ -55,6 +55,11 @@ public:
     }
     /// Forget the kept embeddings (samples were edited, inserted or deleted).
     void ForgetEmbeddings() { kept.Clear(); }
+    /// Samples were inserted (SnakeGapRefine): the kept embeddings follow them.
+    void SamplesInserted(const std::vector<int> &inserted, int before, bool closed)
+    {
+        kept.SamplesInserted(inserted, before, closed);
+    }
     /// How many embeddings are kept (one may serve several segments).
     int KeptEmbeddings() const { return kept.Count(); }
     /// A new operation (SnakeKeptEmbeddings::BeginOperation).
