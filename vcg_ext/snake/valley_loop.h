@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -82,6 +84,13 @@ public:
         /// 20 bands 143 (6 loops gained, none lost); accepting by total cost alone 142 (8
         /// gained, 3 lost: bird wing loops slid up the tapering wing, same ground, shorter).
         int iterations = 8;
+        /// Part salience (experiment, 0 = off): exponent g of the protrusion factor
+        /// (L / sqrt(A))^g multiplying a candidate loop's cost per length, A the area of the
+        /// side cut off (the smaller side), candidates moved towards the body.
+        double salience = 0.5;
+        double salienceGrowth = 2.0; // candidates at most this times as long as the loop
+        int salienceSteps = 4;       // candidate levels, 2 length units apart
+        double salienceMargin = 0.95; // a candidate must score below margin x the best so far
     };
 
     /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
@@ -128,6 +137,7 @@ public:
                 break;
             vl = next, cost = c2;
         }
+        if (par.salience > 0) vl = Salient(m, vl, cost, s.GetSurface().Energy(), s.LengthScale(), par, ref);
         s.SetClosedVertexLoop(vl);
         return true;
     }
@@ -287,6 +297,169 @@ public:
             }
         }
         cost = bestCost;
+        return best;
+    }
+
+    /// Descent over bands from an edge loop (as in FinishRun), returning the final loop and cost.
+    template <class EnergyVector>
+    static std::vector<int> Descend(const MeshType &m, std::vector<int> vl, double &cost, const EnergyVector &energy,
+                                   double h, const Param &par, double ref, double minLen)
+    {
+        for (int it = 1; it < par.iterations; ++it) {
+            std::vector<vcg::Point3d> pl;
+            std::vector<int> pf;
+            for (int v : vl) {
+                pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+                const FaceType *f = m.vert[v].cVFp();
+                if (f) pf.push_back(int(f - &m.face[0]));
+            }
+            double c2 = 0, r = ref;
+            const std::vector<int> next = FindAt(m, pl, pf, energy, h, par, r, c2);
+            if (next.size() < 3 || !(c2 < cost * (1 - 1e-9)) || !(LengthOf(m, next) > minLen) ||
+                !(c2 / LengthOf(m, next) < cost / LengthOf(m, vl)))
+                break;
+            vl = next, cost = c2;
+        }
+        return vl;
+    }
+
+    static double LengthOf(const MeshType &m, const std::vector<int> &l)
+    {
+        double len = 0;
+        for (size_t i = 0; i < l.size(); ++i) len += vcg::Distance(m.vert[l[i]].cP(), m.vert[l[(i + 1) % l.size()]].cP());
+        return len;
+    }
+
+    /// Components of the mesh's vertices without the loop's (edge-connected), and their areas.
+    static void Sides(const MeshType &m, const std::vector<std::vector<int>> &nb, const std::vector<int> &loop,
+                      std::vector<int> &comp, std::vector<double> &area)
+    {
+        comp.assign(m.vert.size(), -1);
+        for (int v : loop) comp[v] = -2;
+        int nc = 0;
+        for (size_t s = 0; s < m.vert.size(); ++s) {
+            if (comp[s] != -1 || m.vert[s].IsD()) continue;
+            std::vector<int> st{int(s)};
+            comp[s] = nc;
+            while (!st.empty()) {
+                const int a = st.back();
+                st.pop_back();
+                for (int b : nb[a])
+                    if (comp[b] == -1) comp[b] = nc, st.push_back(b);
+            }
+            ++nc;
+        }
+        area.assign(nc, 0.0);
+        for (const auto &f : m.face) {
+            if (f.IsD()) continue;
+            const double a = vcg::DoubleArea(f) / 2;
+            int c = -1;
+            for (int k = 0; k < 3; ++k) {
+                const int ci = comp[int(f.cV(k) - &m.vert[0])];
+                if (ci >= 0) c = ci;
+            }
+            if (c >= 0) area[c] += a;
+        }
+    }
+
+    /// Part salience (Lee et al. 2005; Hoffman and Singh): among loops round the same part,
+    /// moved towards the body, the one with the least cost per length times (L / sqrt(A))^g.
+    template <class EnergyVector>
+    static std::vector<int> Salient(const MeshType &m, const std::vector<int> &vl0, double cost0,
+                                    const EnergyVector &energy, double h, const Param &par, double ref)
+    {
+        const int n = int(m.vert.size());
+        std::vector<std::vector<int>> nb(n);
+        for (const auto &f : m.face) {
+            if (f.IsD()) continue;
+            for (int k = 0; k < 3; ++k) {
+                const int a = int(f.cV(k) - &m.vert[0]), b = int(f.cV((k + 1) % 3) - &m.vert[0]);
+                nb[a].push_back(b), nb[b].push_back(a);
+            }
+        }
+        std::vector<int> comp;
+        std::vector<double> area;
+        Sides(m, nb, vl0, comp, area);
+        if (area.size() < 2) {
+            if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL no split (%zu sides)\n", area.size());
+            return vl0;
+        }
+        const int body = int(std::max_element(area.begin(), area.end()) - area.begin());
+        double total = 0;
+        for (double a : area) total += a;
+        const double L0 = LengthOf(m, vl0);
+        auto score = [&](double c, double L, double A) { return c / L * std::pow(L / std::sqrt(std::max(A, 1e-30)), par.salience); };
+        const double best0 = score(cost0, L0, total - area[body]);
+        double bestS = best0;
+        std::vector<int> best = vl0;
+        // distance from the loop into the body, along edges
+        const double inf = std::numeric_limits<double>::infinity();
+        std::vector<double> dist(n, inf);
+        typedef std::pair<double, int> QE;
+        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+        for (int v : vl0) dist[v] = 0, q.push({0, v});
+        while (!q.empty()) {
+            const QE e = q.top();
+            q.pop();
+            if (e.first > dist[e.second]) continue;
+            for (int b : nb[e.second]) {
+                if (comp[b] != body) continue;
+                const double c = e.first + vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
+                if (c < dist[b]) dist[b] = c, q.push({c, b});
+            }
+        }
+        int far = -1;
+        for (int v = 0; v < n; ++v)
+            if (comp[v] == body && dist[v] < inf && (far < 0 || dist[v] > dist[far])) far = v;
+        if (far < 0) return vl0;
+        for (int k = 1; k <= par.salienceSteps; ++k) {
+            const double d = k * 2.0 * h;
+            std::vector<vcg::Point3d> pl;
+            std::vector<int> pf;
+            int last = -1;
+            for (int v : vl0) {
+                int cur = v;
+                while (dist[cur] < d) {
+                    int nx = -1;
+                    for (int b : nb[cur])
+                        if (comp[b] == body && dist[b] > dist[cur] && (nx < 0 || dist[b] > dist[nx])) nx = b;
+                    if (nx < 0) break;
+                    cur = nx;
+                }
+                if (cur == last) continue;
+                last = cur;
+                pl.push_back(vcg::Point3d::Construct(m.vert[cur].cP()));
+                const FaceType *f = m.vert[cur].cVFp();
+                if (f) pf.push_back(int(f - &m.face[0]));
+            }
+            if (pl.size() < 3) break;
+            double pL = 0;
+            for (size_t i = 0; i < pl.size(); ++i) pL += vcg::Distance(pl[i], pl[(i + 1) % pl.size()]);
+            if (pL > 1.5 * par.salienceGrowth * L0) {
+                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d guide %.1fh too long\n", k, pL / h);
+                break;
+            }
+            double c = 0, r = ref;
+            std::vector<int> cand = FindAt(m, pl, pf, energy, h, par, r, c);
+            if (cand.size() < 3) continue;
+            cand = Descend(m, cand, c, energy, h, par, ref, 0.5 * L0);
+            const double L = LengthOf(m, cand);
+            if (!(L > 0.5 * L0) || L > par.salienceGrowth * L0) {
+                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d L=%.1fh out of range\n", k, L / h);
+                continue;
+            }
+            std::vector<int> cc;
+            std::vector<double> ca;
+            Sides(m, nb, cand, cc, ca);
+            if (ca.size() < 2 || cc[far] < 0) continue;
+            const double A = total - ca[cc[far]];
+            if (!(A < 0.5 * total)) continue;
+            const double sc = score(c, L, A);
+            if (std::getenv("GS_SALIENCE"))
+                std::fprintf(stderr, "SAL k=%d L=%.1fh A=%.3f perlen=%.3f score=%.3f (loop: L=%.1fh A=%.3f perlen=%.3f score=%.3f)\n", k,
+                             L / h, A / total, c / L, sc, L0 / h, (total - area[body]) / total, cost0 / L0, best0);
+            if (sc < par.salienceMargin * bestS) bestS = sc, best = cand;
+        }
         return best;
     }
 
