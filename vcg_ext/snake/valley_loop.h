@@ -443,6 +443,15 @@ public:
             std::vector<int> cand = FindAt(m, pl, pf, energy, h, par, r, c);
             if (cand.size() < 3) continue;
             cand = Descend(m, cand, c, energy, h, par, ref, 0.5 * L0);
+            // only loops beyond the band the descent searched (within it, the descent's choice
+            // by total cost stands): their median distance from the loop
+            std::vector<double> dc;
+            for (int v : cand) dc.push_back(comp[v] == body ? dist[v] : 0.0);
+            std::nth_element(dc.begin(), dc.begin() + dc.size() / 2, dc.end());
+            if (!(dc[dc.size() / 2] > par.bandWidth * h)) {
+                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d within the band (%.1fh)\n", k, dc[dc.size() / 2] / h);
+                continue;
+            }
             const double L = LengthOf(m, cand);
             if (!(L > 0.5 * L0) || L > par.salienceGrowth * L0) {
                 if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d L=%.1fh out of range\n", k, L / h);
