@@ -388,6 +388,9 @@ public:
         double total = 0;
         for (double a : area) total += a;
         const double L0 = LengthOf(m, vl0);
+        std::vector<vcg::Point3d> pl0;
+        for (int v : vl0) pl0.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+        const LoopIndex li0(pl0, par.bandWidth * h);
         auto score = [&](double c, double L, double A) { return c / L * std::pow(L / std::sqrt(std::max(A, 1e-30)), par.salience); };
         const double best0 = score(cost0, L0, total - area[body]);
         double bestS = best0;
@@ -444,12 +447,14 @@ public:
             if (cand.size() < 3) continue;
             cand = Descend(m, cand, c, energy, h, par, ref, 0.5 * L0);
             // only loops beyond the band the descent searched (within it, the descent's choice
-            // by total cost stands): their median distance from the loop
-            std::vector<double> dc;
-            for (int v : cand) dc.push_back(comp[v] == body ? dist[v] : 0.0);
-            std::nth_element(dc.begin(), dc.begin() + dc.size() / 2, dc.end());
-            if (!(dc[dc.size() / 2] > par.bandWidth * h)) {
-                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d within the band (%.1fh)\n", k, dc[dc.size() / 2] / h);
+            // by total cost stands): most of the candidate's vertices outside that band
+            int inBand = 0;
+            for (int v : cand) {
+                double at = -1;
+                inBand += li0.Dist(vcg::Point3d::Construct(m.vert[v].cP()), at) <= li0.w;
+            }
+            if (2 * inBand >= int(cand.size())) {
+                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d within the band (%d of %zu)\n", k, inBand, cand.size());
                 continue;
             }
             const double L = LengthOf(m, cand);
