@@ -91,6 +91,7 @@ public:
         double salienceGrowth = 2.0; // candidates at most this times as long as the loop
         int salienceSteps = 4;       // candidate levels, 2 length units apart
         double salienceMargin = 0.95; // a candidate must score below margin x the best so far
+        double salientPart = 1.0 / 3; // the part's side at most this share of the mesh's area
     };
 
     /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
@@ -387,6 +388,8 @@ public:
         const int body = int(std::max_element(area.begin(), area.end()) - area.begin());
         double total = 0;
         for (double a : area) total += a;
+        // salience is a protruding part's: a loop that halves the mesh (a waist) cuts off none
+        if (!(total - area[body] < par.salientPart * total)) return vl0;
         const double L0 = LengthOf(m, vl0);
         std::vector<vcg::Point3d> pl0;
         for (int v : vl0) pl0.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
@@ -467,7 +470,7 @@ public:
             Sides(m, nb, cand, cc, ca);
             if (ca.size() < 2 || cc[far] < 0) continue;
             const double A = total - ca[cc[far]];
-            if (!(A < 0.5 * total)) continue;
+            if (!(A < par.salientPart * total)) continue;
             const double sc = score(c, L, A);
             if (std::getenv("GS_SALIENCE"))
                 std::fprintf(stderr, "SAL k=%d L=%.1fh A=%.3f perlen=%.3f score=%.3f (loop: L=%.1fh A=%.3f perlen=%.3f score=%.3f)\n", k,
