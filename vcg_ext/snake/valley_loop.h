@@ -21,8 +21,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -32,6 +30,7 @@
 #include <vcg/complex/complex.h>
 
 #include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/snake/part_salience.h>
 #include <vcg_ext/snake/stop.h>
 
 namespace vcg {
@@ -84,24 +83,8 @@ public:
         /// 20 bands 143 (6 loops gained, none lost); accepting by total cost alone 142 (8
         /// gained, 3 lost: bird wing loops slid up the tapering wing, same ground, shorter).
         int iterations = 8;
-        /// Part salience (Lee et al. 2005; Hoffman and Singh), 0 = off: after the descent, loops
-        /// round the same part moved towards the body (the larger side) in steps of 2 length
-        /// units (salienceSteps), each found and descended as above, compete with the loop by
-        /// cost per length x (L / sqrt(A))^salience, A the area of the part's side: a limb cut
-        /// where it joins the body is short for the part it cuts off. A candidate must score
-        /// below salienceMargin x the best so far, lie mostly beyond the band the descent
-        /// searched, be at most salienceGrowth x as long, and the part's side at most
-        /// salientPart of the mesh (a waist that halves it cuts off no part). On
-        /// bench/eval/gs_parts (--energy part --rings 2,3): 143/220 -> 154/220 (11 gained, none
-        /// lost); before the band and part conditions, margin 0.95, 4 steps: exponent ~0 (cost
-        /// per length alone) 151 (5 lost), 0.25 154 (1 lost), 0.5 156, 1 155 (none lost); 2 (8
-        /// steps) 149 (4 lost); 0.5 with 2, 3, 4, 6 steps 156, with 8 155 (armadillo 281 part 3
-        /// lost to a deeper, more salient valley 16 h away); margin 1 (8 steps) 155 (4 lost).
-        double salience = 0.5;
-        double salienceGrowth = 2.0;
-        int salienceSteps = 4;
-        double salienceMargin = 0.95;
-        double salientPart = 1.0 / 3;
+        /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
+        typename PartSalience<MeshType>::Param salience;
     };
 
     /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
@@ -118,37 +101,33 @@ public:
         std::vector<int> faces;
         for (const auto &x : s.Samples()) faces.push_back(x.p.face);
         const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
+        const auto &energy = s.GetSurface().Energy();
+        const double h = s.LengthScale();
         double ref = -1, cost = 0;
-        std::vector<int> vl = FindAt(m, loop, faces, s.GetSurface().Energy(), s.LengthScale(), par, ref, cost);
+        std::vector<int> vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
         double len0 = 0;
         for (size_t i = 0; i < loop.size(); ++i) len0 += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
-        auto lengthOf = [&](const std::vector<int> &l) {
-            double len = 0;
-            for (size_t i = 0; i < l.size(); ++i) len += vcg::Distance(m.vert[l[i]].cP(), m.vert[l[(i + 1) % l.size()]].cP());
-            return len;
-        };
-        if (vl.size() < 3 || !(lengthOf(vl) > 0.5 * len0)) return false;
-        // descent in loop space: the band round the edge loop holds it, so with the same cost
-        // (the first band's concavity reference) each step's cheapest loop is no dearer
-        for (int it = 1; it < par.iterations; ++it) {
+        if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return false;
+        vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
+        if (par.salience.exponent > 0) {
+            // candidates round the same part, each found and descended like this loop, but only
+            // those mostly beyond the band the descent searched: within it its choice stands
             std::vector<vcg::Point3d> pl;
-            std::vector<int> pf;
-            for (int v : vl) {
-                pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-                const FaceType *f = m.vert[v].cVFp();
-                if (f) pf.push_back(int(f - &m.face[0]));
-            }
-            double c2 = 0;
-            const std::vector<int> next = FindAt(m, pl, pf, s.GetSurface().Energy(), s.LengthScale(), par, ref, c2);
-            // a step must make the loop cheaper per length too (deeper, more concave): by its
-            // total cost alone a loop on a part that tapers slides to a shorter ring of the same
-            // ground, off the valley at the part's base
-            if (next.size() < 3 || !(c2 < cost * (1 - 1e-9)) || !(lengthOf(next) > 0.5 * len0) ||
-                !(c2 / lengthOf(next) < cost / lengthOf(vl)))
-                break;
-            vl = next, cost = c2;
+            for (int v : vl) pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+            const LoopIndex band(pl, par.bandWidth * h);
+            const double minLen = 0.5 * LengthOf(m, vl);
+            auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c) {
+                double r = ref;
+                std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, par, r, c);
+                if (cand.size() >= 3) cand = Descend(m, cand, c, energy, h, par, ref, minLen);
+                return cand;
+            };
+            auto inBand = [&](const vcg::Point3d &p) {
+                double at = -1;
+                return band.Dist(p, at) <= band.w;
+            };
+            vl = PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);
         }
-        if (par.salience > 0) vl = Salient(m, vl, cost, s.GetSurface().Energy(), s.LengthScale(), par, ref);
         s.SetClosedVertexLoop(vl);
         return true;
     }
@@ -311,7 +290,9 @@ public:
         return best;
     }
 
-    /// Descent over bands from an edge loop (as in FinishRun), returning the final loop and cost.
+    /// The descent over bands (Param::iterations) from edge loop vl, its cost updated: the band
+    /// round an edge loop holds it, so with the same concavity reference `ref` each step's
+    /// cheapest loop is no dearer. Loops no longer than minLen end it.
     template <class EnergyVector>
     static std::vector<int> Descend(const MeshType &m, std::vector<int> vl, double &cost, const EnergyVector &energy,
                                    double h, const Param &par, double ref, double minLen)
@@ -326,6 +307,9 @@ public:
             }
             double c2 = 0, r = ref;
             const std::vector<int> next = FindAt(m, pl, pf, energy, h, par, r, c2);
+            // a step must make the loop cheaper per length too (deeper, more concave): by its
+            // total cost alone a loop on a part that tapers slides to a shorter ring of the same
+            // ground, off the valley at the part's base
             if (next.size() < 3 || !(c2 < cost * (1 - 1e-9)) || !(LengthOf(m, next) > minLen) ||
                 !(c2 / LengthOf(m, next) < cost / LengthOf(m, vl)))
                 break;
@@ -334,161 +318,7 @@ public:
         return vl;
     }
 
-    static double LengthOf(const MeshType &m, const std::vector<int> &l)
-    {
-        double len = 0;
-        for (size_t i = 0; i < l.size(); ++i) len += vcg::Distance(m.vert[l[i]].cP(), m.vert[l[(i + 1) % l.size()]].cP());
-        return len;
-    }
-
-    /// Components of the mesh's vertices without the loop's (edge-connected), and their areas.
-    static void Sides(const MeshType &m, const std::vector<std::vector<int>> &nb, const std::vector<int> &loop,
-                      std::vector<int> &comp, std::vector<double> &area)
-    {
-        comp.assign(m.vert.size(), -1);
-        for (int v : loop) comp[v] = -2;
-        int nc = 0;
-        for (size_t s = 0; s < m.vert.size(); ++s) {
-            if (comp[s] != -1 || m.vert[s].IsD()) continue;
-            std::vector<int> st{int(s)};
-            comp[s] = nc;
-            while (!st.empty()) {
-                const int a = st.back();
-                st.pop_back();
-                for (int b : nb[a])
-                    if (comp[b] == -1) comp[b] = nc, st.push_back(b);
-            }
-            ++nc;
-        }
-        area.assign(nc, 0.0);
-        for (const auto &f : m.face) {
-            if (f.IsD()) continue;
-            const double a = vcg::DoubleArea(f) / 2;
-            int c = -1;
-            for (int k = 0; k < 3; ++k) {
-                const int ci = comp[int(f.cV(k) - &m.vert[0])];
-                if (ci >= 0) c = ci;
-            }
-            if (c >= 0) area[c] += a;
-        }
-    }
-
-    /// Part salience (Lee et al. 2005; Hoffman and Singh): among loops round the same part,
-    /// moved towards the body, the one with the least cost per length times (L / sqrt(A))^g.
-    template <class EnergyVector>
-    static std::vector<int> Salient(const MeshType &m, const std::vector<int> &vl0, double cost0,
-                                    const EnergyVector &energy, double h, const Param &par, double ref)
-    {
-        const int n = int(m.vert.size());
-        std::vector<std::vector<int>> nb(n);
-        for (const auto &f : m.face) {
-            if (f.IsD()) continue;
-            for (int k = 0; k < 3; ++k) {
-                const int a = int(f.cV(k) - &m.vert[0]), b = int(f.cV((k + 1) % 3) - &m.vert[0]);
-                nb[a].push_back(b), nb[b].push_back(a);
-            }
-        }
-        std::vector<int> comp;
-        std::vector<double> area;
-        Sides(m, nb, vl0, comp, area);
-        if (area.size() < 2) {
-            if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL no split (%zu sides)\n", area.size());
-            return vl0;
-        }
-        const int body = int(std::max_element(area.begin(), area.end()) - area.begin());
-        double total = 0;
-        for (double a : area) total += a;
-        // salience is a protruding part's: a loop that halves the mesh (a waist) cuts off none
-        if (!(total - area[body] < par.salientPart * total)) return vl0;
-        const double L0 = LengthOf(m, vl0);
-        std::vector<vcg::Point3d> pl0;
-        for (int v : vl0) pl0.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-        const LoopIndex li0(pl0, par.bandWidth * h);
-        auto score = [&](double c, double L, double A) { return c / L * std::pow(L / std::sqrt(std::max(A, 1e-30)), par.salience); };
-        const double best0 = score(cost0, L0, total - area[body]);
-        double bestS = best0;
-        std::vector<int> best = vl0;
-        // distance from the loop into the body, along edges
-        const double inf = std::numeric_limits<double>::infinity();
-        std::vector<double> dist(n, inf);
-        typedef std::pair<double, int> QE;
-        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
-        for (int v : vl0) dist[v] = 0, q.push({0, v});
-        while (!q.empty()) {
-            const QE e = q.top();
-            q.pop();
-            if (e.first > dist[e.second]) continue;
-            for (int b : nb[e.second]) {
-                if (comp[b] != body) continue;
-                const double c = e.first + vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
-                if (c < dist[b]) dist[b] = c, q.push({c, b});
-            }
-        }
-        int far = -1;
-        for (int v = 0; v < n; ++v)
-            if (comp[v] == body && dist[v] < inf && (far < 0 || dist[v] > dist[far])) far = v;
-        if (far < 0) return vl0;
-        for (int k = 1; k <= par.salienceSteps; ++k) {
-            const double d = k * 2.0 * h;
-            std::vector<vcg::Point3d> pl;
-            std::vector<int> pf;
-            int last = -1;
-            for (int v : vl0) {
-                int cur = v;
-                while (dist[cur] < d) {
-                    int nx = -1;
-                    for (int b : nb[cur])
-                        if (comp[b] == body && dist[b] > dist[cur] && (nx < 0 || dist[b] > dist[nx])) nx = b;
-                    if (nx < 0) break;
-                    cur = nx;
-                }
-                if (cur == last) continue;
-                last = cur;
-                pl.push_back(vcg::Point3d::Construct(m.vert[cur].cP()));
-                const FaceType *f = m.vert[cur].cVFp();
-                if (f) pf.push_back(int(f - &m.face[0]));
-            }
-            if (pl.size() < 3) break;
-            double pL = 0;
-            for (size_t i = 0; i < pl.size(); ++i) pL += vcg::Distance(pl[i], pl[(i + 1) % pl.size()]);
-            if (pL > 1.5 * par.salienceGrowth * L0) {
-                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d guide %.1fh too long\n", k, pL / h);
-                break;
-            }
-            double c = 0, r = ref;
-            std::vector<int> cand = FindAt(m, pl, pf, energy, h, par, r, c);
-            if (cand.size() < 3) continue;
-            cand = Descend(m, cand, c, energy, h, par, ref, 0.5 * L0);
-            // only loops beyond the band the descent searched (within it, the descent's choice
-            // by total cost stands): most of the candidate's vertices outside that band
-            int inBand = 0;
-            for (int v : cand) {
-                double at = -1;
-                inBand += li0.Dist(vcg::Point3d::Construct(m.vert[v].cP()), at) <= li0.w;
-            }
-            if (2 * inBand >= int(cand.size())) {
-                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d within the band (%d of %zu)\n", k, inBand, cand.size());
-                continue;
-            }
-            const double L = LengthOf(m, cand);
-            if (!(L > 0.5 * L0) || L > par.salienceGrowth * L0) {
-                if (std::getenv("GS_SALIENCE")) std::fprintf(stderr, "SAL k=%d L=%.1fh out of range\n", k, L / h);
-                continue;
-            }
-            std::vector<int> cc;
-            std::vector<double> ca;
-            Sides(m, nb, cand, cc, ca);
-            if (ca.size() < 2 || cc[far] < 0) continue;
-            const double A = total - ca[cc[far]];
-            if (!(A < par.salientPart * total)) continue;
-            const double sc = score(c, L, A);
-            if (std::getenv("GS_SALIENCE"))
-                std::fprintf(stderr, "SAL k=%d L=%.1fh A=%.3f perlen=%.3f score=%.3f (loop: L=%.1fh A=%.3f perlen=%.3f score=%.3f)\n", k,
-                             L / h, A / total, c / L, sc, L0 / h, (total - area[body]) / total, cost0 / L0, best0);
-            if (sc < par.salienceMargin * bestS) bestS = sc, best = cand;
-        }
-        return best;
-    }
+    static double LengthOf(const MeshType &m, const std::vector<int> &l) { return PartSalience<MeshType>::Length(m, l); }
 
 private:
     /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
