@@ -94,6 +94,10 @@ int main(int argc, char **argv)
         else if (a == "--valley-band") vlp.bandWidth = std::stod(next());
         else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
         else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
+        else if (a == "--salience") vlp.salience.exponent = std::stod(next());
+        else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
+        else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
+        else if (a == "--salience-margin") vlp.salience.margin = std::stod(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());

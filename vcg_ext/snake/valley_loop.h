@@ -30,6 +30,7 @@
 #include <vcg/complex/complex.h>
 
 #include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/snake/part_salience.h>
 #include <vcg_ext/snake/stop.h>
 
 namespace vcg {
@@ -82,6 +83,8 @@ public:
         /// 20 bands 143 (6 loops gained, none lost); accepting by total cost alone 142 (8
         /// gained, 3 lost: bird wing loops slid up the tapering wing, same ground, shorter).
         int iterations = 8;
+        /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
+        typename PartSalience<MeshType>::Param salience;
     };
 
     /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
@@ -98,35 +101,32 @@ public:
         std::vector<int> faces;
         for (const auto &x : s.Samples()) faces.push_back(x.p.face);
         const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
+        const auto &energy = s.GetSurface().Energy();
+        const double h = s.LengthScale();
         double ref = -1, cost = 0;
-        std::vector<int> vl = FindAt(m, loop, faces, s.GetSurface().Energy(), s.LengthScale(), par, ref, cost);
+        std::vector<int> vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
         double len0 = 0;
         for (size_t i = 0; i < loop.size(); ++i) len0 += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
-        auto lengthOf = [&](const std::vector<int> &l) {
-            double len = 0;
-            for (size_t i = 0; i < l.size(); ++i) len += vcg::Distance(m.vert[l[i]].cP(), m.vert[l[(i + 1) % l.size()]].cP());
-            return len;
-        };
-        if (vl.size() < 3 || !(lengthOf(vl) > 0.5 * len0)) return false;
-        // descent in loop space: the band round the edge loop holds it, so with the same cost
-        // (the first band's concavity reference) each step's cheapest loop is no dearer
-        for (int it = 1; it < par.iterations; ++it) {
+        if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return false;
+        vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
+        if (par.salience.exponent > 0) {
+            // candidates round the same part, each found and descended like this loop, but only
+            // those mostly beyond the band the descent searched: within it its choice stands
             std::vector<vcg::Point3d> pl;
-            std::vector<int> pf;
-            for (int v : vl) {
-                pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-                const FaceType *f = m.vert[v].cVFp();
-                if (f) pf.push_back(int(f - &m.face[0]));
-            }
-            double c2 = 0;
-            const std::vector<int> next = FindAt(m, pl, pf, s.GetSurface().Energy(), s.LengthScale(), par, ref, c2);
-            // a step must make the loop cheaper per length too (deeper, more concave): by its
-            // total cost alone a loop on a part that tapers slides to a shorter ring of the same
-            // ground, off the valley at the part's base
-            if (next.size() < 3 || !(c2 < cost * (1 - 1e-9)) || !(lengthOf(next) > 0.5 * len0) ||
-                !(c2 / lengthOf(next) < cost / lengthOf(vl)))
-                break;
-            vl = next, cost = c2;
+            for (int v : vl) pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+            const LoopIndex band(pl, par.bandWidth * h);
+            const double minLen = 0.5 * LengthOf(m, vl);
+            auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c) {
+                double r = ref;
+                std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, par, r, c);
+                if (cand.size() >= 3) cand = Descend(m, cand, c, energy, h, par, ref, minLen);
+                return cand;
+            };
+            auto inBand = [&](const vcg::Point3d &p) {
+                double at = -1;
+                return band.Dist(p, at) <= band.w;
+            };
+            vl = PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);
         }
         s.SetClosedVertexLoop(vl);
         return true;
@@ -289,6 +289,36 @@ public:
         cost = bestCost;
         return best;
     }
+
+    /// The descent over bands (Param::iterations) from edge loop vl, its cost updated: the band
+    /// round an edge loop holds it, so with the same concavity reference `ref` each step's
+    /// cheapest loop is no dearer. Loops no longer than minLen end it.
+    template <class EnergyVector>
+    static std::vector<int> Descend(const MeshType &m, std::vector<int> vl, double &cost, const EnergyVector &energy,
+                                   double h, const Param &par, double ref, double minLen)
+    {
+        for (int it = 1; it < par.iterations; ++it) {
+            std::vector<vcg::Point3d> pl;
+            std::vector<int> pf;
+            for (int v : vl) {
+                pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+                const FaceType *f = m.vert[v].cVFp();
+                if (f) pf.push_back(int(f - &m.face[0]));
+            }
+            double c2 = 0, r = ref;
+            const std::vector<int> next = FindAt(m, pl, pf, energy, h, par, r, c2);
+            // a step must make the loop cheaper per length too (deeper, more concave): by its
+            // total cost alone a loop on a part that tapers slides to a shorter ring of the same
+            // ground, off the valley at the part's base
+            if (next.size() < 3 || !(c2 < cost * (1 - 1e-9)) || !(LengthOf(m, next) > minLen) ||
+                !(c2 / LengthOf(m, next) < cost / LengthOf(m, vl)))
+                break;
+            vl = next, cost = c2;
+        }
+        return vl;
+    }
+
+    static double LengthOf(const MeshType &m, const std::vector<int> &l) { return PartSalience<MeshType>::Length(m, l); }
 
 private:
     /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
