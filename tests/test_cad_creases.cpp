@@ -220,11 +220,12 @@ TEST(CadCreases, ClosedSnakeOnAStripTessellatedCapCapturesItsRim)
 
 // The top rim of a cap tessellated as a strip (slivers running across the disk), open snakes
 // seeded 2, 3 and 4 chain edges inside it over 252 degrees of the rim: the curve must lengthen
-// 1.4-1.6x to reach the rim. With only the samples it was built with, they spread up to 4
-// spacings apart where the curve cut across the cap, and the spline held that stretch as a
-// chord 3-5 chain edges inside the rim (38-62 % captured, 28-54 % covered). The snake keeps its
-// density now (SnakeGapRefine): its gaps stay within twice its spacing, and the embeddings kept
-// across operations follow the inserted samples instead of being built anew.
+// 1.4-1.6x to reach the rim. With only the samples it was built with (and the cup-shaped
+// region of the closed case below), they spread up to 4 spacings apart where the curve cut
+// across the cap, and the spline held that stretch as a chord 3-5 chain edges inside the rim
+// (38-62 % captured, 28-54 % covered). The snake keeps its density now (SnakeGapRefine): its
+// gaps stay within 2.5 spacings, and the embeddings kept across operations follow the inserted
+// samples instead of being built anew (both fail without it).
 TEST(CadCreases, OpenSnakeLengtheningAcrossAStripCapKeepsItsDensity)
 {
     CMeshO m;
