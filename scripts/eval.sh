@@ -52,7 +52,7 @@ if [[ $CREASES_ONLY == 1 ]]; then
   "$BUILD_DIR/bench/eval/gs_creases" --out "$OUT/creases.csv" 2> "$OUT/creases.log"
   grep -E "captured|done" "$OUT/creases.log"
   BEFORE=""
-  for b in creases_before_slivers.csv creases_before_ends.csv creases_before.csv; do [ -f "$OUT/$b" ] && BEFORE="$BEFORE $OUT/$b"; done
+  for b in creases_before_s23.csv creases_before_slivers.csv creases_before_ends.csv creases_before.csv; do [ -f "$OUT/$b" ] && BEFORE="$BEFORE $OUT/$b"; done
   python3 "$ROOT/bench/eval/creases_report.py" "$OUT/creases.csv" $BEFORE > "$OUT/creases.md"
   echo "== done in $(( $(date +%s) - T0 )) s: $OUT/creases.md"
   exit 0

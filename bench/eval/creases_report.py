@@ -25,7 +25,11 @@ def tally(rows, key):
 
 def cell(t, k):
     n, ok = t.get(k, (0, 0))
-    return f"{100.0 * ok / n:.0f} % ({ok}/{n})" if n else "-"
+    if not n:
+        return "-"
+    pct = 100.0 * ok / n
+    # never "100 %" for a set with a miss (225/226 is 99.6 %)
+    return f"{pct:.1f} % ({ok}/{n})" if ok < n and round(pct) == 100 else f"{pct:.0f} % ({ok}/{n})"
 
 
 def label(path):
