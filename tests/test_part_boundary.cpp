@@ -610,3 +610,43 @@ TEST(ValleyLoop, FollowsTheConcaveCreaseInAFlatValley)
     ASSERT_GE(shortest.size(), 100u);
     EXPECT_GT(farthest(shortest), 0.9); // the mechanism: length alone leaves the crease
 }
+
+// The sides of a loop are flooded only as far as the part it cuts off: a cap of 3.5 % of a
+// sphere (z > 0.93, a band of loop vertices 0.90 < z <= 0.93 round it) is measured exactly,
+// and the flood stops once the rest has been seen to be the body (maxPart 1/3: twice the cap's
+// area), far short of the sphere's 40962 vertices. Flooding every side to its end (the cost of
+// the whole mesh, what part salience did before) would visit them all.
+TEST(PartSalience, SidesFloodOnlyAsFarAsThePart)
+{
+    CMeshO m;
+    gs_test::MakeIcosphere(m, 6);
+    m.vert.EnableVFAdjacency();
+    m.face.EnableVFAdjacency();
+    UpdateTopology<CMeshO>::VertexFace(m);
+    std::vector<int> loop;
+    auto z = [&](int v) { return double(m.vert[v].cP()[2]); };
+    for (int v = 0; v < int(m.vert.size()); ++v)
+        if (z(v) > 0.90 && z(v) <= 0.93) loop.push_back(v);
+    double cap = 0; // faces with a vertex above the loop
+    size_t capVerts = 0;
+    for (int v = 0; v < int(m.vert.size()); ++v) capVerts += z(v) > 0.93;
+    for (const auto &f : m.face) {
+        bool above = false;
+        for (int k = 0; k < 3; ++k) above = above || z(int(f.cV(k) - &m.vert[0])) > 0.93;
+        if (above) cap += vcg::DoubleArea(f) / 2;
+    }
+    PartSalience<CMeshO>::Sides s(m, loop);
+    // as Choose stops: one side left growing, at least twice the ended one's area
+    auto bodyKnown = [&] {
+        return s.growing == 1 && s.ended.size() == 1 && s.area[s.GrowingSide()] > 2 * s.area[s.ended[0]];
+    };
+    while (!bodyKnown() && s.Step()) {}
+    ASSERT_TRUE(bodyKnown());
+    EXPECT_NEAR(s.area[s.ended[0]], cap, 1e-9 * cap);
+    EXPECT_NEAR(cap / (4 * M_PI), 0.035, 0.003);
+    EXPECT_LT(s.visited, 6 * capVerts);
+    EXPECT_LT(s.visited, m.vert.size() / 4);
+    while (s.Step()) {}
+    EXPECT_EQ(s.visited, m.vert.size() - loop.size());
+    EXPECT_EQ(s.ended.size(), 2u);
+}

@@ -12,12 +12,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 #include <vector>
 
 #include <vcg/complex/complex.h>
+
+#include "error.h"
 
 namespace vcg {
 namespace tri {
@@ -50,58 +54,176 @@ public:
         double maxPart = 1.0 / 3;
     };
 
+    /// The sides of a loop of vertex indices: the mesh's vertices without the loop's, joined by
+    /// edges, each with the area of its faces (a face goes to the side of its vertices off the
+    /// loop). Every side is flooded from the loop breadth first, all in turn, so the side with
+    /// fewer vertices ends first and Step() can stop there: the cost follows the part the loop
+    /// cuts off, not the mesh. Walks the VF adjacency, which must be current. Pieces of the mesh
+    /// the loop does not touch are no side.
+    class Sides
+    {
+    public:
+        Sides(const MeshType &m, const std::vector<int> &loop) : m(m)
+        {
+            for (int v : loop) label[v] = -1;
+            // each vertex beside the loop starts a flood of its own; floods that meet join
+            for (int v : loop)
+                ForFaces(m, v, [&](const FaceType *f, int z) {
+                    for (int k = 1; k < 3; ++k) {
+                        const int u = index(m, f->cV((z + k) % 3));
+                        if (label.count(u)) continue;
+                        label[u] = int(up.size());
+                        up.push_back(int(up.size())), pending.push_back(1), area.push_back(0.0), last.push_back(u);
+                        queue.push_back(u), ++growing;
+                    }
+                });
+        }
+
+        /// Floods one vertex; false when every side has ended.
+        bool Step()
+        {
+            if (queue.empty()) return false;
+            const int v = queue.front();
+            queue.pop_front();
+            ++visited;
+            const int r = Root(label[v]);
+            ForFaces(m, v, [&](const FaceType *f, int z) {
+                int owner = -1; // the face's first vertex off the loop counts its area, once
+                for (int k = 0; k < 3 && owner < 0; ++k)
+                    if (!OnLoop(index(m, f->cV(k)))) owner = index(m, f->cV(k));
+                if (owner == v) {
+                    const double a = vcg::DoubleArea(*f) / 2;
+                    area[r] += a, known += a;
+                }
+                for (int k = 1; k < 3; ++k) {
+                    const int u = index(m, f->cV((z + k) % 3));
+                    const auto it = label.find(u);
+                    if (it == label.end()) {
+                        label[u] = r, ++pending[r], queue.push_back(u);
+                    } else if (it->second >= 0) {
+                        const int ru = Root(it->second);
+                        if (ru != r) up[ru] = r, pending[r] += pending[ru], area[r] += area[ru], --growing;
+                    }
+                }
+            });
+            last[r] = v;
+            if (--pending[r] == 0) ended.push_back(r), --growing;
+            return true;
+        }
+
+        /// v's side, -1 on the loop, -2 not reached yet.
+        int Side(int v)
+        {
+            const auto it = label.find(v);
+            return it == label.end() ? -2 : (it->second < 0 ? -1 : Root(it->second));
+        }
+        bool OnLoop(int v) const
+        {
+            const auto it = label.find(v);
+            return it != label.end() && it->second < 0;
+        }
+        bool Ended(int side) const { return side >= 0 && pending[side] == 0; }
+        /// The one side still growing (growing == 1).
+        int GrowingSide() { return Root(label[queue.front()]); }
+
+        std::vector<int> ended;    ///< sides whose flood has ended (whole)
+        int growing = 0;           ///< sides still growing
+        std::vector<double> area;  ///< by side: the area flooded so far
+        std::vector<int> last;     ///< by side: the vertex flooded last (the farthest from the loop)
+        double known = 0;          ///< the area flooded so far, all sides
+        size_t visited = 0;        ///< vertices flooded
+
+    private:
+        int Root(int c)
+        {
+            while (up[c] != c) c = up[c] = up[up[c]];
+            return c;
+        }
+        const MeshType &m;
+        std::unordered_map<int, int> label; // vertex -> its flood's first side (-1: on the loop)
+        std::vector<int> up, pending;       // union-find of floods; vertices queued per side
+        std::deque<int> queue;
+    };
+
     /// The most salient loop among `loop` (vertex indices, cost `cost` as ValleyLoop prices it)
     /// and candidates round the same part moved into the body. h: the length unit.
     /// find(guide, guideFaces, cost): the cheapest edge loop round a guide polyline (empty if
     /// none). inBand(p): p lies in the band the loop was already chosen in (candidates mostly
-    /// there are left to that choice).
+    /// there are left to that choice). The mesh's VF adjacency must be current; the cost follows
+    /// the part and the steps x stepLength units searched, not the mesh.
     template <class Finder, class InBand>
     static std::vector<int> Choose(const MeshType &m, const std::vector<int> &loop, double cost, double h, const Param &par,
                                    Finder find, InBand inBand)
     {
-        const int n = int(m.vert.size());
-        std::vector<std::vector<int>> nb(n);
-        for (const auto &f : m.face) {
-            if (f.IsD()) continue;
-            for (int k = 0; k < 3; ++k) {
-                const int a = index(m, f.cV(k)), b = index(m, f.cV((k + 1) % 3));
-                nb[a].push_back(b), nb[b].push_back(a);
+        if (!tri::HasVFAdjacency(m)) throw SnakeError("Part salience: the mesh needs vertex-face adjacency.");
+        const double mp = par.maxPart;
+        if (!(mp > 0)) return loop;
+        // the loop's sides, until the body (the largest) is known and the rest is a part
+        Sides s0(m, loop);
+        auto sum = [&](double &S, double &M) {
+            S = M = 0;
+            for (int c : s0.ended) S += s0.area[c], M = std::max(M, s0.area[c]);
+        };
+        for (;;) {
+            if (s0.growing == 1 && !s0.ended.empty()) {
+                double S, M;
+                sum(S, M);
+                const double r = s0.area[s0.GrowingSide()];
+                if (r > M && S < mp * (S + r)) break; // the growing side is the body, the ended ones the part
             }
+            if (!s0.Step()) break;
         }
-        std::vector<int> comp;
-        std::vector<double> area;
-        Sides(m, nb, loop, comp, area);
-        if (area.size() < 2) return loop;
-        const int body = int(std::max_element(area.begin(), area.end()) - area.begin());
-        double total = 0;
-        for (double a : area) total += a;
-        if (!(total - area[body] < par.maxPart * total)) return loop;
+        double A0, M;
+        sum(A0, M);
+        int body = -1;
+        if (s0.growing == 1) {
+            body = s0.GrowingSide();
+        } else {
+            if (s0.ended.size() < 2) return loop; // the loop cuts nothing off
+            for (int c : s0.ended)
+                if (body < 0 || s0.area[c] > s0.area[body]) body = c;
+            A0 -= s0.area[body];
+            if (!(A0 < mp * s0.known)) return loop;
+        }
+        int rep = -1, repSide = -1; // a vertex deep in the part: a candidate's side holding it is the part's
+        for (int c : s0.ended)
+            if (c != body && (repSide < 0 || s0.area[c] > s0.area[repSide])) repSide = c, rep = s0.last[c];
+        if (rep < 0) return loop;
         const double L0 = Length(m, loop);
         auto score = [&](double c, double L, double A) {
             return c / L * std::pow(L / std::sqrt(std::max(A, 1e-30)), par.exponent);
         };
-        double bestScore = score(cost, L0, total - area[body]);
+        double bestScore = score(cost, L0, A0);
         std::vector<int> best = loop;
-        // distance from the loop into the body, along edges
-        const double inf = std::numeric_limits<double>::infinity();
-        std::vector<double> dist(n, inf);
+        // distance from the loop into the body, along edges, as far as the guides below read it:
+        // every vertex nearer than `reach` and its neighbours
+        const double reach = par.steps * par.stepLength * h;
+        auto isBody = [&](int v) {
+            const int c = s0.Side(v);
+            return c != -1 && (c == -2 || c == body);
+        };
+        std::unordered_map<int, double> dist;
         typedef std::pair<double, int> QE;
         std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
         for (int v : loop) dist[v] = 0, q.push({0, v});
+        double edge = 0; // the longest edge out of a vertex nearer than reach
         while (!q.empty()) {
             const QE e = q.top();
             q.pop();
             if (e.first > dist[e.second]) continue;
-            for (int b : nb[e.second]) {
-                if (comp[b] != body) continue;
-                const double c = e.first + vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
-                if (c < dist[b]) dist[b] = c, q.push({c, b});
-            }
+            if (e.first > reach + edge) break;
+            ForFaces(m, e.second, [&](const FaceType *f, int z) {
+                for (int k = 1; k < 3; ++k) {
+                    const int b = index(m, f->cV((z + k) % 3));
+                    if (!isBody(b)) continue;
+                    const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
+                    if (e.first < reach) edge = std::max(edge, l);
+                    const auto it = dist.find(b);
+                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
+                }
+            });
         }
-        int far = -1; // the body's vertex farthest from the loop: which side of a candidate is the body
-        for (int v = 0; v < n; ++v)
-            if (comp[v] == body && dist[v] < inf && (far < 0 || dist[v] > dist[far])) far = v;
-        if (far < 0) return loop;
+        std::vector<int> nb;
         for (int k = 1; k <= par.steps; ++k) {
             // the guide: each loop vertex walked up the distance into the body to k steps
             const double d = k * par.stepLength * h;
@@ -110,10 +232,11 @@ public:
             int last = -1;
             for (int v : loop) {
                 int cur = v;
-                while (dist[cur] < d) {
+                while (dist.at(cur) < d) {
                     int nx = -1;
-                    for (int b : nb[cur])
-                        if (comp[b] == body && dist[b] > dist[cur] && (nx < 0 || dist[b] > dist[nx])) nx = b;
+                    Neighbours(m, cur, nb);
+                    for (int b : nb)
+                        if (isBody(b) && dist.at(b) > dist.at(cur) && (nx < 0 || dist.at(b) > dist.at(nx))) nx = b;
                     if (nx < 0) break;
                     cur = nx;
                 }
@@ -135,14 +258,16 @@ public:
             if (2 * within >= int(cand.size())) continue;
             const double L = Length(m, cand);
             if (!(L > 0.5 * L0) || L > par.growth * L0) continue;
-            std::vector<int> cc;
-            std::vector<double> ca;
-            Sides(m, nb, cand, cc, ca);
-            if (ca.size() < 2 || cc[far] < 0) continue;
-            const double A = total - ca[cc[far]];
-            if (!(A < par.maxPart * total)) continue;
-            const double sc = score(c, L, A);
-            if (sc < par.margin * bestScore) bestScore = sc, best = cand;
+            // the candidate's side holding the part, flooded to its end (the smaller side, as a rule)
+            Sides sc(m, cand);
+            if (sc.OnLoop(rep)) continue;
+            while (!sc.Ended(sc.Side(rep)) && sc.Step()) {}
+            if (!sc.Ended(sc.Side(rep)) || (sc.growing == 0 && sc.ended.size() < 2)) continue;
+            const double A = sc.area[sc.Side(rep)];
+            while (!(s0.known > A / mp) && s0.Step()) {} // the mesh's area as far as the test needs it
+            if (!(A < mp * s0.known)) continue;
+            const double sc2 = score(c, L, A);
+            if (sc2 < par.margin * bestScore) bestScore = sc2, best = cand;
         }
         return best;
     }
@@ -158,35 +283,29 @@ public:
 private:
     static int index(const MeshType &m, const typename MeshType::VertexType *v) { return int(v - &m.vert[0]); }
 
-    /// Components of the mesh's vertices without the loop's (edge-connected), and their areas.
-    static void Sides(const MeshType &m, const std::vector<std::vector<int>> &nb, const std::vector<int> &loop,
-                      std::vector<int> &comp, std::vector<double> &area)
+    /// fn(face, v's index in it) for the live faces round vertex v (VF adjacency).
+    template <class Fn>
+    static void ForFaces(const MeshType &m, int v, Fn fn)
     {
-        comp.assign(m.vert.size(), -1);
-        for (int v : loop) comp[v] = -2;
-        int nc = 0;
-        for (size_t s = 0; s < m.vert.size(); ++s) {
-            if (comp[s] != -1 || m.vert[s].IsD()) continue;
-            std::vector<int> st{int(s)};
-            comp[s] = nc;
-            while (!st.empty()) {
-                const int a = st.back();
-                st.pop_back();
-                for (int b : nb[a])
-                    if (comp[b] == -1) comp[b] = nc, st.push_back(b);
-            }
-            ++nc;
+        const typename MeshType::VertexType *p = &m.vert[v];
+        for (const FaceType *f = p->cVFp(), *next = nullptr; f; f = next) {
+            const int z = (f->cV(0) == p) ? 0 : (f->cV(1) == p ? 1 : 2);
+            next = f->cVFp(z);
+            if (!f->IsD()) fn(f, z);
         }
-        area.assign(nc, 0.0);
-        for (const auto &f : m.face) {
-            if (f.IsD()) continue;
-            const double a = vcg::DoubleArea(f) / 2;
-            int c = -1;
-            for (int k = 0; k < 3; ++k) {
-                const int ci = comp[int(f.cV(k) - &m.vert[0])];
-                if (ci >= 0) c = ci;
-            }
-            if (c >= 0) area[c] += a;
+    }
+
+    /// v's neighbours in the order a pass over the faces by index lists them (each edge of each
+    /// face, both ways), so that ties in the guide's walk go as they did with whole-mesh lists.
+    static void Neighbours(const MeshType &m, int v, std::vector<int> &out)
+    {
+        std::vector<std::pair<const FaceType *, int>> fs;
+        ForFaces(m, v, [&](const FaceType *f, int z) { fs.push_back({f, z}); });
+        std::sort(fs.begin(), fs.end());
+        out.clear();
+        for (const auto &e : fs) {
+            const int a = e.second == 1 ? 0 : 1, b = e.second == 2 ? 0 : 2;
+            out.push_back(index(m, e.first->cV(a))), out.push_back(index(m, e.first->cV(b)));
         }
     }
 };
