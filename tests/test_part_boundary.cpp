@@ -642,6 +642,7 @@ TEST(PartSalience, SidesFloodOnlyAsFarAsThePart)
     };
     while (!bodyKnown() && s.Step()) {}
     ASSERT_TRUE(bodyKnown());
+    std::printf("cap: %zu vertices, loop %zu, flooded %zu of %zu\n", capVerts, loop.size(), s.visited, m.vert.size());
     EXPECT_NEAR(s.area[s.ended[0]], cap, 1e-9 * cap);
     EXPECT_NEAR(cap / (4 * M_PI), 0.035, 0.003);
     EXPECT_LT(s.visited, 6 * capVerts);
