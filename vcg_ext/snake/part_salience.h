@@ -15,6 +15,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -103,11 +104,20 @@ public:
             if (comp[v] == body && dist[v] < inf && (far < 0 || dist[v] > dist[far])) far = v;
         if (far < 0) return loop;
         for (int k = 1; k <= par.steps; ++k) {
-            // the guide: each loop vertex walked up the distance into the body to k steps
+            // the guide: the edge loop at distance d into the body where it is one loop (session
+            // 24), else each loop vertex walked up the distance into the body to k steps (the
+            // walks merge on a thin part: a guide of 4 chords across it finds no ring)
             const double d = k * par.stepLength * h;
             std::vector<vcg::Point3d> guide;
             std::vector<int> guideFaces;
+            const std::vector<int> level = LevelLoop(m, comp, dist, body, d);
+            for (int v : level) {
+                guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+                const FaceType *f = m.vert[v].cVFp();
+                if (f) guideFaces.push_back(int(f - &m.face[0]));
+            }
             int last = -1;
+            if (level.empty())
             for (int v : loop) {
                 int cur = v;
                 while (dist[cur] < d) {
@@ -156,6 +166,49 @@ public:
     }
 
 private:
+    /// The boundary of the faces whose vertices are all off the body or nearer than d to the
+    /// loop (the level d of the distance into the body), ordered, or empty when it is not one
+    /// simple loop. Only faces round the level are visited (VF adjacency).
+    static std::vector<int> LevelLoop(const MeshType &m, const std::vector<int> &comp, const std::vector<double> &dist,
+                                      int body, double d)
+    {
+        auto in = [&](int v) { return comp[v] != body || dist[v] < d; };
+        auto wholly = [&](const FaceType *f) {
+            return !f->IsD() && in(index(m, f->cV(0))) && in(index(m, f->cV(1))) && in(index(m, f->cV(2)));
+        };
+        std::unordered_map<int, int> next; // boundary edges in the inner faces' order
+        for (size_t o = 0; o < m.vert.size(); ++o) {
+            if (m.vert[o].IsD() || in(int(o)) || !(dist[o] < std::numeric_limits<double>::infinity())) continue;
+            for (const FaceType *f = m.vert[o].cVFp(), *nf = nullptr; f; f = nf) {
+                const int z = f->cV(0) == &m.vert[o] ? 0 : (f->cV(1) == &m.vert[o] ? 1 : 2);
+                nf = f->cVFp(z);
+                if (f->IsD()) continue;
+                const int a = index(m, f->cV((z + 1) % 3)), b = index(m, f->cV((z + 2) % 3));
+                if (!in(a) || !in(b)) continue;
+                // the face across a-b from f: wholly in, or a-b is no boundary edge
+                const FaceType *g = nullptr;
+                for (const FaceType *e = m.vert[a].cVFp(), *ne = nullptr; e; e = ne) {
+                    const int za = e->cV(0) == &m.vert[a] ? 0 : (e->cV(1) == &m.vert[a] ? 1 : 2);
+                    ne = e->cVFp(za);
+                    if (e != f && (e->cV(0) == &m.vert[b] || e->cV(1) == &m.vert[b] || e->cV(2) == &m.vert[b])) g = e;
+                }
+                if (!g || !wholly(g)) continue;
+                if (next.count(b)) return {}; // not one simple loop
+                next[b] = a;
+            }
+        }
+        if (next.size() < 3) return {};
+        std::vector<int> out;
+        int cur = next.begin()->first;
+        do {
+            out.push_back(cur);
+            const auto it = next.find(cur);
+            if (it == next.end() || out.size() > next.size()) return {};
+            cur = it->second;
+        } while (cur != out.front());
+        return out.size() == next.size() ? out : std::vector<int>();
+    }
+
     static int index(const MeshType &m, const typename MeshType::VertexType *v) { return int(v - &m.vert[0]); }
 
     /// Components of the mesh's vertices without the loop's (edge-connected), and their areas.
