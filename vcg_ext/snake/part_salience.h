@@ -199,7 +199,8 @@ private:
         }
         if (next.size() < 3) return {};
         std::vector<int> out;
-        int cur = next.begin()->first;
+        int cur = next.begin()->first; // from the lowest index: the same guide with any hash order
+        for (const auto &e : next) cur = std::min(cur, e.first);
         do {
             out.push_back(cur);
             const auto it = next.find(cur);
