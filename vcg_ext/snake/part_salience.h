@@ -225,25 +225,29 @@ public:
         }
         std::vector<int> nb;
         for (int k = 1; k <= par.steps; ++k) {
-            // the guide: each loop vertex walked up the distance into the body to k steps
+            // the guide: the edge loop at distance d into the body where it is one loop (session
+            // 24), else each loop vertex walked up the distance into the body to k steps (the
+            // walks merge on a thin part: a guide of 4 chords across it finds no ring)
             const double d = k * par.stepLength * h;
             std::vector<vcg::Point3d> guide;
             std::vector<int> guideFaces;
-            int last = -1;
-            for (int v : loop) {
-                int cur = v;
-                while (dist.at(cur) < d) {
-                    int nx = -1;
-                    Neighbours(m, cur, nb);
-                    for (int b : nb)
-                        if (isBody(b) && dist.at(b) > dist.at(cur) && (nx < 0 || dist.at(b) > dist.at(nx))) nx = b;
-                    if (nx < 0) break;
-                    cur = nx;
+            std::vector<int> gv = LevelLoop(m, isBody, dist, d);
+            if (gv.empty())
+                for (int v : loop) {
+                    int cur = v;
+                    while (dist.at(cur) < d) {
+                        int nx = -1;
+                        Neighbours(m, cur, nb);
+                        for (int b : nb)
+                            if (isBody(b) && dist.at(b) > dist.at(cur) && (nx < 0 || dist.at(b) > dist.at(nx))) nx = b;
+                        if (nx < 0) break;
+                        cur = nx;
+                    }
+                    if (gv.empty() || gv.back() != cur) gv.push_back(cur);
                 }
-                if (cur == last) continue;
-                last = cur;
-                guide.push_back(vcg::Point3d::Construct(m.vert[cur].cP()));
-                const FaceType *f = m.vert[cur].cVFp();
+            for (int v : gv) {
+                guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+                const FaceType *f = m.vert[v].cVFp();
                 if (f) guideFaces.push_back(int(f - &m.face[0]));
             }
             if (guide.size() < 3) break;
@@ -281,6 +285,55 @@ public:
     }
 
 private:
+    /// The boundary of the faces whose vertices are all off the body or nearer than d to the
+    /// loop (the level d of the distance into the body), ordered, or empty when it is not one
+    /// simple loop. Only faces round the level are visited (VF adjacency).
+    template <class IsBody>
+    static std::vector<int> LevelLoop(const MeshType &m, IsBody isBody, const std::unordered_map<int, double> &dist, double d)
+    {
+        auto in = [&](int v) {
+            if (!isBody(v)) return true;
+            const auto it = dist.find(v);
+            return it != dist.end() && it->second < d;
+        };
+        auto wholly = [&](const FaceType *f) {
+            return !f->IsD() && in(index(m, f->cV(0))) && in(index(m, f->cV(1))) && in(index(m, f->cV(2)));
+        };
+        std::unordered_map<int, int> next; // boundary edges in the inner faces' order
+        for (const auto &od : dist) { // the body's vertices the distance reached (within the steps searched)
+            const int o = od.first;
+            if (m.vert[o].IsD() || in(o)) continue;
+            for (const FaceType *f = m.vert[o].cVFp(), *nf = nullptr; f; f = nf) {
+                const int z = f->cV(0) == &m.vert[o] ? 0 : (f->cV(1) == &m.vert[o] ? 1 : 2);
+                nf = f->cVFp(z);
+                if (f->IsD()) continue;
+                const int a = index(m, f->cV((z + 1) % 3)), b = index(m, f->cV((z + 2) % 3));
+                if (!in(a) || !in(b)) continue;
+                // the face across a-b from f: wholly in, or a-b is no boundary edge
+                const FaceType *g = nullptr;
+                for (const FaceType *e = m.vert[a].cVFp(), *ne = nullptr; e; e = ne) {
+                    const int za = e->cV(0) == &m.vert[a] ? 0 : (e->cV(1) == &m.vert[a] ? 1 : 2);
+                    ne = e->cVFp(za);
+                    if (e != f && (e->cV(0) == &m.vert[b] || e->cV(1) == &m.vert[b] || e->cV(2) == &m.vert[b])) g = e;
+                }
+                if (!g || !wholly(g)) continue;
+                if (next.count(b)) return {}; // not one simple loop
+                next[b] = a;
+            }
+        }
+        if (next.size() < 3) return {};
+        std::vector<int> out;
+        int cur = next.begin()->first; // from the lowest index: the same guide with any hash order
+        for (const auto &e : next) cur = std::min(cur, e.first);
+        do {
+            out.push_back(cur);
+            const auto it = next.find(cur);
+            if (it == next.end() || out.size() > next.size()) return {};
+            cur = it->second;
+        } while (cur != out.front());
+        return out.size() == next.size() ? out : std::vector<int>();
+    }
+
     static int index(const MeshType &m, const typename MeshType::VertexType *v) { return int(v - &m.vert[0]); }
 
     /// fn(face, v's index in it) for the live faces round vertex v (VF adjacency).

@@ -92,8 +92,9 @@ public:
     /// edges round it. Returns true when the snake was replaced by that loop (it is kept as it
     /// is when the band holds no loop, or only one shorter than half the snake).
     template <class SnakeType>
-    static bool FinishRun(SnakeType &s, FeatureEnergyType type, bool energyFromQuality, const Param &par = Param())
+    static bool FinishRun(SnakeType &s, FeatureEnergyType type, bool energyFromQuality, const Param &parIn = Param())
     {
+        Param par = parIn;
         if (!s.Closed() || energyFromQuality || type != FeatureEnergyType::PartBoundary ||
             s.Stats().stop != SnakeStop::Converged)
             return false;
@@ -107,6 +108,13 @@ public:
         std::vector<int> vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
         double len0 = 0;
         for (size_t i = 0; i < loop.size(); ++i) len0 += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
+        // a band that covers a short part's tip is no ring round it (its cheapest "loop" circles
+        // the tip's middle): narrower bands, down to 1 unit, until one is (issue 33, session 24)
+        while ((vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) && par.bandWidth * kNarrow >= 1.0) {
+            par.bandWidth *= kNarrow;
+            ref = -1;
+            vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
+        }
         if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return false;
         vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
         if (par.salience.exponent > 0) {
@@ -321,6 +329,9 @@ public:
     static double LengthOf(const MeshType &m, const std::vector<int> &l) { return PartSalience<MeshType>::Length(m, l); }
 
 private:
+    /// Band narrowing factor when a band is no ring (2.5 -> 1.5 units with the default band).
+    static constexpr double kNarrow = 0.6;
+
     /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
     /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
     /// the edge has one face.
