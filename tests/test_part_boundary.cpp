@@ -633,7 +633,8 @@ TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
     EXPECT_NEAR(c, 0.0, 1e-9);
     ValleyLoop<CMeshO>::CostParts(m, ring1, flat, ref, e, l, c);
     EXPECT_NEAR(l, KneeRadius(-kKneeStep) * per0, 1e-6);
-    EXPECT_NEAR(c, l, 1e-9); // every edge of a ring below the crease is convex round the tube
+    EXPECT_NEAR(c, l, 1e-5 * l); // every edge of a ring below the crease is convex round the tube (flat
+                                 // across it, up to the float positions' rounding)
     std::vector<P3> loop;
     for (int v : ring1) loop.push_back(P3::Construct(m.vert[v].cP()));
     std::vector<int> faces;

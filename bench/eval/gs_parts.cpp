@@ -6,11 +6,11 @@
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
-//            [--valley-band B] [--valley-lambda L] [--out FILE.csv]
+//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--out FILE.csv]
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
-//   --valley-lambda: its bandWidth and lambda)
+//   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -18,7 +18,10 @@
 //   GS_PARTS_GAPS=1: per failed loop, each agreeing person's coverage and the stretches of their
 //   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
 //   success as measured and under the strictest reading of the issue, one person's cut both
-//   holding 90 % of the loop and 90 % covered by it.)
+//   holding 90 % of the loop and 90 % covered by it. GS_PARTS_COST=1: per loop, the valley loop's
+//   price of the loop and of each person's cut, in parts (energy E, length L, concavity C,
+//   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
+//   loop, + on the part's side, with their energy against the loop's.)
 //   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
 //   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
