@@ -99,9 +99,6 @@ int main(int argc, char **argv)
         else if (a == "--valley-band") vlp.bandWidth = std::stod(next());
         else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
         else if (a == "--valley-cscale") vlp.concavityScale = std::stod(next());
-        else if (a == "--valley-fade") vlp.fadeLevel = std::stod(next());
-        else if (a == "--valley-shortcut") vlp.shortcut = std::stod(next());
-        else if (a == "--valley-shortcut-fade") vlp.shortcutFade = std::stod(next());
         else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());

@@ -83,17 +83,6 @@ public:
         /// 20 bands 143 (6 loops gained, none lost); accepting by total cost alone 142 (8
         /// gained, 3 lost: bird wing loops slid up the tapering wing, same ground, shorter).
         int iterations = 8;
-        /// Energy above this level (the energy is in [0,1]) says "no valley here" and is priced
-        /// at the level: where a part's valley fades people close the cut straight across (Lee
-        /// et al. 2005 close it by its shortest path), so across such ground only the length
-        /// and concavity terms choose the way. 1 (or more) turns it off.
-        double fadeLevel = 1.0;
-        /// Experimental (session 24): a stretch of the loop (at most a third of it) whose ends
-        /// are joined by a shortest edge path shorter than shortcut * its length is replaced by
-        /// that path. 1 (or more) turns it off.
-        double shortcut = 1.0;
-        /// ... and only when the stretch's mean energy is at least shortcutFade times the loop's.
-        double shortcutFade = 0.0;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
     };
@@ -120,7 +109,6 @@ public:
         for (size_t i = 0; i < loop.size(); ++i) len0 += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
         if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return false;
         vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
-        if (par.shortcut < 1) vl = Shortcut(m, vl, par.shortcut, energy, par.shortcutFade);
         if (par.salience.exponent > 0) {
             // candidates round the same part, each found and descended like this loop, but only
             // those mostly beyond the band the descent searched: within it its choice stands
@@ -285,9 +273,7 @@ public:
                     const int ns = sheet + cross(a, b);
                     if (ns < 0 || ns > 1) continue;
                     const double len = vcg::Distance(m.vert[vert[a]].cP(), m.vert[vert[b]].cP());
-                    const double ea = std::min(double(energy[vert[a]]), par.fadeLevel);
-                    const double eb = std::min(double(energy[vert[b]]), par.fadeLevel);
-                    const double c = e.first + len * (0.5 * (ea + eb) + ab.second);
+                    const double c = e.first + len * (0.5 * (double(energy[vert[a]]) + double(energy[vert[b]])) + ab.second);
                     const int to = ns * nb + b;
                     if (c < dist[to]) dist[to] = c, prev[to] = e.second, q.push({c, to});
                 }
@@ -328,85 +314,6 @@ public:
                 !(c2 / LengthOf(m, next) < cost / LengthOf(m, vl)))
                 break;
             vl = next, cost = c2;
-        }
-        return vl;
-    }
-
-    /// Greedy: the stretch with the largest saving replaced by its shortest edge path, repeated.
-    template <class EnergyVector>
-    static std::vector<int> Shortcut(const MeshType &m, std::vector<int> vl, double factor, const EnergyVector &energy, double fade)
-    {
-        for (int round = 0; round < 20; ++round) {
-            const int n = int(vl.size());
-            if (n < 6) break;
-            std::vector<double> cum(n + 1, 0);
-            for (int i = 0; i < n; ++i) cum[i + 1] = cum[i] + vcg::Distance(m.vert[vl[i]].cP(), m.vert[vl[(i + 1) % n]].cP());
-            const double L = cum[n];
-            std::vector<double> ecum(n + 1, 0);
-            for (int i = 0; i < n; ++i) ecum[i + 1] = ecum[i] + double(energy[vl[i]]);
-            const double eMean = ecum[n] / n;
-            std::unordered_map<int, int> pos;
-            for (int i = 0; i < n; ++i) pos[vl[i]] = i;
-            double bestSave = 0;
-            int bi = -1, bj = -1;
-            std::vector<int> bestPath;
-            for (int i = 0; i < n; ++i) {
-                // Dijkstra by length from vl[i], bounded by a third of the loop
-                const double bound = L / 3;
-                std::unordered_map<int, double> d;
-                std::unordered_map<int, int> pr;
-                typedef std::pair<double, int> QE;
-                std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
-                d[vl[i]] = 0, q.push({0, vl[i]});
-                while (!q.empty()) {
-                    const QE e = q.top();
-                    q.pop();
-                    if (e.first > d[e.second]) continue;
-                    const VertexType *v = &m.vert[e.second];
-                    for (const FaceType *f = v->cVFp(), *next = nullptr; f; f = next) {
-                        const int z = (f->cV(0) == v) ? 0 : (f->cV(1) == v ? 1 : 2);
-                        next = f->cVFp(z);
-                        if (f->IsD()) continue;
-                        for (int k = 1; k < 3; ++k) {
-                            const int u = int(f->cV((z + k) % 3) - &m.vert[0]);
-                            const double c = e.first + vcg::Distance(v->cP(), m.vert[u].cP());
-                            if (c > bound) continue;
-                            auto it = d.find(u);
-                            if (it == d.end() || c < it->second) d[u] = c, pr[u] = e.second, q.push({c, u});
-                        }
-                    }
-                }
-                for (int k = 2; k < n; ++k) {
-                    const int j = (i + k) % n;
-                    const double arc = j > i ? cum[j] - cum[i] : L - cum[i] + cum[j];
-                    if (arc > L / 3) break;
-                    auto it = d.find(vl[j]);
-                    if (it == d.end() || !(it->second < factor * arc)) continue;
-                    const double es = j > i ? ecum[j + 1] - ecum[i] : ecum[n] - ecum[i] + ecum[j + 1];
-                    if (es / (k + 1) < fade * eMean) continue;
-                    const double save = arc - it->second;
-                    if (save <= bestSave) continue;
-                    std::vector<int> path;
-                    for (int x = vl[j]; x != vl[i]; x = pr[x]) path.push_back(x);
-                    path.push_back(vl[i]);
-                    std::reverse(path.begin(), path.end());
-                    // the path must not touch the rest of the loop
-                    bool ok = true;
-                    for (size_t t = 1; t + 1 < path.size() && ok; ++t) {
-                        auto p = pos.find(path[t]);
-                        if (p == pos.end()) continue;
-                        const int r = p->second;
-                        const bool inside = j > i ? (r > i && r < j) : (r > i || r < j);
-                        if (!inside) ok = false;
-                    }
-                    if (!ok) continue;
-                    bestSave = save, bi = i, bj = j, bestPath = path;
-                }
-            }
-            if (bi < 0) break;
-            std::vector<int> out(bestPath.begin(), bestPath.end()); // vl[bi] .. vl[bj]
-            for (int t = (bj + 1) % n; t != bi; t = (t + 1) % n) out.push_back(vl[t]);
-            vl = out;
         }
         return vl;
     }
