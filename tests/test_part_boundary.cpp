@@ -692,3 +692,39 @@ TEST(ValleyLoop, NarrowsABandThatCoversAShortPartsTop)
         EXPECT_LT(mx, 1.0);
     }
 }
+
+// ValleyLoop::CostParts (the diagnostics of bench/eval/gs_parts, GS_PARTS_COST) prices a loop
+// as FindAt does: on the knee tube with the concavity reference below the crease's dihedral
+// angle, the crease ring costs its length (energy 0.5 x length, no concavity cost), the ring
+// below it its full length in concavity cost (convex edges), and the cost FindAt reports for
+// the loop it finds is the sum of the parts with the Param's weights.
+TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
+{
+    CMeshO m;
+    MakeKneeTube(m);
+    const int n = int(std::lround(2 * M_PI / kKneeStep)), crease = 12; // ring 12: z = 0
+    const std::vector<double> flat(m.vert.size(), 0.5);
+    std::vector<int> ring0, ring1;
+    for (int k = 0; k < n; ++k) ring0.push_back(crease * n + k), ring1.push_back((crease - 1) * n + k);
+    const double ref = 0.5; // below the crease's angle, atan(1) - atan(0.2) = 0.588: c = 1 on it
+    double e, l, c;
+    ValleyLoop<CMeshO>::CostParts(m, ring0, flat, ref, e, l, c);
+    const double per0 = n * 2 * std::sin(M_PI / n);
+    EXPECT_NEAR(l, per0, 1e-6);
+    EXPECT_NEAR(e, 0.5 * per0, 1e-6);
+    EXPECT_NEAR(c, 0.0, 1e-9);
+    ValleyLoop<CMeshO>::CostParts(m, ring1, flat, ref, e, l, c);
+    EXPECT_NEAR(l, KneeRadius(-kKneeStep) * per0, 1e-6);
+    EXPECT_NEAR(c, l, 1e-5 * l); // every edge of a ring below the crease is convex round the tube (flat
+                                 // across it, up to the float positions' rounding)
+    std::vector<P3> loop;
+    for (int v : ring1) loop.push_back(P3::Construct(m.vert[v].cP()));
+    std::vector<int> faces;
+    for (int v : ring1) faces.push_back(int(m.vert[v].cVFp() - &m.face[0]));
+    ValleyLoop<CMeshO>::Param par;
+    double r = ref, cost = 0;
+    const std::vector<int> found = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, par, r, cost);
+    ASSERT_GE(found.size(), 100u);
+    ValleyLoop<CMeshO>::CostParts(m, found, flat, ref, e, l, c);
+    EXPECT_NEAR(cost, e + par.lambda * l + par.concavityWeight * c, 1e-9 * cost);
+}

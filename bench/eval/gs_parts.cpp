@@ -6,11 +6,11 @@
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
-//            [--valley-band B] [--valley-lambda L] [--out FILE.csv]
+//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--out FILE.csv]
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
-//   --valley-lambda: its bandWidth and lambda)
+//   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -18,7 +18,10 @@
 //   GS_PARTS_GAPS=1: per failed loop, each agreeing person's coverage and the stretches of their
 //   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
 //   success as measured and under the strictest reading of the issue, one person's cut both
-//   holding 90 % of the loop and 90 % covered by it.)
+//   holding 90 % of the loop and 90 % covered by it. GS_PARTS_COST=1: per loop, the valley loop's
+//   price of the loop and of each person's cut, in parts (energy E, length L, concavity C,
+//   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
+//   loop, + on the part's side, with their energy against the loop's.)
 //   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
 //   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
@@ -30,7 +33,9 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -93,6 +98,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-concavity") vlp.concavityWeight = std::stod(next());
         else if (a == "--valley-band") vlp.bandWidth = std::stod(next());
         else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
+        else if (a == "--valley-cscale") vlp.concavityScale = std::stod(next());
         else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
@@ -209,6 +215,106 @@ int main(int argc, char **argv)
                                              en.c_str(), id, p.index, side > 0 ? "inside" : "outside", ring,
                                              int(sc.Success()), nIn, nOn, nOut, sr.front(), sr[sr.size() / 2],
                                              sr.back(), eLoop, eCut);
+                        }
+                        if (std::getenv("GS_PARTS_COST")) {
+                            // the valley loop's price of the loop (the cheapest edge loop round it, its
+                            // fixpoint) against each person's cut, in parts: E, length, (1 - c), per h
+                            std::vector<int> faces;
+                            for (const auto &x : s.Samples()) faces.push_back(x.p.face);
+                            double ref = -1, cost = 0;
+                            const std::vector<int> vl = ValleyLoop<CMeshO>::FindAt(md.mesh, loop, faces, surf->Energy(), s.LengthScale(), vlp, ref, cost);
+                            auto print = [&](const char *name, const std::vector<int> &l) {
+                                double e, len, c;
+                                ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c);
+                                const double tot = e + vlp.lambda * len + vlp.concavityWeight * c;
+                                std::fprintf(stderr, " %s L=%.1f E=%.1f C=%.1f tot=%.1f perL=%.3f |", name, len / md.h, e / md.h,
+                                             c / md.h, tot / md.h, tot / len);
+                            };
+                            std::fprintf(stderr, "COST %d %d %s %d ok=%d |", id, p.index, side > 0 ? "in" : "out", ring, int(sc.Success()));
+                            print("loop", vl);
+                            for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
+                                std::vector<int> cl;
+                                for (const auto &x : p.cuts[ci]) {
+                                    size_t bv = 0;
+                                    double bd = 1e300;
+                                    for (size_t v = 0; v < md.mesh.vert.size(); ++v) {
+                                        const double d = vcg::SquaredDistance(vcg::Point3d::Construct(md.mesh.vert[v].cP()), x);
+                                        if (d < bd) bd = d, bv = v;
+                                    }
+                                    cl.push_back(int(bv));
+                                }
+                                gs_parts::Part q = p;
+                                q.cuts = {p.cuts[ci]};
+                                const gs_parts::Score sq = gs_parts::Measure(loop, q, md.h, md.h);
+                                char nm[32];
+                                std::snprintf(nm, sizeof nm, "p%zu(%.2f/%.2f)", ci, sq.capture, sq.coverage);
+                                print(nm, cl);
+                            }
+                            std::fprintf(stderr, "\n");
+                            // the best-covered person's uncovered cut vertices: hop distance from the
+                            // loop, signed + on the part's side, their energy and their largest concave
+                            // dihedral against the loop vertices'
+                            {
+                                const size_t nv = md.mesh.vert.size();
+                                std::vector<int> hop(nv, -1), comp(nv, -1);
+                                std::deque<int> qq;
+                                for (int v : vl) hop[v] = 0, qq.push_back(v);
+                                auto nbrs = [&](int v, const std::function<void(int)> &fn) {
+                                    vcg::face::VFIterator<CFaceO> vfi(&md.mesh.vert[v]);
+                                    for (; !vfi.End(); ++vfi)
+                                        for (int k = 0; k < 3; ++k) fn(int(vcg::tri::Index(md.mesh, vfi.F()->V(k))));
+                                };
+                                while (!qq.empty()) {
+                                    const int v = qq.front();
+                                    qq.pop_front();
+                                    nbrs(v, [&](int w) { if (hop[w] < 0) hop[w] = hop[v] + 1, qq.push_back(w); });
+                                }
+                                int nc = 0;
+                                for (size_t v0 = 0; v0 < nv; ++v0) {
+                                    if (hop[v0] == 0 || comp[v0] >= 0) continue;
+                                    comp[v0] = nc, qq.push_back(int(v0));
+                                    while (!qq.empty()) {
+                                        const int v = qq.front();
+                                        qq.pop_front();
+                                        nbrs(v, [&](int w) { if (hop[w] != 0 && comp[w] < 0) comp[w] = nc, qq.push_back(w); });
+                                    }
+                                    ++nc;
+                                }
+                                std::vector<int> dist, sideOf;
+                                gs_parts::Rings(md.mesh, p, dist, sideOf);
+                                std::vector<int> inC(nc + 1, 0);
+                                for (size_t v = 0; v < nv; ++v) if (comp[v] >= 0 && sideOf[v] > 0) ++inC[comp[v]];
+                                const int partComp = int(std::max_element(inC.begin(), inC.end()) - inC.begin());
+                                double eLoop = 0;
+                                for (int v : vl) eLoop += surf->Energy()[v] / vl.size();
+                                size_t best = 0;
+                                double bc = -1;
+                                for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
+                                    gs_parts::Part q = p;
+                                    q.cuts = {p.cuts[ci]};
+                                    const double c = gs_parts::Measure(loop, q, md.h, md.h).coverage;
+                                    if (c > bc) bc = c, best = ci;
+                                }
+                                const std::vector<vcg::Point3d> lp = gs_parts::ResampleLoop(loop, 0.25 * md.h);
+                                std::map<int, int> hist;
+                                double eOff = 0, eOn = 0;
+                                int nOff = 0, nOn = 0;
+                                for (const auto &x : p.cuts[best]) {
+                                    size_t bv = 0;
+                                    double bd = 1e300;
+                                    for (size_t v = 0; v < nv; ++v) {
+                                        const double d = vcg::SquaredDistance(vcg::Point3d::Construct(md.mesh.vert[v].cP()), x);
+                                        if (d < bd) bd = d, bv = v;
+                                    }
+                                    if (gs_parts::DistToLoop(x, lp) <= md.h) { eOn += surf->Energy()[bv], ++nOn; continue; }
+                                    ++hist[comp[bv] == partComp ? hop[bv] : -hop[bv]];
+                                    eOff += surf->Energy()[bv], ++nOff;
+                                }
+                                std::fprintf(stderr, "PROFILE %d %d %s %d best p%zu cov=%.2f Eloop=%.3f Ecut_covered=%.3f Ecut_off=%.3f off-vertices by hop (+part side):",
+                                             id, p.index, side > 0 ? "in" : "out", ring, best, bc, eLoop, eOn / std::max(1, nOn), eOff / std::max(1, nOff));
+                                for (auto &hh : hist) std::fprintf(stderr, " %+d:%d", hh.first, hh.second);
+                                std::fprintf(stderr, "\n");
+                            }
                         }
                         if (std::getenv("GS_PARTS_JOINT")) {
                             // the strict reading: one person whose cut both holds the loop and is covered by it

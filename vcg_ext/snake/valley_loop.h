@@ -328,6 +328,31 @@ public:
 
     static double LengthOf(const MeshType &m, const std::vector<int> &l) { return PartSalience<MeshType>::Length(m, l); }
 
+    /// The parts of an edge loop's cost under FindAt's pricing with concavity reference ref:
+    /// sum len * E, sum len, sum len * (1 - c) (weights not applied). For diagnostics (gs_parts).
+    template <class EnergyVector>
+    static void CostParts(const MeshType &m, const std::vector<int> &vl, const EnergyVector &energy, double ref,
+                          double &eSum, double &lSum, double &cSum)
+    {
+        eSum = lSum = cSum = 0;
+        for (size_t i = 0; i < vl.size(); ++i) {
+            const int a = vl[i], b = vl[(i + 1) % vl.size()];
+            const VertexType *va = &m.vert[a], *vb = &m.vert[b];
+            const FaceType *f0 = nullptr, *f1 = nullptr;
+            for (const FaceType *f = va->cVFp(), *next = nullptr; f; f = next) {
+                const int z = (f->cV(0) == va) ? 0 : (f->cV(1) == va ? 1 : 2);
+                next = f->cVFp(z);
+                if (f->IsD() || !(f->cV(0) == vb || f->cV(1) == vb || f->cV(2) == vb)) continue;
+                (f0 ? f1 : f0) = f;
+            }
+            const double len = vcg::Distance(va->cP(), vb->cP());
+            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(f0, f1) / ref) : 0.0;
+            eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
+            lSum += len;
+            cSum += len * (1 - c);
+        }
+    }
+
 private:
     /// Band narrowing factor when a band is no ring (2.5 -> 1.5 units with the default band).
     static constexpr double kNarrow = 0.6;
