@@ -141,15 +141,12 @@ public:
     /// ascending: SnakeGapRefine): the embeddings go on serving, filed under their segments
     /// renumbered, and one whose segment an inserted sample falls into holds it too (it lies on
     /// the curve between two of its samples; Locate still checks that it is well inside). A region
-    /// without a margin serves only its own samples as they were: it is dropped then. Closed
-    /// snakes drop them all.
-    void SamplesInserted(const std::vector<int> &inserted, int before, bool closed)
+    /// without a margin serves only its own samples as they were: it is dropped then.
+    /// Precondition: the snake is open. SnakeGapRefine inserts samples only into open snakes, and
+    /// the renumbering below does not wrap round (a closed snake's segments may run past n-1).
+    void SamplesInserted(const std::vector<int> &inserted, int before)
     {
         if (inserted.empty()) return;
-        if (closed) {
-            Clear();
-            return;
-        }
         auto follow = [&](int i) {
             for (int k : inserted)
                 if (k <= i) ++i;

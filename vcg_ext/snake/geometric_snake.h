@@ -16,11 +16,9 @@
 #include <vcg_ext/snake/curve.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/snake/gap_refine.h>
-#include <vcg_ext/snake/partition.h>
 #include <vcg_ext/snake/polyline.h>
-#include <vcg_ext/snake/projection_motion.h>
 #include <vcg_ext/snake/run_control.h>
-#include <vcg_ext/snake/segment_motion.h>
+#include <vcg_ext/snake/snake_operation.h>
 #include <vcg_ext/surface/snake_surface.h>
 #include <vcg_ext/surface/surface_point.h>
 
@@ -30,7 +28,8 @@ namespace tri {
 /// A geometric snake on a triangle mesh (Lee & Lee 2002), with the session API used by the
 /// batch filter and by the edit tool: create, step, run, edit points, pin, insert, delete,
 /// change parameters, undo and redo. Samples are surface points (face + barycentric); a
-/// snake never leaves the surface and never loses its pins.
+/// snake never leaves the surface and never loses its pins. The operations that move it are
+/// SnakeOperation's (snake/snake_operation.h); this keeps the curve, its history and edits.
 template <class MeshType>
 class GeometricSnake
 {
@@ -42,7 +41,7 @@ public:
     typedef SnakeGap Gap;
 
     GeometricSnake(std::shared_ptr<Surface> surface, const SnakeParams &params = SnakeParams())
-        : surf(std::move(surface)), motion(surf), projection(surf), run(surf.get())
+        : surf(std::move(surface)), op(surf)
     {
         if (!surf) throw SnakeError("Geometric snake: no surface.");
         params.Validate();
@@ -122,61 +121,19 @@ public:
     /// mesh (cut/cut_session_map.h) keeps the curve that was embedded, which a new trace on the
     /// split faces only approximates. Returns false, changing nothing, when the polyline does
     /// not run through the samples in order or is not on the mesh.
-    bool KeepPolyline(const std::vector<SurfacePoint> &polyline)
-    {
-        const int n = int(st.samples.size()), gaps = numGaps();
-        auto isSample = [&](const SurfacePoint &p, int i) {
-            const SurfacePoint &s = st.samples[i % n].p;
-            return p.face == s.face && (p.bary - s.bary).Norm() <= 1e-9;
-        };
-        if (n < 2 || polyline.empty() || !isSample(polyline[0], 0)) return false;
-        for (const auto &p : polyline)
-            if (!p.OnMesh(surf->Mesh())) return false;
-        std::vector<std::vector<SurfacePoint>> crossings(gaps);
-        size_t at = 0;
-        for (int g = 0; g < gaps; ++g) {
-            const bool last = st.closed && g == n - 1; // runs to the polyline's end
-            size_t next = at + 1;
-            while (next < polyline.size() && !(!last && isSample(polyline[next], g + 1))) ++next;
-            if (!last && next == polyline.size()) return false;
-            crossings[g].assign(polyline.begin() + at + 1, polyline.begin() + next);
-            at = next;
-        }
-        if (!st.closed && at + 1 != polyline.size()) return false;
-        for (int g = 0; g < gaps; ++g) {
-            Gap &gap = st.gaps[g];
-            gap = Gap();
-            gap.crossings = crossings[g];
-            gap.traced = true; // as read: no tightening (gap.faces empty: the motion finds them)
-            gap.tracedFrom = st.samples[g].p;
-            gap.tracedTo = st.samples[(g + 1) % n].p;
-        }
-        return true;
-    }
+    bool KeepPolyline(const std::vector<SurfacePoint> &polyline) { return Line::Keep(*surf, st, polyline); }
 
     // ----------------------------------------------------------------- motion
-    /// One snake operation (Sec. 4.3, Fig. 1): partition, then for every segment build the
-    /// local region, embed it, map samples and energy gradients into the plane, do up to
-    /// `updatesPerOperation` updates of Eq. 4 and map back; then the overlapping segments
-    /// across the borders. An open snake first gets a sample in every gap it stretched past
-    /// twice its spacing (SnakeGapRefine, LastInserted). Returns the largest sample move in
-    /// local length units (LengthScale()).
+    /// One snake operation (Sec. 4.3, Fig. 1: SnakeOperation::Step; an open snake first gets
+    /// a sample in every gap it stretched past twice its spacing, LastInserted). Returns the
+    /// largest sample move in local length units (LengthScale()).
     double Step()
     {
         if (st.samples.empty()) throw SnakeError("Geometric snake: the snake has no samples.");
         if (!surf->MatchesMesh()) throw SnakeError("Geometric snake: the mesh changed since the snake was created.");
         pushUndo();
         auto t0 = SnakeClock::Now();
-        refine();
-        std::vector<vcg::Point3d> before = positions();
-        run.Begin(st, before);
-        if (st.params.method == SnakeMethod::LocalEmbedding) stepEmbedding();
-        else projection.Step(st, stats, frame());
-        std::vector<vcg::Point3d> after = positions();
-        const double maxMove = RunControl::CurveMove(before, after, st.closed) / st.unit;
-        stats.lastMaxMove = maxMove;
-        stats.operations++;
-        run.End(st, stats, maxMove, after);
+        const double maxMove = op.Step(st, stats);
         // the operation's time includes the convergence and well tests (issue 12: they are
         // part of what one operation costs)
         double ms = SnakeClock::MsSince(t0);
@@ -301,7 +258,7 @@ public:
         p.Validate();
         pushUndo();
         st.params = p;
-        clearCaches();
+        op.ClearCaches();
         resetRun();
     }
 
@@ -314,16 +271,16 @@ public:
     bool Undo()
     {
         if (!history.Undo(st)) return false;
-        inserted.clear();
-        clearCaches();
+        op.ForgetInserted();
+        op.ClearCaches();
         resetRun();
         return true;
     }
     bool Redo()
     {
         if (!history.Redo(st)) return false;
-        inserted.clear();
-        clearCaches();
+        op.ForgetInserted();
+        op.ClearCaches();
         resetRun();
         return true;
     }
@@ -340,7 +297,7 @@ public:
     bool Converged() const { return stats.converged; }
     /// The level of the energy pyramid the snake slithers on: the coarsest while capturing,
     /// one finer each time its samples sit in wells of the current one, 0 (precise) to settle.
-    int EnergyStage() const { return run.Level(); }
+    int EnergyStage() const { return op.Level(); }
     Surface &GetSurface() { return *surf; }
     std::shared_ptr<Surface> SurfacePtr() const { return surf; }
     const std::vector<int> &SeedVertices() const { return seedVertices; }
@@ -353,64 +310,36 @@ public:
     const std::vector<Gap> &Gaps() const { return st.gaps; }
     /// The samples the last operation inserted (SnakeGapRefine: an open snake that lengthens
     /// keeps its density), their indices now, ascending; empty after any other change.
-    const std::vector<int> &LastInserted() const { return inserted; }
+    const std::vector<int> &LastInserted() const { return op.LastInserted(); }
     /// Where sample i before the last operation is now (a host holding a sample index, the one
     /// being dragged or edited, follows it); -1 stays -1.
-    int FollowSample(int i) const { return Refine::Follow(i, inserted); }
+    int FollowSample(int i) const { return op.Follow(i); }
 
     /// Closed snakes: per sample, the unit direction on the surface towards the inside of the
     /// loop (the side a negative Balloon deflates it to; a positive one pushes it away from it),
-    /// for the tool to show. The inside is the side the loop runs round counter-clockwise, seen
-    /// from the front of the faces under it (orientation()). Empty for open snakes.
-    std::vector<vcg::Point3d> InsideDirections() const
-    {
-        const int n = int(st.samples.size());
-        if (!st.closed || n < 3) return {};
-        const std::vector<vcg::Point3d> p = positions();
-        const double o = orientation();
-        std::vector<vcg::Point3d> in(n);
-        for (int i = 0; i < n; ++i) {
-            in[i] = (surf->FaceNormal(st.samples[i].p.face) ^ (p[(i + 1) % n] - p[(i - 1 + n) % n])) * o; // -(tangent x normal)
-            const double l = in[i].Norm();
-            in[i] = l > 0 ? in[i] / l : vcg::Point3d(0, 0, 0);
-        }
-        return in;
-    }
+    /// for the tool to show (SnakeOperation::InsideDirections). Empty for open snakes.
+    std::vector<vcg::Point3d> InsideDirections() const { return Operation::InsideDirections(*surf, st); }
 
-    std::vector<vcg::Point3d> positions() const
-    {
-        std::vector<vcg::Point3d> p;
-        p.reserve(st.samples.size());
-        for (const auto &s : st.samples) p.push_back(s.p.Pd(surf->Mesh()));
-        return p;
-    }
+    std::vector<vcg::Point3d> positions() const { return Operation::Positions(*surf, st); }
 
     /// The curve on the surface (Sec. 4.1): the samples and, between them, the points where
     /// the straight segment in the embedding crosses mesh edges. Closed curves do not repeat
     /// the first point. Untraced gaps are traced first.
     std::vector<SurfacePoint> Polyline()
     {
-        if (!Line::Traced(st) && st.samples.size() >= 2) retrace();
+        if (!Line::Traced(st) && st.samples.size() >= 2) op.Retrace(st, stats);
         return Line::Points(*surf, st);
     }
 
     std::vector<vcg::Point3d> PolylinePositions() { return Line::Positions(*surf, Polyline()); }
 
 private:
-    // the motions' caches (embeddings, spline systems) are of the snake before a change
-    void clearCaches()
-    {
-        motion.ClearCache();
-        projection.ClearCache();
-    }
-    typedef SnakeSegment Segment;
-    typedef SnakeRunControl<MeshType> RunControl;
+    typedef SnakeOperation<MeshType> Operation;
     typedef SnakePolyline<MeshType> Line; // the curve between the samples: the gaps
     typedef SnakeGapRefine<MeshType> Refine;
 
     std::shared_ptr<Surface> surf;
-    SnakeSegmentMotion<MeshType> motion;
-    SnakeProjectionMotion<MeshType> projection;
+    Operation op; // moves the curve; keeps the motions' caches and the run control
     SnakeCurve st;
     SnakeHistory<SnakeCurve> history;
     SnakeStats stats;
@@ -418,8 +347,6 @@ private:
     std::vector<SurfacePoint> seedPoints;
     std::vector<SnakeSample> initialSamples;
     std::vector<SurfacePoint> initialPolyline;
-    RunControl run;
-    std::vector<int> inserted; // by the last operation (LastInserted)
 
 public:
     /// Everything a user sees of the snake (curve, pins, parameters, counters, convergence),
@@ -428,7 +355,7 @@ public:
     {
         decltype(st) curve;
         SnakeStats stats;
-        typename RunControl::State run;
+        typename Operation::RunState run;
         std::vector<int> seeds;
         std::vector<SurfacePoint> seedPoints;
         std::vector<SnakeSample> initialSamples;
@@ -449,19 +376,19 @@ public:
     };
     Memento Save() const
     {
-        return Memento{st, stats, run.Get(), seedVertices, seedPoints, initialSamples, initialPolyline};
+        return Memento{st, stats, op.GetRunState(), seedVertices, seedPoints, initialSamples, initialPolyline};
     }
     void Restore(const Memento &m)
     {
         st = m.curve;
         stats = m.stats;
-        run.Set(m.run);
+        op.SetRunState(m.run);
         seedVertices = m.seeds;
         seedPoints = m.seedPoints;
         initialSamples = m.initialSamples;
         initialPolyline = m.initialPolyline;
-        inserted.clear();
-        clearCaches();
+        op.ForgetInserted();
+        op.ClearCaches();
     }
 
 private:
@@ -491,89 +418,22 @@ private:
     void pushUndo()
     {
         history.Push(st);
-        inserted.clear(); // every change ends what the last operation inserted
-    }
-
-    /// Before an operation: an open snake that lengthened gets samples in its long gaps
-    /// (SnakeGapRefine); the kept embeddings and the convergence test follow them.
-    void refine()
-    {
-        const int before = int(st.samples.size());
-        inserted = Refine::Refine(*surf, st);
-        if (inserted.empty()) return;
-        motion.SamplesInserted(inserted, before, st.closed);
-        run.SamplesInserted(inserted);
-    }
-
-    SnakeMotionFrame frame() const
-    {
-        SnakeMotionFrame f;
-        f.level = run.Level();
-        f.unit = st.unit;
-        // a coarse level's slopes are gentler by its reach: scale its force back up
-        const double reach = surf->EnergyField().Reach(f.level);
-        if (reach > 0 && st.unit > 0) f.gain = std::min(16.0, std::max(1.0, reach / st.unit));
-        if (st.closed && st.params.balloon != 0) f.outside = orientation();
-        return f;
-    }
-
-    /// +1 when the closed curve runs counter-clockwise seen from the front of the surface it
-    /// encloses (its vector area agrees with the normals of the faces under it), else -1.
-    double orientation() const
-    {
-        std::vector<vcg::Point3d> p = positions();
-        vcg::Point3d area(0, 0, 0), normal(0, 0, 0), c(0, 0, 0);
-        for (const auto &x : p) c += x;
-        c /= double(p.size());
-        for (size_t i = 0; i < p.size(); ++i) area += (p[i] - c) ^ (p[(i + 1) % p.size()] - c);
-        for (const auto &s : st.samples) normal += surf->FaceNormal(s.p.face);
-        return area * normal >= 0 ? 1.0 : -1.0;
+        op.ForgetInserted(); // every change ends what the last operation inserted
     }
 
     /// keepLevel: a point edit (Sec. 5.5), the run goes on on the energy level it had reached
     /// (SnakeRunControl::Reset).
     void resetRun(bool keepLevel = false)
     {
-        motion.ForgetEmbeddings(); // samples were placed anew: regions are built around them
+        op.Reset(keepLevel); // samples were placed anew: regions are built around them
         for (auto &smp : st.samples) {
             smp.trust = 1.0;
             smp.heldFine = false;
         }
-        run.Reset(keepLevel);
         stats.converged = false;
         stats.stopped = false;
         stats.stop = SnakeStop::Running;
         stats.stopMessage.clear();
-    }
-    // ----- partitioning (Sec. 5.1): snake/partition.h, checked before any sample moves
-    std::vector<Segment> partition(std::vector<Segment> &overlaps) const
-    {
-        const int n = int(st.samples.size());
-        SnakePartition::Result r =
-            SnakePartition::Compute(n, st.closed, st.params.segmentSamples, SnakePartition::Corners(positions(), st.closed));
-        SnakePartition::Check(r, n, st.closed);
-        overlaps = std::move(r.overlaps);
-        return std::move(r.segments);
-    }
-
-    // ----- the embedding method (Sec. 5.2 - 5.4)
-    void stepEmbedding()
-    {
-        std::vector<Segment> overlaps;
-        std::vector<Segment> segs = partition(overlaps);
-        motion.BeginOperation();
-        for (auto &s : segs) motion.Move(st, stats, s, st.params.updatesPerOperation, frame());
-        for (auto &s : overlaps) motion.Move(st, stats, s, st.params.updatesPerOperation, frame());
-    }
-
-    /// Retraces every gap (no motion): one embedding per segment.
-    void retrace()
-    {
-        std::vector<Segment> overlaps;
-        std::vector<Segment> segs = partition(overlaps);
-        motion.BeginOperation();
-        for (auto &s : segs) motion.Move(st, stats, s, 0, frame());
-        for (auto &s : overlaps) motion.Move(st, stats, s, 0, frame());
     }
 };
 

@@ -58,6 +58,42 @@ public:
         return out;
     }
 
+    /// Takes `polyline` (the samples in order and the crossings between them, as Points gives)
+    /// as c's traced gaps instead of tracing them anew (GeometricSnake::KeepPolyline). Returns
+    /// false, changing nothing, when the polyline does not run through the samples in order or
+    /// is not on the mesh.
+    static bool Keep(const Surface &surf, SnakeCurve &c, const std::vector<SurfacePoint> &polyline)
+    {
+        const int n = int(c.samples.size()), gaps = c.NumGaps();
+        auto isSample = [&](const SurfacePoint &p, int i) {
+            const SurfacePoint &s = c.samples[i % n].p;
+            return p.face == s.face && (p.bary - s.bary).Norm() <= 1e-9;
+        };
+        if (n < 2 || polyline.empty() || !isSample(polyline[0], 0)) return false;
+        for (const auto &p : polyline)
+            if (!p.OnMesh(surf.Mesh())) return false;
+        std::vector<std::vector<SurfacePoint>> crossings(gaps);
+        size_t at = 0;
+        for (int g = 0; g < gaps; ++g) {
+            const bool last = c.closed && g == n - 1; // runs to the polyline's end
+            size_t next = at + 1;
+            while (next < polyline.size() && !(!last && isSample(polyline[next], g + 1))) ++next;
+            if (!last && next == polyline.size()) return false;
+            crossings[g].assign(polyline.begin() + at + 1, polyline.begin() + next);
+            at = next;
+        }
+        if (!c.closed && at + 1 != polyline.size()) return false;
+        for (int g = 0; g < gaps; ++g) {
+            SnakeGap &gap = c.gaps[g];
+            gap = SnakeGap();
+            gap.crossings = crossings[g];
+            gap.traced = true; // as read: no tightening (gap.faces empty: the motion finds them)
+            gap.tracedFrom = c.samples[g].p;
+            gap.tracedTo = c.samples[(g + 1) % n].p;
+        }
+        return true;
+    }
+
     /// The shortest path through each traced gap's faces (paths/path_tighten.h), once per trace,
     /// where the polyline is read: the motion does not read the crossings.
     static void Tighten(const Surface &surf, SnakeCurve &c)

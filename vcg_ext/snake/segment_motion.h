@@ -55,11 +55,9 @@ public:
     }
     /// Forget the kept embeddings (samples were edited, inserted or deleted).
     void ForgetEmbeddings() { kept.Clear(); }
-    /// Samples were inserted (SnakeGapRefine): the kept embeddings follow them.
-    void SamplesInserted(const std::vector<int> &inserted, int before, bool closed)
-    {
-        kept.SamplesInserted(inserted, before, closed);
-    }
+    /// Samples were inserted into an open snake of `before` samples (SnakeGapRefine inserts
+    /// none into closed ones): the kept embeddings follow them.
+    void SamplesInserted(const std::vector<int> &inserted, int before) { kept.SamplesInserted(inserted, before); }
     /// How many embeddings are kept (one may serve several segments).
     int KeptEmbeddings() const { return kept.Count(); }
     /// A new operation (SnakeKeptEmbeddings::BeginOperation).
