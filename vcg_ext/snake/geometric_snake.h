@@ -18,7 +18,7 @@
 #include <vcg_ext/snake/gap_refine.h>
 #include <vcg_ext/snake/polyline.h>
 #include <vcg_ext/snake/run_control.h>
-#include <vcg_ext/snake/snake_operation.h>
+#include <vcg_ext/snake/operation.h>
 #include <vcg_ext/surface/snake_surface.h>
 #include <vcg_ext/surface/surface_point.h>
 
@@ -29,7 +29,7 @@ namespace tri {
 /// batch filter and by the edit tool: create, step, run, edit points, pin, insert, delete,
 /// change parameters, undo and redo. Samples are surface points (face + barycentric); a
 /// snake never leaves the surface and never loses its pins. The operations that move it are
-/// SnakeOperation's (snake/snake_operation.h); this keeps the curve, its history and edits.
+/// SnakeOperation's (snake/operation.h); this keeps the curve, its history and edits.
 template <class MeshType>
 class GeometricSnake
 {

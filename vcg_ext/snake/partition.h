@@ -4,7 +4,7 @@
 // Partitioning of a snake into segments, Lee & Lee 2002 Section 5.1: a long snake is moved
 // piece by piece, each piece in the plane of its own local embedding, and overlapping pieces
 // across the borders smooth the joints (Fig. 2). Only sample indices are computed here; the
-// operation (snake/snake_operation.h) builds the regions and moves the samples.
+// operation (snake/operation.h) builds the regions and moves the samples.
 
 #include <algorithm>
 #include <cstdint>
