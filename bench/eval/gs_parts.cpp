@@ -103,7 +103,6 @@ int main(int argc, char **argv)
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
-        else if (a == "--salience-toward") vlp.salience.toward = std::stod(next());
         else if (a == "--salience-margin") vlp.salience.margin = std::stod(next());
         else if (a == "--energy") {
             energies.clear();

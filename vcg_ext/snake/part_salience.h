@@ -52,11 +52,6 @@ public:
         /// mesh (a waist) cuts off no part (without it the generated waist with edge lengths
         /// graded 20x moved 1.95 waist edges off).
         double maxPart = 1.0 / 3;
-        /// A candidate farther into the body that is cheaper per length than the best so far
-        /// replaces it when it scores below toward x the best (0: off; session 24, measured
-        /// and not adopted: 1.05 154/220, 1.08 and 1.1 152/220, the hand's fingers move into
-        /// the palm; docs/method.md, "Session 24, salience").
-        double toward = 0;
     };
 
     /// The sides of a loop of vertex indices: the mesh's vertices without the loop's, joined by
@@ -198,7 +193,7 @@ public:
         auto score = [&](double c, double L, double A) {
             return c / L * std::pow(L / std::sqrt(std::max(A, 1e-30)), par.exponent);
         };
-        double bestScore = score(cost, L0, A0), bestCpl = cost / L0;
+        double bestScore = score(cost, L0, A0);
         std::vector<int> best = loop;
         // distance from the loop into the body, along edges, as far as the guides below read it:
         // every vertex nearer than `reach` and its neighbours
@@ -276,8 +271,7 @@ public:
             while (!(s0.known > A / mp) && s0.Step()) {} // the mesh's area as far as the test needs it
             if (!(A < mp * s0.known)) continue;
             const double sc2 = score(c, L, A);
-            if (sc2 < par.margin * bestScore || (c / L < bestCpl && sc2 < par.toward * bestScore))
-                bestScore = sc2, bestCpl = c / L, best = cand;
+            if (sc2 < par.margin * bestScore) bestScore = sc2, best = cand;
         }
         return best;
     }
