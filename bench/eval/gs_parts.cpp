@@ -195,12 +195,7 @@ int main(int argc, char **argv)
                             for (int v : p.loop) eCut += md.mesh.vert[v].Q() / double(p.loop.size());
                             std::vector<int> sr;
                             for (const auto &x : gs_parts::ResampleLoop(loop, 0.5 * md.h)) {
-                                size_t bv = 0;
-                                double bd = 1e300;
-                                for (size_t v = 0; v < md.mesh.vert.size(); ++v) {
-                                    const double d = vcg::SquaredDistance(vcg::Point3d::Construct(md.mesh.vert[v].cP()), x);
-                                    if (d < bd) bd = d, bv = v;
-                                }
+                                const int bv = gs_test::NearestVertex(md.mesh, x);
                                 const int r = dist[bv] * (sideOf[bv] >= 0 ? 1 : -1);
                                 sr.push_back(r);
                                 eLoop += md.mesh.vert[bv].Q();
@@ -235,12 +230,7 @@ int main(int argc, char **argv)
                             for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
                                 std::vector<int> cl;
                                 for (const auto &x : p.cuts[ci]) {
-                                    size_t bv = 0;
-                                    double bd = 1e300;
-                                    for (size_t v = 0; v < md.mesh.vert.size(); ++v) {
-                                        const double d = vcg::SquaredDistance(vcg::Point3d::Construct(md.mesh.vert[v].cP()), x);
-                                        if (d < bd) bd = d, bv = v;
-                                    }
+                                    const int bv = gs_test::NearestVertex(md.mesh, x);
                                     cl.push_back(int(bv));
                                 }
                                 gs_parts::Part q = p;
@@ -252,8 +242,7 @@ int main(int argc, char **argv)
                             }
                             std::fprintf(stderr, "\n");
                             // the best-covered person's uncovered cut vertices: hop distance from the
-                            // loop, signed + on the part's side, their energy and their largest concave
-                            // dihedral against the loop vertices'
+                            // loop, signed + on the part's side, and their energy against the loop's
                             {
                                 const size_t nv = md.mesh.vert.size();
                                 std::vector<int> hop(nv, -1), comp(nv, -1);
@@ -300,12 +289,7 @@ int main(int argc, char **argv)
                                 double eOff = 0, eOn = 0;
                                 int nOff = 0, nOn = 0;
                                 for (const auto &x : p.cuts[best]) {
-                                    size_t bv = 0;
-                                    double bd = 1e300;
-                                    for (size_t v = 0; v < nv; ++v) {
-                                        const double d = vcg::SquaredDistance(vcg::Point3d::Construct(md.mesh.vert[v].cP()), x);
-                                        if (d < bd) bd = d, bv = v;
-                                    }
+                                    const int bv = gs_test::NearestVertex(md.mesh, x);
                                     if (gs_parts::DistToLoop(x, lp) <= md.h) { eOn += surf->Energy()[bv], ++nOn; continue; }
                                     ++hist[comp[bv] == partComp ? hop[bv] : -hop[bv]];
                                     eOff += surf->Energy()[bv], ++nOff;
