@@ -21,7 +21,9 @@
 //   holding 90 % of the loop and 90 % covered by it. GS_PARTS_COST=1: per loop, the valley loop's
 //   price of the loop and of each person's cut, in parts (energy E, length L, concavity C,
 //   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
-//   loop, + on the part's side, with their energy against the loop's.)
+//   loop, + on the part's side, with their energy against the loop's. GS_PARTS_STAGES=1: per
+//   loop, its length, capture and coverage after each stage of the Run's end: the snake's own
+//   loop, the first band's valley loop, the descent over bands, part salience.)
 //   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
 //   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
@@ -179,6 +181,26 @@ int main(int argc, char **argv)
                         const auto c0 = std::chrono::steady_clock::now();
                         s.Run(maxOps);
                         const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
+                        if (std::getenv("GS_PARTS_STAGES") && valleyLoop) {
+                            // capture/coverage after each stage of the Run's end: the snake's own loop,
+                            // the first band's valley loop, the descent, part salience
+                            std::fprintf(stderr, "STAGES %d %d %s %d |", id, p.index, side > 0 ? "in" : "out", ring);
+                            for (int st = 0; st < 4; ++st) {
+                                Snake t(surf, sp); // not copyable: the same Run again (deterministic)
+                                t.InitFromSeeds(seeds, true);
+                                t.Run(maxOps);
+                                ValleyLoop<CMeshO>::Param q = vlp;
+                                if (st < 3) q.salience.exponent = 0;
+                                if (st < 2) q.iterations = 1;
+                                if (st > 0) ValleyLoop<CMeshO>::FinishRun(t, ty->second, false, q);
+                                const std::vector<vcg::Point3d> tl = t.PolylinePositions();
+                                const gs_parts::Score ts = gs_parts::Measure(tl, p, md.h, md.h);
+                                static const char *names[] = {"snake", "band", "descent", "salience"};
+                                std::fprintf(stderr, " %s L=%.1fh %.2f/%.2f |", names[st], gs_parts::LoopLength(tl) / md.h,
+                                             ts.capture, ts.coverage);
+                            }
+                            std::fprintf(stderr, "\n");
+                        }
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host
                         if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
