@@ -10,7 +10,8 @@
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
-//   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale)
+//   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale; --valley-keep K:
+//   its keepWithin, the snake's own loop kept when the edge loop is within K units of it)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -21,7 +22,12 @@
 //   holding 90 % of the loop and 90 % covered by it. GS_PARTS_COST=1: per loop, the valley loop's
 //   price of the loop and of each person's cut, in parts (energy E, length L, concavity C,
 //   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
-//   loop, + on the part's side, with their energy against the loop's.)
+//   loop, + on the part's side, with their energy against the loop's. GS_PARTS_VL=1: per loop, the
+//   snake's own loop before ValleyLoop::FinishRun, the edge loop it chose (the final polyline's
+//   points on vertices) and the final polyline, each scored (capture/coverage), the final
+//   polyline's largest distance from the edge loop, the share of each of the snake's and the
+//   edge loop beyond 1 h of the other, and (VLP) the planarity (rms off the fitted plane, in h)
+//   and total turning of the snake's loop, the edge loop and the best-covered person's cut.)
 //   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
 //   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
@@ -45,6 +51,7 @@
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/snake/geometric_snake.h>
 #include <vcg_ext/snake/valley_loop.h>
+#include <vcg/space/fitting3.h>
 
 using namespace vcg::tri;
 typedef GeometricSnake<CMeshO> Snake;
@@ -100,6 +107,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
         else if (a == "--valley-cscale") vlp.concavityScale = std::stod(next());
         else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
+        else if (a == "--valley-keep") vlp.keepWithin = std::stod(next());
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
@@ -180,8 +188,73 @@ int main(int argc, char **argv)
                         s.Run(maxOps);
                         const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host
+                        const std::vector<vcg::Point3d> snakeLoop = s.PolylinePositions();
                         if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
+                        if (std::getenv("GS_PARTS_VL")) {
+                            // the snake's own loop, the edge loop the valley loop chose (the
+                            // polyline's points on vertices), and the final polyline scored alike
+                            std::vector<vcg::Point3d> vpos;
+                            double dev = 0;
+                            for (const auto &x : s.Polyline())
+                                for (int k = 0; k < 3; ++k)
+                                    if (x.bary[k] > 1 - 1e-9) {
+                                        const vcg::Point3d q = vcg::Point3d::Construct(md.mesh.face[x.face].cV(k)->cP());
+                                        if (vpos.empty() || (vpos.back() - q).Norm() > 0) vpos.push_back(q);
+                                    }
+                            if (vpos.size() > 1 && (vpos.front() - vpos.back()).Norm() == 0) vpos.pop_back();
+                            for (const auto &x : loop) dev = std::max(dev, gs_parts::DistToLoop(x, vpos));
+                            const gs_parts::Score a = gs_parts::Measure(snakeLoop, p, md.h, md.h);
+                            const gs_parts::Score b = gs_parts::Measure(vpos, p, md.h, md.h);
+                            const gs_parts::Score c = gs_parts::Measure(loop, p, md.h, md.h);
+                            // how far the edge loop leaves the snake's loop: share of each beyond 1 h of the other
+                            double far1 = 0, far2 = 0, mx1 = 0, mx2 = 0;
+                            {
+                                const auto ps = gs_parts::ResampleLoop(vpos.size() > 2 ? vpos : loop, 0.25 * md.h);
+                                for (const auto &x : ps) { const double d = gs_parts::DistToLoop(x, snakeLoop) / md.h; far1 += d > 1; mx1 = std::max(mx1, d); }
+                                far1 /= std::max<size_t>(1, ps.size());
+                                const auto qs = gs_parts::ResampleLoop(snakeLoop, 0.25 * md.h);
+                                for (const auto &x : qs) { const double d = gs_parts::DistToLoop(x, vpos.size() > 2 ? vpos : loop) / md.h; far2 += d > 1; mx2 = std::max(mx2, d); }
+                                far2 /= std::max<size_t>(1, qs.size());
+                            }
+                            std::fprintf(stderr, "VLD %d %d %s %d far %.3f %.3f max %.2f %.2f Lsnake %.1f Ledge %.1f\n", id, p.index,
+                                         side > 0 ? "in" : "out", ring, far1, far2, mx1, mx2, gs_parts::LoopLength(snakeLoop) / md.h,
+                                         gs_parts::LoopLength(loop) / md.h);
+                            {
+                                // planarity (rms off the fitted plane, in h) and total turning of
+                                // the snake's loop, the edge loop and the best-covered person's cut
+                                auto shape = [&](const std::vector<vcg::Point3d> &l, double &rms, double &turn) {
+                                    const auto ps = gs_parts::ResampleLoop(l, 0.25 * md.h);
+                                    vcg::Plane3d pl;
+                                    vcg::FitPlaneToPointSet(ps, pl);
+                                    rms = 0;
+                                    for (const auto &x : ps) rms += std::pow(vcg::SignedDistancePlanePoint(pl, x), 2);
+                                    rms = std::sqrt(rms / std::max<size_t>(1, ps.size())) / md.h;
+                                    turn = 0;
+                                    for (size_t i = 0; i < l.size(); ++i) {
+                                        const vcg::Point3d a = l[(i + l.size() - 1) % l.size()], b = l[i], c = l[(i + 1) % l.size()];
+                                        if ((b - a).Norm() > 0 && (c - b).Norm() > 0) turn += vcg::Angle(b - a, c - b);
+                                    }
+                                };
+                                size_t best = 0;
+                                double bc = -1;
+                                for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
+                                    gs_parts::Part q = p;
+                                    q.cuts = {p.cuts[ci]};
+                                    const double cv = gs_parts::Measure(vpos.size() > 2 ? vpos : loop, q, md.h, md.h).coverage;
+                                    if (cv > bc) bc = cv, best = ci;
+                                }
+                                double r1, t1, r2, t2, r3, t3;
+                                shape(snakeLoop, r1, t1);
+                                shape(vpos.size() > 2 ? vpos : loop, r2, t2);
+                                shape(p.cuts[best], r3, t3);
+                                std::fprintf(stderr, "VLP %d %d %s %d rms snake %.3f edge %.3f cut %.3f turn snake %.2f edge %.2f cut %.2f n %zu %zu\n",
+                                             id, p.index, side > 0 ? "in" : "out", ring, r1, r2, r3, t1, t2, t3, vpos.size(), p.cuts[best].size());
+                            }
+                            std::fprintf(stderr, "VL %d %d %s %d snake %.3f/%.3f edge %.3f/%.3f (%zu v) final %.3f/%.3f dev %.4f h\n",
+                                         id, p.index, side > 0 ? "in" : "out", ring, a.capture, a.coverage, b.capture,
+                                         b.coverage, vpos.size(), c.capture, c.coverage, dev / md.h);
+                        }
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
                         const bool point = L1 < 0.25 * L0 || s.Stats().stopped;

@@ -85,6 +85,9 @@ public:
         int iterations = 8;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
+        /// The snake's own loop is kept when the chosen edge loop lies within keepWithin length
+        /// units of it all round, both ways (0 turns this off).
+        double keepWithin = 0.0;
     };
 
     /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
@@ -135,6 +138,11 @@ public:
                 return band.Dist(p, at) <= band.w;
             };
             vl = PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);
+        }
+        if (par.keepWithin > 0 && vl.size() >= 3) {
+            std::vector<vcg::Point3d> pl;
+            for (int v : vl) pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+            if (Within(pl, loop, par.keepWithin * h) && Within(loop, pl, par.keepWithin * h)) return false;
         }
         s.SetClosedVertexLoop(vl);
         return true;
@@ -378,6 +386,21 @@ private:
 
     /// The loop's segments with their arc lengths, and a bounding sphere each, so that a
     /// point tests in full only the segments that can be within w of it.
+    // every point of closed polyline a, sampled at w / 4, within w of closed polyline b
+    static bool Within(const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b, double w)
+    {
+        const LoopIndex li(b, w);
+        for (size_t i = 0; i < a.size(); ++i) {
+            const vcg::Point3d &p = a[i], &q = a[(i + 1) % a.size()];
+            const int k = std::max(1, int(std::ceil(vcg::Distance(p, q) / (0.25 * w))));
+            for (int j = 0; j < k; ++j) {
+                double at = -1;
+                if (!(li.Dist(p + (q - p) * (double(j) / k), at) <= w)) return false;
+            }
+        }
+        return true;
+    }
+
     struct LoopIndex
     {
         const std::vector<vcg::Point3d> &l;
