@@ -11,7 +11,8 @@
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
 //   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale; --valley-keep K:
-//   its keepWithin, the snake's own loop kept when the edge loop is within K units of it)
+//   its keepWithin, the snake's own loop kept when the edge loop is within K units of it;
+//   --valley-pull P: its pull, a cost per length P (d/h)^2 for the distance d from the snake's loop)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -108,6 +109,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-cscale") vlp.concavityScale = std::stod(next());
         else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
         else if (a == "--valley-keep") vlp.keepWithin = std::stod(next());
+        else if (a == "--valley-pull") vlp.pull = std::stod(next());
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());

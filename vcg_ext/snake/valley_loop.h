@@ -88,6 +88,10 @@ public:
         /// The snake's own loop is kept when the chosen edge loop lies within keepWithin length
         /// units of it all round, both ways (0 turns this off).
         double keepWithin = 0.0;
+        /// Cost per length of being d away from the snake's own loop: pull * (d / h)^2, d capped
+        /// at the band (0 turns it off); the band search and the descent only, not salience.
+        double pull = 0.0;
+        const std::vector<vcg::Point3d> *anchor = nullptr; // set by FinishRun
     };
 
     /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
@@ -108,6 +112,7 @@ public:
         const auto &energy = s.GetSurface().Energy();
         const double h = s.LengthScale();
         double ref = -1, cost = 0;
+        if (par.pull > 0) par.anchor = &loop;
         std::vector<int> vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
         double len0 = 0;
         for (size_t i = 0; i < loop.size(); ++i) len0 += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
@@ -120,6 +125,13 @@ public:
         }
         if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return false;
         vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
+        if (par.anchor) {
+            // salience prices loops without the pull
+            par.anchor = nullptr;
+            double e, l, c;
+            CostParts(m, vl, energy, ref, e, l, c);
+            cost = e + par.lambda * l + par.concavityWeight * c;
+        }
         if (par.salience.exponent > 0) {
             // candidates round the same part, each found and descended like this loop, but only
             // those mostly beyond the band the descent searched: within it its choice stands
@@ -240,6 +252,16 @@ public:
             }
             refIo = ref;
         }
+        // the pull towards the snake's own loop, per vertex (Param::pull)
+        std::vector<double> pullOf(nb, 0.0);
+        if (par.anchor && par.pull > 0) {
+            const LoopIndex ai(*par.anchor, par.bandWidth * h);
+            for (int i = 0; i < nb; ++i) {
+                double at = -1;
+                const double d = std::min(ai.Dist(vcg::Point3d::Construct(m.vert[vert[i]].cP()), at), ai.w) / h;
+                pullOf[i] = par.pull * d * d;
+            }
+        }
         // adj[a][i] joins a to b with the cost per length that does not depend on the energy
         std::vector<std::vector<std::pair<int, double>>> adj(nb);
         for (int fi : faces) {
@@ -248,7 +270,7 @@ public:
                 const int a = idOf(f.cV(k)), b = idOf(f.cV((k + 1) % 3));
                 if (a < 0 || b < 0) continue;
                 const double c = ref > 0 ? std::min(1.0, bend[key(a, b)] / ref) : 0.0;
-                const double w = par.lambda + par.concavityWeight * (1 - c);
+                const double w = par.lambda + par.concavityWeight * (1 - c) + 0.5 * (pullOf[a] + pullOf[b]);
                 adj[a].push_back({b, w}); // an interior edge twice (once per face): harmless
                 adj[b].push_back({a, w});
             }
