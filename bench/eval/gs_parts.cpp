@@ -10,9 +10,7 @@
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
-//   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale; --valley-keep K:
-//   its keepWithin, the snake's own loop kept when the edge loop is within K units of it;
-//   --valley-pull P: its pull, a cost per length P (d/h)^2 for the distance d from the snake's loop)
+//   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -23,9 +21,9 @@
 //   holding 90 % of the loop and 90 % covered by it. GS_PARTS_COST=1: per loop, the valley loop's
 //   price of the loop and of each person's cut, in parts (energy E, length L, concavity C,
 //   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
-//   loop, + on the part's side, with their energy against the loop's. GS_PARTS_VL=1: per loop, the
-//   snake's own loop before ValleyLoop::FinishRun, the edge loop it chose (the final polyline's
-//   points on vertices) and the final polyline, each scored (capture/coverage), the final
+//   loop, + on the part's side, with their energy against the loop's. GS_PARTS_VL=1: per loop that
+//   ValleyLoop::FinishRun replaced, the snake's own loop before it, the edge loop it chose (the
+//   final polyline's points on vertices) and the final polyline, each scored (capture/coverage), the final
 //   polyline's largest distance from the edge loop, the share of each of the snake's and the
 //   edge loop beyond 1 h of the other, and (VLP) the planarity (rms off the fitted plane, in h)
 //   and total turning of the snake's loop, the edge loop and the best-covered person's cut.)
@@ -108,8 +106,6 @@ int main(int argc, char **argv)
         else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
         else if (a == "--valley-cscale") vlp.concavityScale = std::stod(next());
         else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
-        else if (a == "--valley-keep") vlp.keepWithin = std::stod(next());
-        else if (a == "--valley-pull") vlp.pull = std::stod(next());
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
@@ -191,9 +187,9 @@ int main(int argc, char **argv)
                         const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host
                         const std::vector<vcg::Point3d> snakeLoop = s.PolylinePositions();
-                        if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp);
+                        const bool replaced = valleyLoop && ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
-                        if (std::getenv("GS_PARTS_VL")) {
+                        if (std::getenv("GS_PARTS_VL") && replaced) {
                             // the snake's own loop, the edge loop the valley loop chose (the
                             // polyline's points on vertices), and the final polyline scored alike
                             std::vector<vcg::Point3d> vpos;

@@ -85,13 +85,6 @@ public:
         int iterations = 8;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
-        /// The snake's own loop is kept when the chosen edge loop lies within keepWithin length
-        /// units of it all round, both ways (0 turns this off).
-        double keepWithin = 0.0;
-        /// Cost per length of being d away from the snake's own loop: pull * (d / h)^2, d capped
-        /// at the band (0 turns it off); the band search and the descent only, not salience.
-        double pull = 0.0;
-        const std::vector<vcg::Point3d> *anchor = nullptr; // set by FinishRun
     };
 
     /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
@@ -112,7 +105,6 @@ public:
         const auto &energy = s.GetSurface().Energy();
         const double h = s.LengthScale();
         double ref = -1, cost = 0;
-        if (par.pull > 0) par.anchor = &loop;
         std::vector<int> vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
         double len0 = 0;
         for (size_t i = 0; i < loop.size(); ++i) len0 += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
@@ -125,13 +117,6 @@ public:
         }
         if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return false;
         vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
-        if (par.anchor) {
-            // salience prices loops without the pull
-            par.anchor = nullptr;
-            double e, l, c;
-            CostParts(m, vl, energy, ref, e, l, c);
-            cost = e + par.lambda * l + par.concavityWeight * c;
-        }
         if (par.salience.exponent > 0) {
             // candidates round the same part, each found and descended like this loop, but only
             // those mostly beyond the band the descent searched: within it its choice stands
@@ -150,11 +135,6 @@ public:
                 return band.Dist(p, at) <= band.w;
             };
             vl = PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);
-        }
-        if (par.keepWithin > 0 && vl.size() >= 3) {
-            std::vector<vcg::Point3d> pl;
-            for (int v : vl) pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-            if (Within(pl, loop, par.keepWithin * h) && Within(loop, pl, par.keepWithin * h)) return false;
         }
         s.SetClosedVertexLoop(vl);
         return true;
@@ -252,16 +232,6 @@ public:
             }
             refIo = ref;
         }
-        // the pull towards the snake's own loop, per vertex (Param::pull)
-        std::vector<double> pullOf(nb, 0.0);
-        if (par.anchor && par.pull > 0) {
-            const LoopIndex ai(*par.anchor, par.bandWidth * h);
-            for (int i = 0; i < nb; ++i) {
-                double at = -1;
-                const double d = std::min(ai.Dist(vcg::Point3d::Construct(m.vert[vert[i]].cP()), at), ai.w) / h;
-                pullOf[i] = par.pull * d * d;
-            }
-        }
         // adj[a][i] joins a to b with the cost per length that does not depend on the energy
         std::vector<std::vector<std::pair<int, double>>> adj(nb);
         for (int fi : faces) {
@@ -270,7 +240,7 @@ public:
                 const int a = idOf(f.cV(k)), b = idOf(f.cV((k + 1) % 3));
                 if (a < 0 || b < 0) continue;
                 const double c = ref > 0 ? std::min(1.0, bend[key(a, b)] / ref) : 0.0;
-                const double w = par.lambda + par.concavityWeight * (1 - c) + 0.5 * (pullOf[a] + pullOf[b]);
+                const double w = par.lambda + par.concavityWeight * (1 - c);
                 adj[a].push_back({b, w}); // an interior edge twice (once per face): harmless
                 adj[b].push_back({a, w});
             }
@@ -408,21 +378,6 @@ private:
 
     /// The loop's segments with their arc lengths, and a bounding sphere each, so that a
     /// point tests in full only the segments that can be within w of it.
-    // every point of closed polyline a, sampled at w / 4, within w of closed polyline b
-    static bool Within(const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b, double w)
-    {
-        const LoopIndex li(b, w);
-        for (size_t i = 0; i < a.size(); ++i) {
-            const vcg::Point3d &p = a[i], &q = a[(i + 1) % a.size()];
-            const int k = std::max(1, int(std::ceil(vcg::Distance(p, q) / (0.25 * w))));
-            for (int j = 0; j < k; ++j) {
-                double at = -1;
-                if (!(li.Dist(p + (q - p) * (double(j) / k), at) <= w)) return false;
-            }
-        }
-        return true;
-    }
-
     struct LoopIndex
     {
         const std::vector<vcg::Point3d> &l;
