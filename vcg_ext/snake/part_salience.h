@@ -284,6 +284,18 @@ public:
         return len;
     }
 
+    /// fn(face, v's index in it) for the live faces round vertex v (VF adjacency).
+    template <class Fn>
+    static void ForFaces(const MeshType &m, int v, Fn fn)
+    {
+        const typename MeshType::VertexType *p = &m.vert[v];
+        for (const FaceType *f = p->cVFp(), *next = nullptr; f; f = next) {
+            const int z = (f->cV(0) == p) ? 0 : (f->cV(1) == p ? 1 : 2);
+            next = f->cVFp(z);
+            if (!f->IsD()) fn(f, z);
+        }
+    }
+
 private:
     /// The boundary of the faces whose vertices are all off the body or nearer than d to the
     /// loop (the level d of the distance into the body), ordered, or empty when it is not one
@@ -303,23 +315,24 @@ private:
         for (const auto &od : dist) { // the body's vertices the distance reached (within the steps searched)
             const int o = od.first;
             if (m.vert[o].IsD() || in(o)) continue;
-            for (const FaceType *f = m.vert[o].cVFp(), *nf = nullptr; f; f = nf) {
-                const int z = f->cV(0) == &m.vert[o] ? 0 : (f->cV(1) == &m.vert[o] ? 1 : 2);
-                nf = f->cVFp(z);
-                if (f->IsD()) continue;
+            bool simple = true;
+            ForFaces(m, o, [&](const FaceType *f, int z) {
+                if (!simple) return;
                 const int a = index(m, f->cV((z + 1) % 3)), b = index(m, f->cV((z + 2) % 3));
-                if (!in(a) || !in(b)) continue;
-                // the face across a-b from f: wholly in, or a-b is no boundary edge
+                if (!in(a) || !in(b)) return;
+                // the face across a-b from f: wholly in, or a-b is no boundary edge (deleted
+                // faces still in a's VF list count: not ForFaces)
                 const FaceType *g = nullptr;
                 for (const FaceType *e = m.vert[a].cVFp(), *ne = nullptr; e; e = ne) {
                     const int za = e->cV(0) == &m.vert[a] ? 0 : (e->cV(1) == &m.vert[a] ? 1 : 2);
                     ne = e->cVFp(za);
                     if (e != f && (e->cV(0) == &m.vert[b] || e->cV(1) == &m.vert[b] || e->cV(2) == &m.vert[b])) g = e;
                 }
-                if (!g || !wholly(g)) continue;
-                if (next.count(b)) return {}; // not one simple loop
-                next[b] = a;
-            }
+                if (!g || !wholly(g)) return;
+                if (next.count(b)) simple = false; // not one simple loop
+                else next[b] = a;
+            });
+            if (!simple) return {};
         }
         if (next.size() < 3) return {};
         std::vector<int> out;
@@ -335,18 +348,6 @@ private:
     }
 
     static int index(const MeshType &m, const typename MeshType::VertexType *v) { return int(v - &m.vert[0]); }
-
-    /// fn(face, v's index in it) for the live faces round vertex v (VF adjacency).
-    template <class Fn>
-    static void ForFaces(const MeshType &m, int v, Fn fn)
-    {
-        const typename MeshType::VertexType *p = &m.vert[v];
-        for (const FaceType *f = p->cVFp(), *next = nullptr; f; f = next) {
-            const int z = (f->cV(0) == p) ? 0 : (f->cV(1) == p ? 1 : 2);
-            next = f->cVFp(z);
-            if (!f->IsD()) fn(f, z);
-        }
-    }
 
     /// v's neighbours in the order a pass over the faces by index lists them (each edge of each
     /// face, both ways), so that ties in the guide's walk go as they did with whole-mesh lists.

@@ -339,12 +339,9 @@ public:
             const int a = vl[i], b = vl[(i + 1) % vl.size()];
             const VertexType *va = &m.vert[a], *vb = &m.vert[b];
             const FaceType *f0 = nullptr, *f1 = nullptr;
-            for (const FaceType *f = va->cVFp(), *next = nullptr; f; f = next) {
-                const int z = (f->cV(0) == va) ? 0 : (f->cV(1) == va ? 1 : 2);
-                next = f->cVFp(z);
-                if (f->IsD() || !(f->cV(0) == vb || f->cV(1) == vb || f->cV(2) == vb)) continue;
-                (f0 ? f1 : f0) = f;
-            }
+            PartSalience<MeshType>::ForFaces(m, a, [&](const FaceType *f, int) {
+                if (f->cV(0) == vb || f->cV(1) == vb || f->cV(2) == vb) (f0 ? f1 : f0) = f;
+            });
             const double len = vcg::Distance(va->cP(), vb->cP());
             const double c = ref > 0 ? std::min(1.0, ConcaveAngle(f0, f1) / ref) : 0.0;
             eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
@@ -359,7 +356,8 @@ private:
 
     /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
     /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
-    /// the edge has one face.
+    /// the edge has one face. (Not vcg::face::DihedralAngleRad: that one is in the mesh's
+    /// scalar, float for CMeshO, and needs FF adjacency.)
     static double ConcaveAngle(const FaceType *f0, const FaceType *f1)
     {
         if (!f0 || !f1) return 0;
