@@ -83,6 +83,9 @@ private:
     double runCompute0 = 0, sliceMs = 30;
     qint64 sliceEnd = -1;
     int runOps0 = 0;
+    // the loop the Run started from, for ValleyLoop::FinishRun (a loop that shrinks far)
+    std::vector<vcg::Point3d> runSeedLoop;
+    std::vector<int> runSeedFaces;
     bool keysOwned = false;
     bool hidePending = false;
     long exportedRevision = -1;

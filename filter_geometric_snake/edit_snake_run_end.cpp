@@ -42,7 +42,12 @@ void EditGeometricSnakePlugin::reportRunEnd(tri::SnakeStop why)
     const double compute = (ctl->ComputeMs() - runCompute0) / 1000.0, wall = runClock.elapsed() / 1000.0;
     s->EndRun(why, runLimits().Message(why, ops, wall));
     // a converged part-boundary loop ends on the cheapest edge loop round it, as in the filters
-    tri::ValleyLoop<CMeshO>::FinishRun(*s, ctl->EnergyType(), ctl->EnergyFromQuality());
+    // (searched round the loop the Run started from when it shrank far, ValleyLoop::Param::seededShrink)
+    tri::ValleyLoop<CMeshO>::Seeded seeded;
+    seeded.loop = runSeedLoop;
+    seeded.faces = runSeedFaces;
+    tri::ValleyLoop<CMeshO>::FinishRun(*s, ctl->EnergyType(), ctl->EnergyFromQuality(), tri::ValleyLoop<CMeshO>::Param(),
+                                       &seeded);
     const std::string &msg = s->Stats().stopMessage;
     const bool problem = tri::SnakeStopIsProblem(why);
     // the Log line the GUI tests read: the end, compute time vs wall time, the reason

@@ -728,3 +728,60 @@ TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
     ValleyLoop<CMeshO>::CostParts(m, found, flat, ref, e, l, c);
     EXPECT_NEAR(cost, e + par.lambda * l + par.concavityWeight * c, 1e-9 * cost);
 }
+
+// A loop that converged at less than half the length it was seeded with (ValleyLoop::Param::
+// seededShrink, session 25): on the benchmark, outside loops that slid through a leg's narrowing
+// onto the leg (fourleg 381 part 3). On a tall bump (its rim a concave valley 35 edges round):
+// a loop that ended 4 h up the bump (a Run that converged there, set by EndRun as the edit tool
+// does) is brought to the rim when the loop it was seeded with lay 2 h outside the rim, and is
+// left up the bump without it; a loop that converged on the rim stays there although it was
+// seeded on the featureless equator, more than twice as long (the seeded search is taken only
+// when cheaper per length). Measured: up the bump 3.93 h off the rim without the seeded loop
+// (FinishRun finds no ring there), 0.31 h with it; on the rim 0.31 h with an equator seed
+// (16.6 h, on the equator's band, when the seeded search is taken without the price test).
+TEST(ValleyLoop, SearchesRoundTheSeededLoopWhenTheSnakeShrankFar)
+{
+    auto leg = [](double phi) { return 1.0 + 0.8 * std::exp(-std::pow(phi / 0.25, 2)); };
+    const double rim = RimOf(leg);
+    CMeshO m;
+    MakeRevolved(m, leg, 0.0);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const double h = surf->MeanEdge();
+    auto offRim = [&](Snake &s) {
+        double mean = 0;
+        const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
+        for (const P3 &x : loop)
+            mean += std::fabs(std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm()))) - rim) * leg(rim) / h / loop.size();
+        return mean;
+    };
+    Snake outside(surf);
+    outside.InitFromSeeds(RingSeeds(m, leg, rim + 2 * h / leg(rim)), true);
+    const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(outside);
+    const ValleyLoop<CMeshO>::Param par;
+    double off[2] = {0, 0};
+    for (int with : {0, 1}) {
+        Snake up(surf);
+        up.InitFromSeeds(RingSeeds(m, leg, rim - 4 * h / leg(rim)), true);
+        up.EndRun(SnakeStop::Converged);
+        ASSERT_LT(gs_parts::LoopLength(up.PolylinePositions()), par.seededShrink * gs_parts::LoopLength(seeded.loop)); // the premise
+        const bool done = ValleyLoop<CMeshO>::FinishRun(up, FeatureEnergyType::PartBoundary, false, par, with ? &seeded : nullptr);
+        if (with) EXPECT_TRUE(done); // without it the bands round the loop cover the bump's top: no ring, the loop stays
+        EXPECT_EQ(up.Stats().stop, SnakeStop::Converged);
+        off[with] = offRim(up);
+    }
+    std::printf("loop up the bump: %.2f h off the rim without the seeded loop, %.2f h with it\n", off[0], off[1]);
+    EXPECT_GT(off[0], 2.0);
+    EXPECT_LT(off[1], 0.6);
+    // a loop that shrank onto the rim from the equator stays on the rim
+    Snake wide(surf);
+    wide.InitFromSeeds(RingSeeds(m, leg, M_PI / 2), true);
+    const auto equator = ValleyLoop<CMeshO>::Seeded::Of(wide);
+    Snake s(surf);
+    s.InitFromSeeds(RingSeeds(m, leg, rim + 2 * h / leg(rim)), true);
+    s.Run(400);
+    ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
+    ASSERT_LT(gs_parts::LoopLength(s.PolylinePositions()), par.seededShrink * gs_parts::LoopLength(equator.loop));
+    ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &equator));
+    std::printf("loop on the rim, seeded on the equator: %.2f h off the rim\n", offRim(s));
+    EXPECT_LT(offRim(s), 0.6);
+}

@@ -178,6 +178,7 @@ int main(int argc, char **argv)
                         Snake s(surf, sp);
                         s.InitFromSeeds(seeds, true);
                         const double L0 = gs_parts::LoopLength(s.PolylinePositions());
+                        const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(s);
                         const auto c0 = std::chrono::steady_clock::now();
                         s.Run(maxOps);
                         const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
@@ -202,7 +203,7 @@ int main(int argc, char **argv)
                             std::fprintf(stderr, "\n");
                         }
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host
-                        if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp);
+                        if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp, &seeded);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);

@@ -90,8 +90,10 @@ public:
         SnakeRunLimits lim;
         lim.maxOperations = s.maxOperations;
         lim.seconds = s.timeLimit;
+        const auto seeded = ValleyLoop<MeshType>::Seeded::Of(snake); // a loop that shrinks far is searched from it
         r.stop = snake.Run(lim, progress);
-        ValleyLoop<MeshType>::FinishRun(snake, ctl.EnergyType(), ctl.EnergyFromQuality());
+        ValleyLoop<MeshType>::FinishRun(snake, ctl.EnergyType(), ctl.EnergyFromQuality(),
+                                        typename ValleyLoop<MeshType>::Param(), &seeded);
         r.stopMessage = snake.Stats().stopMessage;
         r.curve = snake.PolylinePositions();
         for (const auto &x : r.curve)
