@@ -39,6 +39,7 @@
 #include <vcg_ext/cut/cut_curve_io.h>
 #include <vcg_ext/cut/mesh_cut.h>
 #include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/io/seed_list_text.h>
 #include <vcg_ext/io/snake_io.h>
 #include <vcg_ext/paths/seed_path.h>
 #include <vcg_ext/paths/seed_points.h>
@@ -434,7 +435,7 @@ json RunPath(Job &job, CMeshO &m, int mask, json r)
     const ParamValues &v = *job.values;
     const bool closed = v.Bool("Closed");
     const int cost = v.Enum("Cost");
-    const std::vector<int> seeds = SeedPath<CMeshO>::ParseSeeds(v.Text("Seeds"));
+    const std::vector<int> seeds = SeedListText::Parse(v.Text("Seeds"));
     std::string source;
     const std::vector<vcg::Point3d> seedPts = SeedPointsWanted(job, seeds, source);
     MeshValidation<CMeshO>::RequireSurface(m);
@@ -486,7 +487,7 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
 {
     typedef SnakeController<CMeshO> Controller;
     const ParamValues &v = *job.values;
-    const std::vector<int> seeds = SeedPath<CMeshO>::ParseSeeds(v.Text("Seeds")); // as the filter: first
+    const std::vector<int> seeds = SeedListText::Parse(v.Text("Seeds")); // as the filter: first
     const bool closed = v.Bool("Closed");
     const SnakeParams p = SnakeParamDefs::ToSnakeParams(v);
     const int maxOps = v.Int("MaxOperations");

@@ -24,6 +24,7 @@
 #include <vcg_ext/cut/mesh_cut.h>
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/io/safe_file_write.h>
+#include <vcg_ext/io/seed_list_text.h>
 #include <vcg_ext/io/snake_io.h>
 #include <vcg_ext/paths/seed_path.h>
 #include <vcg_ext/paths/seed_points.h>
@@ -420,7 +421,7 @@ bool FilterGeometricSnakePlugin::applySeedPath(MeshDocument &md, const RichParam
 	const int cost = v.Enum("Cost");
 	const bool newLayer = v.Bool("NewLayer");
 
-	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(seedText);
+	const std::vector<int> seeds = tri::SeedListText::Parse(seedText);
 	QString pointSource;
 	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(v, seeds, pointSource);
 	tri::MeshValidation<CMeshO>::RequireSurface(m.cm);
@@ -546,7 +547,7 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 {
 	typedef tri::SnakeController<CMeshO> Controller;
 	MeshModel &m = *md.mm();
-	const std::vector<int> seeds = tri::SeedPath<CMeshO>::ParseSeeds(par.getString("Seeds").toStdString());
+	const std::vector<int> seeds = tri::SeedListText::Parse(par.getString("Seeds").toStdString());
 	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::Snake());
 	const bool closed = v.Bool("Closed");
 	const tri::SnakeParams p = tri::SnakeParamDefs::ToSnakeParams(v);

@@ -22,6 +22,7 @@
 
 #include <common/ml_mesh_type.h>
 #include <snake_test_util.h>
+#include <vcg_ext/io/seed_list_text.h>
 #include <vcg_ext/io/snake_io.h>
 #include <vcg_ext/paths/seed_path.h>
 #include <vcg_ext/paths/seed_points.h>
@@ -124,7 +125,7 @@ inline int SnakeJson(const uint8_t *data, size_t size)
     return 0;
 }
 
-/// The "Seeds" parameter of the seed path and snake filters: SeedPath::ParseSeeds, then the
+/// The "Seeds" parameter of the seed path and snake filters: SeedListText::Parse, then the
 /// seed path itself (first byte: closed / cost) on the fuzz mesh, as the filters run it.
 inline int SeedString(const uint8_t *data, size_t size)
 {
@@ -133,9 +134,9 @@ inline int SeedString(const uint8_t *data, size_t size)
     const uint8_t mode = data[0];
     const std::string text(reinterpret_cast<const char *>(data + 1), size - 1);
     std::vector<int> seeds;
-    if (!Guard("SeedPath::ParseSeeds", [&] { seeds = SeedPath<CMeshO>::ParseSeeds(text); })) return 0;
+    if (!Guard("SeedListText::Parse", [&] { seeds = SeedListText::Parse(text); })) return 0;
     for (int v : seeds)
-        if (v < 0) Fail("SeedPath::ParseSeeds", "a negative index came through");
+        if (v < 0) Fail("SeedListText::Parse", "a negative index came through");
     if (seeds.size() > 64) return 0; // the parser is what is fuzzed; long paths only cost time
     CMeshO m;
     MakeMesh(m);

@@ -11,10 +11,12 @@
 
 #include "generated_meshes.h"
 #include "vcg_ext/energy/feature_energy.h"
+#include "vcg_ext/io/seed_list_text.h"
 #include "vcg_ext/paths/seed_path.h"
 
 namespace {
 
+using vcg::tri::SeedListText;
 using vcg::tri::SeedPathCost;
 using vcg::tri::SnakeError;
 typedef vcg::tri::SeedPath<CMeshO> SP;
@@ -253,16 +255,16 @@ TEST(SeedPath, CostIsATypeTheSearchIsTemplatedOn)
     EXPECT_GT(avoid.length, plain.length); // by a detour
 }
 
-TEST(SeedPath, ParseSeeds)
+TEST(SeedListText, Parse)
 {
-    EXPECT_EQ(SP::ParseSeeds("12, 40,77"), (std::vector<int>{12, 40, 77}));
-    EXPECT_EQ(SP::ParseSeeds("  1 2\t3 "), (std::vector<int>{1, 2, 3}));
-    EXPECT_EQ(SP::ParseSeeds("1;2 ; 3,"), (std::vector<int>{1, 2, 3}));
-    EXPECT_EQ(SP::ParseSeeds("0"), (std::vector<int>{0}));
-    EXPECT_TRUE(SP::ParseSeeds("").empty());
-    EXPECT_TRUE(SP::ParseSeeds("   ").empty());
+    EXPECT_EQ(SeedListText::Parse("12, 40,77"), (std::vector<int>{12, 40, 77}));
+    EXPECT_EQ(SeedListText::Parse("  1 2\t3 "), (std::vector<int>{1, 2, 3}));
+    EXPECT_EQ(SeedListText::Parse("1;2 ; 3,"), (std::vector<int>{1, 2, 3}));
+    EXPECT_EQ(SeedListText::Parse("0"), (std::vector<int>{0}));
+    EXPECT_TRUE(SeedListText::Parse("").empty());
+    EXPECT_TRUE(SeedListText::Parse("   ").empty());
     for (const char *bad : {"a", "1,,2", "-3", "1.5", "12 x", "99999999999", ",1", "1 - 2", "0x10"})
-        EXPECT_THROW(SP::ParseSeeds(bad), SnakeError) << bad;
+        EXPECT_THROW(SeedListText::Parse(bad), SnakeError) << bad;
 }
 
 TEST(SeedPath, BadInputThrows)

@@ -29,6 +29,7 @@
 #include <vcg_ext/energy/energy_range.h>
 #include <vcg_ext/energy/part_boundary_energy.h>
 #include <vcg_ext/snake/error.h>
+#include <vcg_ext/surface/angle_weighted_normals.h>
 #include <vcg_ext/surface/mesh_validation.h>
 
 namespace vcg {
@@ -113,7 +114,7 @@ public:
             for (const VertexType &v : m.vert) oldQuality.push_back(v.cQ());
         }
         std::vector<vcg::Point3f> fn;
-        UpdateNormals(m, fn);
+        AngleWeightedNormals<MeshType>::Update(m, fn);
         switch (type) {
         case FeatureEnergyType::NormalVariation: NormalVariationImpl(m, fn); break;
         case FeatureEnergyType::CurvatureNorm: CurvatureNormImpl(m, meanEdge); break;
@@ -196,7 +197,7 @@ public:
     {
         RequireComponents(m);
         std::vector<vcg::Point3f> fn;
-        UpdateNormals(m, fn);
+        AngleWeightedNormals<MeshType>::Update(m, fn);
         NormalVariationImpl(m, fn);
     }
 
@@ -210,7 +211,7 @@ public:
     {
         RequireComponents(m);
         std::vector<vcg::Point3f> fn;
-        UpdateNormals(m, fn);
+        AngleWeightedNormals<MeshType>::Update(m, fn);
         CurvatureNormImpl(m, MV::MeanEdgeLength(m));
     }
 
@@ -224,7 +225,7 @@ public:
     {
         RequireComponents(m);
         std::vector<vcg::Point3f> fn;
-        UpdateNormals(m, fn);
+        AngleWeightedNormals<MeshType>::Update(m, fn);
         QuadricErrorImpl(m, fn, MV::MeanEdgeLength(m));
     }
 
@@ -485,69 +486,6 @@ private:
         if (!tri::HasPerVertexNormal(m))
             throw SnakeError("The mesh type has no per-vertex normal, needed by the feature energy.");
     }
-
-    /// Unit face normals (returned in fn, indexed like m.face, zero for degenerate faces; also
-    /// stored in the mesh if it has face normals) and angle-weighted unit vertex normals
-    /// (Thuermer & Wuethrich). Same result as vcglib's UpdateNormal::PerFaceNormalized +
-    /// PerVertexAngleWeighted + NormalizePerVertex, fused into one face sweep in double
-    /// precision for the 1M-face time budget, and skipping degenerate faces so no NaN appears.
-    static void UpdateNormals(MeshType &m, std::vector<vcg::Point3f> &fn)
-    {
-        const size_t nv = m.vert.size(), nf = m.face.size();
-        fn.assign(nf, vcg::Point3f(0, 0, 0));
-        std::vector<vcg::Point3d> acc(nv, vcg::Point3d(0, 0, 0));
-        for (size_t fi = 0; fi < nf; ++fi) {
-            const FaceType &f = m.face[fi];
-            if (f.IsD()) continue;
-            const vcg::Point3d p0 = vcg::Point3d::Construct(f.cV(0)->cP());
-            const vcg::Point3d p1 = vcg::Point3d::Construct(f.cV(1)->cP());
-            const vcg::Point3d p2 = vcg::Point3d::Construct(f.cV(2)->cP());
-            const vcg::Point3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
-            const double l0 = e0.SquaredNorm(), l1 = e1.SquaredNorm(), l2 = e2.SquaredNorm();
-            const vcg::Point3d cr = e0 ^ (p2 - p0);
-            const double area2 = cr.Norm();
-            const double maxE2 = std::max(l0, std::max(l1, l2));
-            // Same test as MeshValidation::IsDegenerate (zero-area or repeated-vertex faces).
-            if (!(maxE2 > 0) || !(area2 > MV::DegenerateRatio() * maxE2)) continue;
-            const vcg::Point3d n = cr / area2;
-            fn[fi] = vcg::Point3f::Construct(n);
-            const double s0 = std::sqrt(l0), s1 = std::sqrt(l1), s2 = std::sqrt(l2);
-            const double a0 = FastAcos(Clamp1(-(e0 * e2) / (s0 * s2)));
-            const double a1 = FastAcos(Clamp1(-(e0 * e1) / (s0 * s1)));
-            const double a2 = FastAcos(Clamp1(-(e1 * e2) / (s1 * s2)));
-            acc[MV::VIndex(m, f.cV(0))] += n * a0;
-            acc[MV::VIndex(m, f.cV(1))] += n * a1;
-            acc[MV::VIndex(m, f.cV(2))] += n * a2;
-        }
-        for (size_t i = 0; i < nv; ++i) {
-            VertexType &v = m.vert[i];
-            if (v.IsD()) continue;
-            const double len = acc[i].Norm();
-            v.N() = VertexType::NormalType::Construct(len > 0 ? acc[i] / len : vcg::Point3d(0, 0, 0));
-        }
-        if (tri::HasPerFaceNormal(m))
-            for (size_t fi = 0; fi < nf; ++fi)
-                if (!m.face[fi].IsD()) m.face[fi].N() = FaceType::NormalType::Construct(fn[fi]);
-    }
-
-    /// acos with |error| <= 2e-8 rad (Abramowitz & Stegun 4.4.46); libm's acos was the
-    /// bottleneck of the normal pass and the angle weights need nowhere near full precision.
-    static double FastAcos(double x)
-    {
-        const double ax = std::fabs(x);
-        double p = -0.0012624911;
-        p = p * ax + 0.0066700901;
-        p = p * ax - 0.0170881256;
-        p = p * ax + 0.0308918810;
-        p = p * ax - 0.0501743046;
-        p = p * ax + 0.0889789874;
-        p = p * ax - 0.2145988016;
-        p = p * ax + 1.5707963050;
-        const double r = std::sqrt(std::max(0.0, 1.0 - ax)) * p;
-        return x >= 0 ? r : M_PI - r;
-    }
-
-    static double Clamp1(double x) { return x > 1.0 ? 1.0 : (x < -1.0 ? -1.0 : (x == x ? x : 0.0)); }
 
     static uint64_t Mix(uint64_t x)
     {

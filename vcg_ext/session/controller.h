@@ -8,8 +8,9 @@
 // <mesh>.snakes.json next to the mesh, with a throttled autosave.
 //
 // Its parts: the energy and surface (SnakeEnergySource), the seed list being placed
-// (SnakeSeedList), the undo history of whole user actions (SnakeSessionHistory), the session
-// file (SnakeSessionFile), and where and when it is saved (SnakeSidecar, SnakeAutosave).
+// (SnakeSeedList), how a new snake is built from it (SnakeBuilder), the undo history of whole
+// user actions (SnakeSessionHistory), the session file (SnakeSessionFile), and where and when it
+// is saved (SnakeSidecar, SnakeAutosave).
 //
 // Every user input is validated: bad input throws vcg::tri::SnakeError with a message
 // for the user, and leaves the controller unchanged.
@@ -21,7 +22,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <future>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -36,13 +36,13 @@
 #include <vcg_ext/io/safe_file_write.h>
 #include <vcg_ext/io/snake_io.h>
 #include <vcg_ext/paths/seed_list.h>
-#include <vcg_ext/paths/seed_path.h>
+#include <vcg_ext/paths/seed_path_cost.h>
 #include <vcg_ext/paths/seed_points.h>
-#include <vcg_ext/paths/stroke_loop.h>
 #include <vcg_ext/session/mesh_selection_memento.h>
 #include <vcg_ext/session/session_file.h>
 #include <vcg_ext/session/session_history.h>
 #include <vcg_ext/session/sidecar.h>
+#include <vcg_ext/session/snake_builder.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/snake/geometric_snake.h>
 #include <vcg_ext/surface/snake_surface.h>
@@ -118,10 +118,7 @@ public:
     void PrepareInBackground()
     {
         energy.PrepareInBackground();
-        if (!pathIndex && !pathIndexReady.valid()) {
-            MeshType *m = &mesh;
-            pathIndexReady = std::async(std::launch::async, [m] { return std::make_shared<const PathIndex>(*m); });
-        }
+        builder.PrepareInBackground();
     }
     /// The shared surface; computes the energy first if that was not done yet.
     Surface &EnsureSurface() { return *energy.EnsureSurface(); }
@@ -211,15 +208,7 @@ public:
                              std::to_string(need) + " seeds (" + std::to_string(seedList.size()) + " placed).");
         EnsureSurface();
         checkMesh();
-        // Seeds inside faces (clicks) make a curve through those points; vertex seeds (and
-        // clicks exactly at vertices) the paper's vertex path.
-        std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        const std::vector<SurfacePoint> pts = seedList.Points(EnsureSurface());
-        if (seedList.AtVertices())
-            sn->InitFromSeeds(seedList.Vertices(), closed, seedCost, LengthScale(pts));
-        else
-            sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(pts), &seedPathIndex());
-        addSnake(std::move(sn), true);
+        addSnake(builder.FromSeeds(seedList, closed, params, seedCost), true);
         return selected;
     }
 
@@ -229,9 +218,7 @@ public:
     {
         EnsureSurface();
         checkMesh();
-        std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        sn->InitFromSeedPoints(pts, closed, seedCost, LengthScale(pts), &seedPathIndex());
-        addSnake(std::move(sn), false);
+        addSnake(builder.FromSeedPoints(pts, closed, params, seedCost), false);
         return selected;
     }
 
@@ -645,17 +632,9 @@ private:
             if (s.Restore(mesh)) ++selectionRevision;
         };
     }
-    // what the seed paths search on, per mesh (SeedPath::MeshIndex): kept across Builds
-    typedef typename SeedPath<MeshType>::MeshIndex PathIndex;
-    std::shared_ptr<const PathIndex> pathIndex;
-    std::future<std::shared_ptr<const PathIndex>> pathIndexReady; // PrepareInBackground's; last: ends first
-
-    const PathIndex &seedPathIndex()
-    {
-        if (pathIndexReady.valid()) pathIndex = pathIndexReady.get();
-        if (!pathIndex || !pathIndex->Matches(mesh)) pathIndex = std::make_shared<const PathIndex>(mesh);
-        return *pathIndex;
-    }
+    // builds new snakes, keeping the seed paths' index across builds; last: its background
+    // build ends first
+    SnakeBuilder<MeshType> builder{mesh, energy};
 
     bool record(const char *label) { return history.Record(label); }
     // builds the snakes an undo brings back
@@ -667,13 +646,7 @@ private:
     {
         EnsureSurface();
         checkMesh();
-        typename StrokeLoop<MeshType>::Param lp;
-        lp.cost = seedCost;
-        lp.view = view;
-        const typename StrokeLoop<MeshType>::Result r = StrokeLoop<MeshType>::Complete(mesh, stroke, lp);
-        std::unique_ptr<Snake> sn(new Snake(energy.SurfacePtr(), params));
-        sn->InitFromSurfacePath(r.loop, true, LengthScale(r.loop));
-        return sn;
+        return builder.LoopFromStroke(stroke, view, params, seedCost);
     }
     // a new snake, built from the seeds (`fromSeeds`: they are used up) or points: selected
     void addSnake(std::unique_ptr<Snake> sn, bool fromSeeds)
