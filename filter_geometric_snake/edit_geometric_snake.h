@@ -31,6 +31,7 @@
 #include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/session/controller.h>
 #include <vcg_ext/session/mesh_undo.h>
+#include <vcg_ext/snake/valley_loop.h>
 
 class QDockWidget;
 class QKeyEvent;
@@ -84,8 +85,7 @@ private:
     qint64 sliceEnd = -1;
     int runOps0 = 0;
     // the loop the Run started from, for ValleyLoop::FinishRun (a loop that shrinks far)
-    std::vector<vcg::Point3d> runSeedLoop;
-    std::vector<int> runSeedFaces;
+    vcg::tri::ValleyLoop<CMeshO>::Seeded runSeeded;
     bool keysOwned = false;
     bool hidePending = false;
     long exportedRevision = -1;

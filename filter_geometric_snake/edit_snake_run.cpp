@@ -35,9 +35,7 @@ void EditGeometricSnakePlugin::setRunning(bool on)
         runClock.start();
         runCompute0 = ctl->ComputeMs();
         runOps0 = ctl->SelectedSnake()->Stats().operations;
-        runSeedLoop = ctl->SelectedSnake()->PolylinePositions();
-        runSeedFaces.clear();
-        for (const auto &x : ctl->SelectedSnake()->Samples()) runSeedFaces.push_back(x.p.face);
+        runSeeded = tri::ValleyLoop<CMeshO>::Seeded::Of(*ctl->SelectedSnake());
         runEnd = vcg::tri::SnakeStop::Running;
         sliceMs = 30;
         sliceEnd = -1;

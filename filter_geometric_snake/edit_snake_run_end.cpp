@@ -43,11 +43,8 @@ void EditGeometricSnakePlugin::reportRunEnd(tri::SnakeStop why)
     s->EndRun(why, runLimits().Message(why, ops, wall));
     // a converged part-boundary loop ends on the cheapest edge loop round it, as in the filters
     // (searched round the loop the Run started from when it shrank far, ValleyLoop::Param::seededShrink)
-    tri::ValleyLoop<CMeshO>::Seeded seeded;
-    seeded.loop = runSeedLoop;
-    seeded.faces = runSeedFaces;
     tri::ValleyLoop<CMeshO>::FinishRun(*s, ctl->EnergyType(), ctl->EnergyFromQuality(), tri::ValleyLoop<CMeshO>::Param(),
-                                       &seeded);
+                                       &runSeeded);
     const std::string &msg = s->Stats().stopMessage;
     const bool problem = tri::SnakeStopIsProblem(why);
     // the Log line the GUI tests read: the end, compute time vs wall time, the reason

@@ -140,19 +140,17 @@ public:
         if (!s.Closed() || energyFromQuality || type != FeatureEnergyType::PartBoundary ||
             s.Stats().stop != SnakeStop::Converged)
             return false;
-        std::vector<int> faces;
-        for (const auto &x : s.Samples()) faces.push_back(x.p.face);
         const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
         const auto &energy = s.GetSurface().Energy();
         const double h = s.LengthScale();
-        const std::vector<vcg::Point3d> own = s.PolylinePositions();
+        const Seeded own = Seeded::Of(s); // the loop where the Run ended
         double ref = -1, cost = 0;
-        std::vector<int> vl = FinishFrom(m, own, faces, energy, h, par, ref, cost);
+        std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);
         // a loop that converged at less than seededShrink of the length it was seeded with may
         // have slid past the valley onto the part (issue 33, session 25): the valley loop is
         // also searched round the loop the user seeded
         if (seeded && seeded->loop.size() >= 3 && par.seededShrink > 0 &&
-            PolyLength(own) < par.seededShrink * PolyLength(seeded->loop)) {
+            PolyLength(own.loop) < par.seededShrink * PolyLength(seeded->loop)) {
             double ref2 = -1, cost2 = 0;
             const std::vector<int> v2 = FinishFrom(m, seeded->loop, seeded->faces, energy, h, par, ref2, cost2);
             // taken when it is a deeper valley per length (both priced with one concavity
