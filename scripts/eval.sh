@@ -60,9 +60,10 @@ fi
 
 if [[ $PARTS_ONLY == 1 ]]; then
   echo "== closed snakes on part boundaries drawn by people"
-  "$BUILD_DIR/bench/eval/gs_parts" --energy normal,part --rings 2,3 --out "$OUT/parts.csv" 2> "$OUT/parts.log"
-  grep -E "^(normal|part) +ALL|done" "$OUT/parts.log"
-  python3 "$ROOT/bench/eval/parts_report.py" "$OUT/parts.csv" "$OUT" > /dev/null
+  "$BUILD_DIR/bench/eval/gs_parts" --energy normal,part --rings 2,3 --out "$OUT/parts.csv" \
+    --people "$OUT/parts_people.csv" 2> "$OUT/parts.log"
+  grep -E "^(normal|part|people) +ALL|done" "$OUT/parts.log"
+  python3 "$ROOT/bench/eval/parts_report.py" "$OUT/parts.csv" "$OUT" "$OUT/parts_people.csv" > /dev/null
   cp "$OUT/parts_distance.svg" "$ROOT/docs/img/parts_distance.svg"
   echo "== done in $(( $(date +%s) - T0 )) s: $OUT/parts.md"
   exit 0

@@ -24,6 +24,9 @@
 //   loop, + on the part's side, with their energy against the loop's. GS_PARTS_STAGES=1: per
 //   loop, its length, capture and coverage after each stage of the Run's end: the snake's own
 //   loop, the first band's valley loop, the descent over bands, part salience.)
+//   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
+//   criterion if their own cut were scored like a loop against the other people's cuts: the
+//   agreement among people that the loops' figures can be read against.)
 //   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
 //   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
@@ -63,6 +66,19 @@ std::vector<int> IntList(const std::string &s)
     return out;
 }
 
+/// How many of the part's people pass the success criterion with their own cut scored like a
+/// loop against the others' (the same measure as a snake's loop, tests/part_cases.h).
+int PeoplePassing(const gs_parts::Part &p, double h)
+{
+    int ok = 0;
+    for (size_t a = 0; a < p.cuts.size(); ++a) {
+        gs_parts::Part q = p;
+        q.cuts.erase(q.cuts.begin() + a);
+        ok += gs_parts::Measure(p.cuts[a], q, h, h).Success();
+    }
+    return ok;
+}
+
 struct Tally
 {
     int n = 0, ok = 0, points = 0;
@@ -72,7 +88,7 @@ struct Tally
 
 int main(int argc, char **argv)
 {
-    std::string data = GS_SEGMENTATION_DIR, out = "parts.csv";
+    std::string data = GS_SEGMENTATION_DIR, out = "parts.csv", peopleOut;
     std::vector<int> ids = {3, 84, 121, 161, 181, 221, 241, 281, 381};
     std::vector<std::string> energies = {"normal", "part"};
     std::vector<int> rings = {2, 3};
@@ -91,6 +107,7 @@ int main(int argc, char **argv)
         else if (a == "--max-ops") maxOps = std::stoi(next());
         else if (a == "--balloon") balloon = std::stod(next());
         else if (a == "--out") out = next();
+        else if (a == "--people") peopleOut = next();
         else if (a == "--alpha") alpha = std::stod(next());
         else if (a == "--beta") beta = std::stod(next());
         else if (a == "--ext") ext = std::stod(next());
@@ -123,6 +140,12 @@ int main(int argc, char **argv)
     std::ofstream csv(out);
     csv << "energy,id,category,part,area,agree,people,side,ring,seeds,h,start_len,final_len,len_ratio,capture,"
            "coverage,mean_dist_h,success,converged,stopped,ops,seconds\n";
+    std::ofstream people;
+    if (!peopleOut.empty()) {
+        people.open(peopleOut);
+        people << "id,category,part,people,passing\n";
+    }
+    Tally peopleAll;
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
     const auto t0 = std::chrono::steady_clock::now();
     for (int id : ids) {
@@ -133,6 +156,12 @@ int main(int argc, char **argv)
         }
         std::fprintf(stderr, "model %d (%s): %zu faces, %zu people, %zu parts\n", id, md.category.c_str(),
                      md.mesh.face.size(), md.segs.size(), md.parts.size());
+        if (people.is_open())
+            for (const gs_parts::Part &p : md.parts) {
+                const int ok = PeoplePassing(p, md.h);
+                peopleAll.n += int(p.cuts.size()), peopleAll.ok += ok;
+                people << id << ',' << md.category << ',' << p.index << ',' << p.cuts.size() << ',' << ok << '\n';
+            }
         for (const std::string &en : energies) {
             auto ty = types.find(en);
             if (ty == types.end()) {
@@ -156,14 +185,7 @@ int main(int argc, char **argv)
                     for (int d = 0; d < 6; ++d) std::fprintf(stderr, " %.2f", e[0][d] / std::max(1.0, n[0][d]));
                     std::fprintf(stderr, " out");
                     for (int d = 1; d < 6; ++d) std::fprintf(stderr, " %.2f", e[1][d] / std::max(1.0, n[1][d]));
-                    // people against each other: each cut scored against the others
-                    int ok = 0;
-                    for (size_t a = 0; a < p.cuts.size(); ++a) {
-                        gs_parts::Part q = p;
-                        q.cuts.erase(q.cuts.begin() + a);
-                        ok += gs_parts::Measure(p.cuts[a], q, md.h, md.h).Success();
-                    }
-                    std::fprintf(stderr, " people agreeing %d/%zu\n", ok, p.cuts.size());
+                    std::fprintf(stderr, " people agreeing %d/%zu\n", PeoplePassing(p, md.h), p.cuts.size());
                 }
             for (const gs_parts::Part &p : md.parts)
                 for (int side : {1, -1})
@@ -377,6 +399,9 @@ int main(int argc, char **argv)
         for (auto &c : e.second)
             std::fprintf(stderr, "%-10s %-10s %6d %7.0f%% %8d\n", e.first.c_str(), c.first.c_str(), c.second.n,
                          100.0 * c.second.ok / std::max(1, c.second.n), c.second.points);
+    if (people.is_open())
+        std::fprintf(stderr, "people     ALL        %6d %7.0f%% (each person's cut against the others')\n", peopleAll.n,
+                     100.0 * peopleAll.ok / std::max(1, peopleAll.n));
     std::fprintf(stderr, "done in %.1f s\n",
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     return 0;

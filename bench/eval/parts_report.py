@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Tables and a plot from gs_parts' CSV (issue 33): closed snakes on part boundaries drawn by people.
 
-    parts_report.py parts.csv OUT_DIR   -> OUT_DIR/parts.md, OUT_DIR/parts_distance.svg
+    parts_report.py parts.csv OUT_DIR [people.csv]   -> OUT_DIR/parts.md, OUT_DIR/parts_distance.svg
+
+people.csv (gs_parts --people): per part, how many people's own cuts pass the success criterion
+against the other people's; with it the category table gets a column for that agreement.
 
 Standard library only, like report.py."""
 import csv
@@ -10,8 +13,15 @@ import sys
 from collections import defaultdict
 
 
-def main(path, out):
+def main(path, out, people_path=None):
     rows = list(csv.DictReader(open(path)))
+    people = defaultdict(lambda: [0, 0, []])  # category -> [passing, cuts, per-part shares]
+    if people_path:
+        for r in csv.DictReader(open(people_path)):
+            for c in (r["category"], "ALL"):
+                people[c][0] += int(r["passing"])
+                people[c][1] += int(r["people"])
+                people[c][2].append(int(r["passing"]) / max(int(r["people"]), 1))
     energies = sorted({r["energy"] for r in rows}, key=lambda e: (e != "normal", e))
     cats = sorted({r["category"] for r in rows})
     by = defaultdict(list)
@@ -26,9 +36,15 @@ def main(path, out):
         med = statistics.median(float(r["mean_dist_h"]) for r in rs) if rs else 0
         return "%d/%d (%.0f %%), %d collapsed, median %.2f h" % (ok, n, 100.0 * ok / max(n, 1), pts, med)
 
-    lines = ["| category | " + " | ".join(energies) + " |", "|---" * (1 + len(energies)) + "|"]
+    extra = ["people against people"] if people else []
+    lines = ["| category | " + " | ".join(energies + extra) + " |", "|---" * (1 + len(energies) + len(extra)) + "|"]
     for c in cats + ["ALL"]:
-        lines.append("| %s | " % c + " | ".join(cell(by[(e, c)]) for e in energies) + " |")
+        cells = [cell(by[(e, c)]) for e in energies]
+        if people:
+            ok, n, share = people[c]
+            cells.append("%d/%d (%.0f %%), %.0f %% per part" % (ok, n, 100.0 * ok / max(n, 1),
+                                                               100.0 * statistics.mean(share or [0])))
+        lines.append("| %s | " % c + " | ".join(cells) + " |")
     sides = ["| seeds | " + " | ".join(energies) + " |", "|---" * (1 + len(energies)) + "|"]
     for side in ("inside", "outside"):
         for ring in sorted({r["ring"] for r in rows}):
@@ -36,7 +52,11 @@ def main(path, out):
                 cell([r for r in by[(e, "ALL")] if r["side"] == side and r["ring"] == ring]) for e in energies) + " |")
     md = ["Success: 90 % of the loop within 1 h of a person's cut and 90 % of that cut within 1 h of the loop; "
           "collapsed: stopped by the collapse watch or shorter than a quarter of its start; median: of the mean "
-          "distance of the loop to the nearest agreeing person's cut, in mean edge lengths h.", ""] + lines + [""] + sides
+          "distance of the loop to the nearest agreeing person's cut, in mean edge lengths h." + (
+              " People against people: each person's own cut, scored like a loop against the other "
+              "people's cuts of the part (how often people meet the criterion among themselves); per part: the "
+              "mean over parts of the share of their people that pass, weighted as the loops are (4 per part)."
+              if people else ""), ""] + lines + [""] + sides
     open(out + "/parts.md", "w").write("\n".join(md) + "\n")
     print("\n".join(md))
 
@@ -67,4 +87,4 @@ def main(path, out):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    main(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else None)
