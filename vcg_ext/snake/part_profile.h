@@ -29,11 +29,12 @@ public:
     {
         /// The jump: the perimeter grows by more than `slope` length units per unit of distance
         /// (2 pi: a flat plane round the part; 0: a cylinder). 0 turns the profile off. On
-        /// bench/eval/gs_parts (--energy part --rings 2,3, price 1, band 1.5): 2.5, 3 and 3.5
-        /// 159/220, 4 157 (+2 -2), 5 (band 1) 155.
+        /// bench/eval/gs_parts (--energy part --rings 2,3, PartSalience's price 1, band 1.5):
+        /// 2.5, 3 and 3.5 159/220 (157 without), 4 156 (+2 -3); band 1: 4 157, 5 155.
         double slope = 3.0;
         /// The ring before the jump is a candidate when it is at least minTube units off the
-        /// loop (nearer, the loop already sits where the part opens); 0.5-2 the same rows.
+        /// loop (nearer, the loop already sits where the part opens); 0.5 and 1 the same rows
+        /// (band 1), 2 158 (band 1.5).
         double minTube = 1.0;
         /// The profile's grid, units.
         double grid = 0.5;

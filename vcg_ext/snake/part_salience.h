@@ -59,7 +59,8 @@ public:
         /// (profilePrice x the best's): the minima rule still decides, the profile only reaches
         /// a ring the choice by total cost and by salience passed over. On bench/eval/gs_parts
         /// (--energy part --rings 2,3): band 1, 1.25, 1.5, 2: 158, 160, 159, 159 of 220 (157
-        /// without); price 1.1 158 (+4 -3), 1.25 (band 1) 154 (+4 -7), 1.5 (minTube 2) 150.
+        /// without); price 1.1 158 (+4 -3), 1.25 (band 1) 154 (+4 -7), 1.5 (band 1, minTube 2)
+        /// 150. The profile runs with salience (exponent > 0).
         typename PartProfile<MeshType>::Param profile;
         double profileBand = 1.5;
         double profilePrice = 1.0;
