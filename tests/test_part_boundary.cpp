@@ -785,3 +785,105 @@ TEST(ValleyLoop, SearchesRoundTheSeededLoopWhenTheSnakeShrankFar)
     std::printf("loop on the rim, seeded on the equator: %.2f h off the rim\n", offRim(s));
     EXPECT_LT(offRim(s), 0.6);
 }
+
+namespace {
+
+// A limb of even width on a body, revolved round z with kLimbN vertices a ring, rings kLimbStep
+// apart along the profile (quads split by one diagonal), closed: a wide flat head (the part's
+// far end, so that the part's area barely changes along the limb) on a tube of radius 1 from
+// z = 1.2 down to z = 0, where the body opens at 45 degrees (a cone to radius 4) and closes
+// with a flat bottom. Returns the index of each tube ring's first vertex by its height in
+// steps (ring[j]: z = j kLimbStep).
+const double kLimbStep = 0.1;
+const int kLimbN = 63;
+
+std::vector<int> MakeLimbOnBody(CMeshO &m)
+{
+    std::vector<std::pair<double, double>> prof; // (r, z), from the top axis to the bottom axis
+    auto run = [&](double r0, double z0, double r1, double z1) { // (r0,z0) excluded, (r1,z1) included
+        const int k = std::max(1, int(std::lround(std::hypot(r1 - r0, z1 - z0) / kLimbStep)));
+        for (int i = 1; i <= k; ++i) prof.push_back({r0 + (r1 - r0) * i / k, z0 + (z1 - z0) * i / k});
+    };
+    prof.push_back({0.0, 1.7});
+    run(0.0, 1.7, 2.5, 1.7);  // the head's top
+    run(2.5, 1.7, 2.5, 1.2);  // its side
+    run(2.5, 1.2, 1.0, 1.2);  // its underside
+    run(1.0, 1.2, 1.0, 0.0);  // the limb
+    run(1.0, 0.0, 4.0, -3.0); // the body opens at 45 degrees
+    run(4.0, -3.0, 0.0, -3.0); // the bottom
+    std::vector<int> ring(13, -1);
+    std::vector<int> first(prof.size());
+    for (size_t j = 0; j < prof.size(); ++j) {
+        const double r = prof[j].first, z = prof[j].second;
+        first[j] = int(m.vert.size());
+        if (r < 1e-12) { // a pole: one vertex
+            vcg::tri::Allocator<CMeshO>::AddVertex(m, Point3m(0, 0, z));
+            continue;
+        }
+        if (std::fabs(r - 1.0) < 1e-9 && z > -1e-9 && z < 1.2 + 1e-9) ring[int(std::lround(z / kLimbStep))] = first[j];
+        auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, kLimbN);
+        for (int k = 0; k < kLimbN; ++k, ++vi)
+            vi->P() = Point3m(r * std::cos(2 * M_PI * k / kLimbN), r * std::sin(2 * M_PI * k / kLimbN), z);
+    }
+    auto V = [&](size_t j, int k) { return &m.vert[prof[j].first < 1e-12 ? first[j] : first[j] + k % kLimbN]; };
+    for (size_t j = 0; j + 1 < prof.size(); ++j)
+        for (int k = 0; k < kLimbN; ++k) { // outward normals: the profile runs top to bottom
+            const bool poleA = prof[j].first < 1e-12, poleB = prof[j + 1].first < 1e-12;
+            if (!poleA) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k), V(j + 1, k), V(j, k + 1));
+            if (!poleB) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k + 1), V(j + 1, k), V(j + 1, k + 1));
+        }
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    return ring;
+}
+
+} // namespace
+
+// Where a limb of even width meets the body (issue 33, session 26: the width profile,
+// part_profile.h). The energy is 0.5 everywhere but on a dimple ring 3 rings up the limb (0.2,
+// where the snake settled) and on the limb's last ring before the body opens (0.18): that ring
+// is a little cheaper per length (1.18 against 1.2 with lambda 1, the concavity term off), no
+// longer, and cuts off a part only 4 % larger, so part salience's score (cost per length x
+// (L / sqrt(A))^0.5) does not pass its margin of 0.95, and it lies beyond the band the descent
+// searches (2.5 rings). The perimeter of the level sets into the body is constant for 3 units
+// (the tube) and grows by 2 pi sin 45 = 4.4 per unit beyond: the profile's jump lies exactly on
+// the limb's last ring, and the loop found there ends the Run; without it the dimple stays.
+TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
+{
+    CMeshO m;
+    const std::vector<int> ring = MakeLimbOnBody(m);
+    ASSERT_GE(ring[0], 0);
+    ASSERT_GE(ring[3], 0);
+    std::vector<double> energy(m.vert.size(), 0.5);
+    for (int k = 0; k < kLimbN; ++k) energy[ring[3] + k] = 0.2, energy[ring[0] + k] = 0.18;
+    std::vector<P3> loop;
+    std::vector<int> faces;
+    for (int k = 0; k < kLimbN; ++k) {
+        loop.push_back(P3::Construct(m.vert[ring[3] + k].cP()));
+        faces.push_back(int(m.vert[ring[3] + k].cVFp() - &m.face[0]));
+    }
+    ValleyLoop<CMeshO>::Param par;
+    par.concavityWeight = 0; // the crease at the limb's base would decide alone
+    auto meanZ = [&](const std::vector<int> &vl) {
+        double z = 0;
+        for (int v : vl) z += m.vert[v].cP()[2] / (kLimbStep * vl.size());
+        return z;
+    };
+    auto maxOff = [&](const std::vector<int> &vl, double z0) {
+        double o = 0;
+        for (int v : vl) o = std::max(o, std::fabs(m.vert[v].cP()[2] / kLimbStep - z0));
+        return o;
+    };
+    double ref = -1, cost = 0;
+    const std::vector<int> with = ValleyLoop<CMeshO>::FinishFrom(m, loop, faces, energy, kLimbStep, par, ref, cost);
+    ValleyLoop<CMeshO>::Param off = par;
+    off.salience.profile.slope = 0;
+    ref = -1;
+    const std::vector<int> without = ValleyLoop<CMeshO>::FinishFrom(m, loop, faces, energy, kLimbStep, off, ref, cost);
+    std::printf("limb on a body: with the profile %zu vertices at mean z %.3f rings, without %zu at %.3f\n", with.size(),
+                meanZ(with), without.size(), meanZ(without));
+    ASSERT_EQ(with.size(), size_t(kLimbN));
+    EXPECT_LT(maxOff(with, 0.0), 1e-6); // every vertex on the limb's last ring
+    ASSERT_EQ(without.size(), size_t(kLimbN));
+    EXPECT_LT(maxOff(without, 3.0), 1e-6); // the mechanism: salience and the descent keep the dimple
+}

@@ -7,6 +7,9 @@
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
 //            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--out FILE.csv]
+//            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B]
+//   (the width profile's PartProfile::Param slope, minTube and PartSalience::Param profilePrice,
+//   profileBand; --profile-slope 0 turns it off)
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
@@ -123,6 +126,10 @@ int main(int argc, char **argv)
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
         else if (a == "--salience-margin") vlp.salience.margin = std::stod(next());
+        else if (a == "--profile-slope") vlp.salience.profile.slope = std::stod(next());
+        else if (a == "--profile-tube") vlp.salience.profile.minTube = std::stod(next());
+        else if (a == "--profile-price") vlp.salience.profilePrice = std::stod(next());
+        else if (a == "--profile-band") vlp.salience.profileBand = std::stod(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());

@@ -189,8 +189,13 @@ public:
             for (int v : vl) pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
             const LoopIndex band(pl, par.bandWidth * h);
             const double minLen = 0.5 * LengthOf(m, vl);
-            auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c) {
+            auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c, bool narrow) {
                 double r = ref;
+                if (narrow) {
+                    Param pn = par;
+                    pn.bandWidth = par.salience.profileBand;
+                    return FindAt(m, guide, guideFaces, energy, h, pn, r, c);
+                }
                 std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, par, r, c);
                 if (cand.size() >= 3) cand = Descend(m, cand, c, energy, h, par, ref, minLen);
                 return cand;
