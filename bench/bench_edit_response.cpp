@@ -16,6 +16,13 @@
 //                  clicks round a patch of the bunny's flank, run 60 operations; arg = the
 //                  mesh's faces (bunny00 as scanned, and subdivided to 1.2M: the ratio shows
 //                  what grows with the mesh rather than with the band)
+// BM_ValleyLoopSeeded the same end when the loop converged shorter than half its seeded loop
+//                  (ValleyLoop::Param::seededShrink, session 25: a second search round the
+//                  seeded loop), on a tall bump on a sphere (icosphere 6, 81920 faces; its rim a
+//                  concave valley 70 edges round); arg 0: case (0: a loop 16 h up the bump seeded
+//                  8 h outside its rim, the pattern of fourleg 381; 1: a loop that converged on
+//                  the rim, seeded on the equator), arg 1: the seeded loop given (1) or not
+//                  (0, what FinishRun cost before session 25)
 // Run: build/bench/bench_edit_response --benchmark_repetitions=5 and read the medians.
 
 #include <benchmark/benchmark.h>
@@ -29,6 +36,7 @@
 #include <snake_bench_util.h>
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/index/grid_static_ptr.h>
+#include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/session/controller.h>
 #include <vcg_ext/snake/valley_loop.h>
 
@@ -222,6 +230,94 @@ void BM_ValleyLoop(benchmark::State &state)
     state.counters["replaced"] = double(replaced) / state.iterations();
 }
 
+/// The tall bump of tests/test_part_boundary.cpp (ValleyLoop.SearchesRoundTheSeededLoopWhenTheSnakeShrankFar)
+/// on a finer sphere, and its loops: where FinishRun starts from, and the loop seeded.
+struct SeededCase
+{
+    CMeshO m;
+    std::shared_ptr<SnakeSurface<CMeshO>> surf;
+    std::vector<SnakeSample> samples[2];
+    double unit[2] = {0, 0};
+    ValleyLoop<CMeshO>::Seeded seeded[2];
+};
+
+double Leg(double phi) { return 1.0 + 0.8 * std::exp(-std::pow(phi / 0.25, 2)); }
+
+SeededCase &Seeded()
+{
+    static std::unique_ptr<SeededCase> k;
+    if (k) return *k;
+    k.reset(new SeededCase);
+    CMeshO &m = k->m;
+    gs_test::MakeIcosphere(m, 6);
+    for (auto &v : m.vert) {
+        const vcg::Point3d p = vcg::Point3d::Construct(v.cP()).Normalize();
+        v.P() = Point3m::Construct(p * Leg(std::acos(std::max(-1.0, std::min(1.0, p[2])))));
+    }
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::PartBoundary, 2);
+    k->surf = std::make_shared<SnakeSurface<CMeshO>>(m, SnakeEnergySource<CMeshO>::CaptureSmoothingFor(false, FeatureEnergyType::PartBoundary));
+    // the rim: where the meridian bends most inwards (as the test's RimOf)
+    double rim = 0, kBest = 1e300;
+    for (double phi = 0.05; phi < 1.5; phi += 1e-4) {
+        auto pt = [](double f) { return vcg::Point3d(Leg(f) * std::sin(f), 0, Leg(f) * std::cos(f)); };
+        const double d = 1e-4;
+        const vcg::Point3d a = pt(phi - d), b = pt(phi), c = pt(phi + d);
+        const vcg::Point3d acc = ((c - b) - (b - a)) / (d * d), vel = (c - a) / (2 * d);
+        const double kk = -(vel[0] * acc[2] - vel[2] * acc[0]) / std::pow(vel.Norm(), 3);
+        if (kk < kBest) kBest = kk, rim = phi;
+    }
+    const auto ring = [&](double phi) {
+        std::vector<vcg::Point3d> pts;
+        for (int i = 0; i < 8; ++i) {
+            const double a = 2 * M_PI * i / 8;
+            pts.push_back(vcg::Point3d(std::sin(phi) * std::cos(a), std::sin(phi) * std::sin(a), std::cos(phi)) * Leg(phi));
+        }
+        return gs_test::NearestVertices(m, pts);
+    };
+    // offsets in the test's units (its icosphere 4 has 4x longer edges): the same loops
+    const double u = 4 * k->surf->MeanEdge();
+    GeometricSnake<CMeshO> s(k->surf);
+    // case 0: seeded 2 units outside the rim, ended 4 units up the bump
+    s.InitFromSeeds(ring(rim + 2 * u / Leg(rim)), true);
+    k->seeded[0] = ValleyLoop<CMeshO>::Seeded::Of(s);
+    s.InitFromSeeds(ring(rim - 4 * u / Leg(rim)), true);
+    k->samples[0] = s.Samples(), k->unit[0] = s.LengthScale();
+    // case 1: seeded on the equator, converged on the rim (a Run from 2 units outside it)
+    s.InitFromSeeds(ring(M_PI / 2), true);
+    k->seeded[1] = ValleyLoop<CMeshO>::Seeded::Of(s);
+    s.InitFromSeeds(ring(rim + 2 * u / Leg(rim)), true);
+    s.Run(400);
+    k->samples[1] = s.Samples(), k->unit[1] = s.LengthScale();
+    std::fprintf(stderr, "seeded case on %d faces (h %.4f): run from outside the rim: %s, %zu samples\n", m.fn,
+                 k->surf->MeanEdge(), SnakeStopKey(s.Stats().stop), k->samples[1].size());
+    return *k;
+}
+
+void BM_ValleyLoopSeeded(benchmark::State &state)
+{
+    SeededCase &k = Seeded();
+    const int c = int(state.range(0));
+    const bool with = state.range(1) != 0;
+    GeometricSnake<CMeshO> s(k.surf);
+    int replaced = 0, shrank = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        s.InitFromSamples(k.samples[c], true, k.unit[c]);
+        s.EndRun(SnakeStop::Converged); // as a Run that converged there
+        shrank += ValleyLoop<CMeshO>::PolyLength(s.PolylinePositions()) <
+                  ValleyLoop<CMeshO>::Param().seededShrink * ValleyLoop<CMeshO>::PolyLength(k.seeded[c].loop);
+        state.ResumeTiming();
+        replaced += ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, ValleyLoop<CMeshO>::Param(),
+                                                  with ? &k.seeded[c] : nullptr);
+    }
+    state.counters["faces"] = k.m.fn;
+    state.counters["samples"] = double(k.samples[c].size());
+    state.counters["shrank"] = double(shrank) / state.iterations(); // 1: the seeded search runs when given
+    state.counters["replaced"] = double(replaced) / state.iterations();
+}
+
 } // namespace
 
 BENCHMARK(BM_PickGrid)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
@@ -230,5 +326,6 @@ BENCHMARK(BM_Click)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(40
 BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(BM_BuildCold)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_ValleyLoop)->Arg(0)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
+BENCHMARK(BM_ValleyLoopSeeded)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 
 BENCHMARK_MAIN();

@@ -7,6 +7,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <random>
+#include <string>
 
 #include <part_cases.h>
 #include <vcg_ext/snake/valley_loop.h>
@@ -16,6 +19,7 @@
 #include <vcg_ext/energy/part_boundary_energy.h>
 #include <vcg/complex/algorithms/create/marching_cubes.h>
 #include <vcg/complex/algorithms/create/mc_trivial_walker.h>
+#include <vcg/complex/algorithms/refine.h>
 
 #ifndef GS_SEGMENTATION_DIR
 #define GS_SEGMENTATION_DIR GS_DATA_DIR "/../../shared/data/segmentation"
@@ -886,4 +890,308 @@ TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
     EXPECT_LT(maxOff(with, 0.0), 1e-6); // every vertex on the limb's last ring
     ASSERT_EQ(without.size(), size_t(kLimbN));
     EXPECT_LT(maxOff(without, 3.0), 1e-6); // the mechanism: salience and the descent keep the dimple
+}
+}
+
+namespace {
+
+// The generated cases re-tessellated as users' meshes are (the guide's 20x edge-length
+// variation, slivers, noise), each with its exact part boundary: a revolved surface (the waist,
+// the bump) with its boundary at polar angle phiStar, or the handle on its slab.
+
+/// A midpoint (vcglib's RefineE) moved onto the exact surface.
+struct RoughMidPoint : vcg::tri::MidPoint<CMeshO>
+{
+    std::function<P3(const P3 &)> proj;
+    RoughMidPoint(CMeshO *m, std::function<P3(const P3 &)> p) : vcg::tri::MidPoint<CMeshO>(m), proj(p) {}
+    void operator()(CVertexO &nv, vcg::face::Pos<CFaceO> ep)
+    {
+        vcg::tri::MidPoint<CMeshO>::operator()(nv, ep);
+        nv.P() = Point3m::Construct(proj(P3::Construct(nv.cP())));
+    }
+};
+
+/// Splits every edge longer than target(its midpoint) until none is (edges end between half
+/// the target and the target), the new vertices on the exact surface.
+struct RoughEdgePred
+{
+    std::function<double(const P3 &)> target;
+    bool operator()(vcg::face::Pos<CFaceO> ep) const
+    {
+        const P3 a = P3::Construct(ep.V()->cP()), b = P3::Construct(ep.VFlip()->cP());
+        return vcg::Distance(a, b) > target((a + b) * 0.5);
+    }
+};
+
+void RoughRefine(CMeshO &m, std::function<double(const P3 &)> target, std::function<P3(const P3 &)> proj)
+{
+    gs_test::EnableSnakeAdjacency(m);
+    RoughMidPoint mid(&m, proj);
+    RoughEdgePred pred{target};
+    for (int pass = 0; pass < 12; ++pass) {
+        vcg::tri::UpdateTopology<CMeshO>::FaceFace(m);
+        if (!vcg::tri::RefineE(m, mid, pred)) break;
+    }
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+}
+
+/// Edge lengths graded `ratio` x across the boundary: `fine` within `w` of it on the fine side
+/// (d < 0, d the signed distance to the boundary), growing geometrically to fine * ratio across
+/// it (d from -w to w) and back to it beyond the fine band (d < -3w), so that the fine band stays small.
+double RoughTarget(double d, double fine, double ratio, double w)
+{
+    double t = d >= -w ? (d + w) / (2 * w) : std::min(1.0, (-d - w) / (4 * w));
+    return fine * std::pow(ratio, std::max(0.0, std::min(1.0, t)));
+}
+
+/// Slivers: every vertex slid towards a random neighbour by up to 45 % of the edge (needles
+/// where two slide towards each other, caps where one nears the opposite edge), back on the
+/// exact surface; and a share of the faces split at a point 2 % off one of their edges (a cap
+/// and two needles each).
+void RoughSlivers(CMeshO &m, std::function<P3(const P3 &)> proj, double splitShare, unsigned seed)
+{
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    gs_test::EnableSnakeAdjacency(m);
+    for (auto &f : m.face) {
+        for (int k = 0; k < 3; ++k) {
+            CVertexO *v = f.V(k);
+            if (v->IsV()) continue;
+            v->SetV();
+            const P3 a = P3::Construct(v->cP()), b = P3::Construct(f.cV((k + 1 + int(u(rng) * 2)) % 3)->cP());
+            v->P() = Point3m::Construct(proj(a + (b - a) * (0.45 * u(rng))));
+        }
+    }
+    vcg::tri::UpdateFlags<CMeshO>::VertexClearV(m);
+    std::vector<std::pair<int, int>> split; // face, its edge next to the new vertex
+    for (size_t i = 0; i < m.face.size(); ++i)
+        if (u(rng) < splitShare) split.push_back({int(i), int(u(rng) * 3) % 3});
+    auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, split.size());
+    const int v0 = int(vi - m.vert.begin());
+    auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, 2 * split.size());
+    const int f0 = int(fi - m.face.begin());
+    for (size_t j = 0; j < split.size(); ++j) {
+        CFaceO &f = m.face[split[j].first];
+        const int k = split[j].second;
+        CVertexO *a = f.V(k), *b = f.V((k + 1) % 3), *c = f.V((k + 2) % 3), *x = &m.vert[v0 + j];
+        x->P() = a->cP() * 0.49f + b->cP() * 0.49f + c->cP() * 0.02f;
+        f.V((k + 2) % 3) = x; // a b x
+        CFaceO &g = m.face[f0 + 2 * j], &e = m.face[f0 + 2 * j + 1];
+        g.V(0) = b, g.V(1) = c, g.V(2) = x;
+        e.V(0) = c, e.V(1) = a, e.V(2) = x;
+    }
+    gs_test::EnableSnakeAdjacency(m);
+}
+
+struct RoughMeasure
+{
+    double mean = 0, max = 0, ratio = 0;
+    bool finite = true;
+    std::string stop;
+    bool finished = false;
+};
+
+} // namespace
+
+namespace {
+
+/// Every vertex moved in a random direction by `share` of its mean edge length, at most `cap`
+/// (0.4 and 3 % of the radius: the noise of the uniform spheres above, MakeRevolved's 3 %,
+/// where the mesh is that coarse or coarser, and no more than 0.4 edges where it is finer:
+/// noise as large as the fine side's edges folds it, no scan of that sampling has).
+void RoughNoise(CMeshO &m, double share, double cap, unsigned seed)
+{
+    std::vector<double> sum(m.vert.size(), 0);
+    std::vector<int> cnt(m.vert.size(), 0);
+    for (const auto &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            const int a = int(f.cV(k) - &m.vert[0]);
+            sum[a] += vcg::Distance(f.cP(k), f.cP((k + 1) % 3)) + vcg::Distance(f.cP(k), f.cP((k + 2) % 3));
+            cnt[a] += 2;
+        }
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> g(0.0, 1.0);
+    for (size_t i = 0; i < m.vert.size(); ++i) {
+        P3 d(g(rng), g(rng), g(rng));
+        if (!(d.Norm() > 1e-9) || !cnt[i]) continue;
+        m.vert[i].P() = Point3m::Construct(P3::Construct(m.vert[i].cP()) + d.Normalize() * std::min(cap, share * sum[i] / cnt[i]));
+    }
+}
+
+struct RoughStyle
+{
+    bool graded;   ///< edges graded 20x across the boundary (fine on the side fineSide)
+    int fineSide;  ///< +1: fine inside the part (phi < phiStar, on the handle), -1 outside
+    bool slivers;
+    double noise;  ///< RoughNoise's share
+    std::string Name() const
+    {
+        std::string n = graded ? (fineSide > 0 ? "graded (fine inside)" : "graded (fine outside)") : "uniform";
+        if (slivers) n += " + slivers";
+        if (noise > 0) n += " + noise";
+        return n;
+    }
+};
+
+/// A revolved surface (MakeRevolved's) re-tessellated in `st`'s style.
+template <class Radius>
+void MakeRoughRevolved(CMeshO &m, Radius R, double phiStar, const RoughStyle &st, unsigned seed)
+{
+    auto phiOf = [](const P3 &p) { return std::acos(std::max(-1.0, std::min(1.0, p[2] / p.Norm()))); };
+    auto proj = [&](const P3 &p) { P3 q = p; q.Normalize(); return q * R(phiOf(p)); };
+    gs_test::MakeIcosphere(m, st.graded ? 2 : 4);
+    for (auto &v : m.vert) v.P() = Point3m::Construct(proj(P3::Construct(v.cP())));
+    if (st.graded)
+        RoughRefine(m, [&](const P3 &p) { return RoughTarget(-st.fineSide * (phiOf(p) - phiStar) * R(phiStar), 0.02, 20, 0.1); },
+                    proj);
+    if (st.slivers) RoughSlivers(m, proj, 0.3, seed);
+    if (st.noise > 0) RoughNoise(m, st.noise, 0.03, seed + 1);
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    vcg::tri::UpdateBounding<CMeshO>::Box(m);
+}
+
+/// The shortest and longest edge.
+std::pair<double, double> RoughEdgeRange(const CMeshO &m)
+{
+    double lo = 1e300, hi = 0;
+    for (const auto &f : m.face)
+        for (int k = 0; k < 3; ++k) {
+            const double e = vcg::Distance(f.cP(k), f.cP((k + 1) % 3));
+            lo = std::min(lo, e), hi = std::max(hi, e);
+        }
+    return {lo, hi};
+}
+
+/// A Run from `seeds` as every host does it (the seeded loop kept for FinishRun), measured by
+/// `off` (distance to the exact boundary) against its length `exactLen`.
+RoughMeasure RoughRun(std::shared_ptr<Surface> surf, const std::vector<int> &seeds, std::function<double(const P3 &)> off,
+                      double exactLen, double unit)
+{
+    RoughMeasure r;
+    Snake s(surf);
+    s.InitFromSeeds(seeds, true);
+    const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(s);
+    s.Run(400);
+    r.finished = ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, ValleyLoop<CMeshO>::Param(), &seeded);
+    r.stop = SnakeStopKey(s.Stats().stop);
+    const std::vector<P3> pl = s.PolylinePositions();
+    for (const P3 &x : pl) r.finite = r.finite && std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+    if (!r.finite || pl.size() < 2) return r;
+    const std::vector<P3> loop = gs_parts::ResampleLoop(pl, 0.25 * unit);
+    for (const P3 &x : loop) {
+        const double d = off(x) / unit;
+        r.mean += d / loop.size(), r.max = std::max(r.max, d);
+    }
+    r.ratio = gs_parts::LoopLength(loop) / exactLen;
+    return r;
+}
+
+} // namespace
+
+// The waist graded 20x across it (edges 0.02 on one side, 0.4 on the other) with slivers (each
+// vertex slid up to 45 % along an edge, 30 % of the faces split next to an edge): the snake's
+// unit, the median edge of its samples' faces, is there a fraction of the faces it crosses
+// (0.015 for a Run from 3 h outside, where the boundary's faces are 0.09 across), and the band
+// of 2.5 units held no ring of edges at any width: FinishRun kept the snake's loop. The band
+// now holds the snake's own faces (ValleyLoop::FindAt, session 26). Measured (gcc Release):
+// before, no band round the loop from 3 h outside held a ring (Find empty at 2.5, 1.5 and 1
+// units) and FinishRun kept the snake's loop; now the valley loop from both seedings, mean
+// 0.83 and 1.10 h, max 1.84 and 2.17 h off the waist, 1.07-1.12 of its length (h the mean edge).
+TEST(ValleyLoop, FindsARingWhereTheSnakesFacesAreWiderThanItsBand)
+{
+    CMeshO m;
+    MakeRoughRevolved(m, Waist, M_PI / 2, RoughStyle{true, 1, true, 0}, 11);
+    const auto er = RoughEdgeRange(m);
+    EXPECT_GT(er.second / er.first, 100.0);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const double h = surf->MeanEdge();
+    for (double k : {-3.0, 2.0}) { // outside (below the waist, coarse there), inside
+        Snake s(surf);
+        s.InitFromSeeds(RingSeeds(m, Waist, M_PI / 2 - k * h / Waist(M_PI / 2)), true);
+        s.Run(400);
+        ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
+        std::vector<int> faces;
+        for (const auto &x : s.Samples()) faces.push_back(x.p.face);
+        const double len = gs_parts::LoopLength(s.PolylinePositions());
+        const std::vector<int> ring = ValleyLoop<CMeshO>::Find(m, s.PolylinePositions(), faces, surf->Energy(), s.LengthScale());
+        ASSERT_GE(ring.size(), 3u);
+        EXPECT_GT(ValleyLoop<CMeshO>::LengthOf(m, ring), 0.5 * len);
+        const double unit = s.LengthScale();
+        ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
+        double mean = 0, mx = 0;
+        const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
+        for (const P3 &x : loop) {
+            const double o = std::fabs(std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm()))) - M_PI / 2) * Waist(M_PI / 2) / h;
+            mean += o / loop.size(), mx = std::max(mx, o);
+        }
+        const double ratio = gs_parts::LoopLength(loop) / (2 * M_PI * Waist(M_PI / 2));
+        std::printf("graded waist with slivers (%d faces, edges %.4f-%.4f), seeds %.0f h %s, unit %.4f: the valley loop "
+                    "mean %.2f h, max %.2f h off the waist, length %.3f of it\n", m.fn, er.first, er.second, std::fabs(k),
+                    k < 0 ? "outside" : "inside", unit, mean, mx, ratio);
+        EXPECT_LT(mean, 1.5);
+        EXPECT_LT(mx, 3.0);
+        EXPECT_GT(ratio, 0.95);
+        EXPECT_LT(ratio, 1.25);
+    }
+}
+
+// The waist and the bump re-tessellated as users' meshes are: the waist with slivers and noise
+// (3 % of the radius), the bump with edge lengths graded 20x across its rim and slivers (edges
+// 0.0013-0.59). Runs from 2 h inside and 3 h outside (h the mean edge) end by themselves,
+// converged, finite, on the valley loop near the exact boundary. Measured (gcc Release): waist
+// mean 0.33 h, max 1.04 h off, 1.27 of its length (the edge loop zigzags through the noise);
+// bump mean 0.85 and 1.40 h, max 1.82 and 2.36 h, 1.00-1.04. (The bump graded with slivers and
+// noise of 0.4 local edges, at most 3 % of the radius, measured 1.24 h / 2.99 h from inside; the
+// Run from outside ends at 400 operations, 2.67 h / 4.99 h off: the exploration test of commit
+// c323a14, not kept.)
+// One test per mesh (each under 2 s).
+namespace {
+
+struct RoughCase
+{
+    const char *name;
+    double (*R)(double);
+    double phiStar;
+    RoughStyle st;
+    double mean, max; // bounds, in h
+};
+
+void RoughSettles(const RoughCase &c)
+{
+    CMeshO m;
+    MakeRoughRevolved(m, c.R, c.phiStar, c.st, 11);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const double h = surf->MeanEdge();
+    const auto er = RoughEdgeRange(m);
+    const double exactLen = 2 * M_PI * c.R(c.phiStar) * std::sin(c.phiStar);
+    auto off = [&](const P3 &x) {
+        return std::fabs(std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm()))) - c.phiStar) * c.R(c.phiStar);
+    };
+    for (double k : {2.0, -3.0}) {
+        RoughMeasure r;
+        EXPECT_NO_THROW(r = RoughRun(surf, RingSeeds(m, c.R, c.phiStar - k * h / c.R(c.phiStar)), off, exactLen, h));
+        std::printf("%s %s (%d faces, edges %.4f-%.4f, h %.4f), seeds %.0f h %s: %s, valley loop %d, off mean %.2f h, "
+                    "max %.2f h, length %.3f\n", c.name, c.st.Name().c_str(), m.fn, er.first, er.second, h, std::fabs(k),
+                    k > 0 ? "inside" : "outside", r.stop.c_str(), int(r.finished), r.mean, r.max, r.ratio);
+        EXPECT_TRUE(r.finite);
+        EXPECT_EQ(r.stop, "converged");
+        EXPECT_TRUE(r.finished);
+        EXPECT_LT(r.mean, c.mean);
+        EXPECT_LT(r.max, c.max);
+        EXPECT_GT(r.ratio, 0.95);
+        EXPECT_LT(r.ratio, 1.4);
+    }
+}
+
+} // namespace
+
+TEST(PartBoundaryLoop, SettlesOnTheWaistWithSliversAndNoise)
+{
+    RoughSettles({"waist", Waist, M_PI / 2, {false, 1, true, 0.4}, 0.6, 1.6});
+}
+
+TEST(PartBoundaryLoop, SettlesOnTheBumpGraded20xWithSlivers)
+{
+    RoughSettles({"bump", Bump, BumpRim(), {true, -1, true, 0}, 2.0, 3.5});
 }

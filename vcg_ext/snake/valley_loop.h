@@ -246,9 +246,21 @@ public:
             test[v] = at;
             if (at >= 0) vert.push_back(v), grow.push_back(v);
         };
+        // the snake's own faces are in the band whatever their size: where the mesh's edges are
+        // longer than the band is wide (edge lengths that vary 20x, slivers that make the
+        // snake's unit, the median edge of its faces, a fraction of the faces it crosses) the
+        // vertices within the width alone hold no ring of edges round it (session 26)
+        const LoopIndex all(loop, std::numeric_limits<double>::infinity());
         for (int f : seedFaces)
             if (f >= 0 && f < int(m.face.size()) && !m.face[f].IsD())
-                for (int k = 0; k < 3; ++k) reach(int(m.face[f].cV(k) - &m.vert[0]));
+                for (int k = 0; k < 3; ++k) {
+                    const int v = int(m.face[f].cV(k) - &m.vert[0]);
+                    if (test.count(v) || m.vert[v].IsD()) continue;
+                    double at = -1;
+                    all.Dist(vcg::Point3d::Construct(m.vert[v].cP()), at);
+                    test[v] = at;
+                    if (at >= 0) vert.push_back(v), grow.push_back(v);
+                }
         while (!grow.empty()) {
             const VertexType &v = m.vert[grow.back()];
             grow.pop_back();
