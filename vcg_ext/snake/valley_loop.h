@@ -239,10 +239,10 @@ public:
         // loop point. `test` holds every vertex tested: its arc length, or -1 outside.
         std::unordered_map<int, double> test;
         std::vector<int> vert, grow, faces;
-        auto reach = [&](int v) {
+        auto reach = [&](int v, const LoopIndex &index) {
             if (test.count(v)) return;
             double at = -1;
-            if (!m.vert[v].IsD() && !(li.Dist(vcg::Point3d::Construct(m.vert[v].cP()), at) <= li.w)) at = -1;
+            if (!m.vert[v].IsD() && !(index.Dist(vcg::Point3d::Construct(m.vert[v].cP()), at) <= index.w)) at = -1;
             test[v] = at;
             if (at >= 0) vert.push_back(v), grow.push_back(v);
         };
@@ -250,17 +250,10 @@ public:
         // longer than the band is wide (edge lengths that vary 20x, slivers that make the
         // snake's unit, the median edge of its faces, a fraction of the faces it crosses) the
         // vertices within the width alone hold no ring of edges round it (session 26)
-        const LoopIndex all(loop, std::numeric_limits<double>::infinity());
+        const LoopIndex own(loop, std::numeric_limits<double>::infinity());
         for (int f : seedFaces)
             if (f >= 0 && f < int(m.face.size()) && !m.face[f].IsD())
-                for (int k = 0; k < 3; ++k) {
-                    const int v = int(m.face[f].cV(k) - &m.vert[0]);
-                    if (test.count(v) || m.vert[v].IsD()) continue;
-                    double at = -1;
-                    all.Dist(vcg::Point3d::Construct(m.vert[v].cP()), at);
-                    test[v] = at;
-                    if (at >= 0) vert.push_back(v), grow.push_back(v);
-                }
+                for (int k = 0; k < 3; ++k) reach(int(m.face[f].cV(k) - &m.vert[0]), own);
         while (!grow.empty()) {
             const VertexType &v = m.vert[grow.back()];
             grow.pop_back();
@@ -269,7 +262,7 @@ public:
                 next = f->cVFp(z);
                 if (f->IsD()) continue;
                 faces.push_back(int(f - &m.face[0]));
-                for (int k = 1; k < 3; ++k) reach(int(f->cV((z + k) % 3) - &m.vert[0]));
+                for (int k = 1; k < 3; ++k) reach(int(f->cV((z + k) % 3) - &m.vert[0]), li);
             }
         }
         // numbered and joined in mesh order, as a pass over the whole mesh would: the same
