@@ -891,7 +891,6 @@ TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
     ASSERT_EQ(without.size(), size_t(kLimbN));
     EXPECT_LT(maxOff(without, 3.0), 1e-6); // the mechanism: salience and the descent keep the dimple
 }
-}
 
 namespace {
 
