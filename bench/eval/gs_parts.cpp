@@ -106,6 +106,9 @@ int main(int argc, char **argv)
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
         else if (a == "--salience-margin") vlp.salience.margin = std::stod(next());
+        else if (a == "--salience-width") vlp.salience.widthExponent = std::stod(next());
+        else if (a == "--salience-width-reach") vlp.salience.widthReach = std::stod(next());
+        else if (a == "--sdf-rays") vlp.salience.sdf.rays = std::stoi(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
