@@ -109,6 +109,8 @@ int main(int argc, char **argv)
         else if (a == "--salience-width") vlp.salience.widthExponent = std::stod(next());
         else if (a == "--salience-width-reach") vlp.salience.widthReach = std::stod(next());
         else if (a == "--sdf-rays") vlp.salience.sdf.rays = std::stoi(next());
+        else if (a == "--salience-width-radius") vlp.salience.widthRadius = std::stod(next());
+        else if (a == "--salience-width-samples") vlp.salience.widthSamples = std::stoi(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());

@@ -68,7 +68,9 @@ public:
             : m(m), par(par), radius(radius)
         {
             std::unordered_map<int, int> vid; // mesh vertex -> local vertex
-            std::unordered_map<int, char> faceSeen, vertSeen;
+            // flags over the mesh's vectors (a byte per element, cleared once): the flood and
+            // its lookups cost what the region holds
+            std::vector<char> faceSeen(m.face.size(), 0), vertSeen(m.vert.size(), 0);
             std::vector<int> stack;
             const double r2 = radius * radius;
             auto near = [&](const VertexType *v) { return (vcg::Point3d::Construct(v->cP()) - centre).SquaredNorm() <= r2; };
