@@ -7,6 +7,10 @@
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
 //            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--out FILE.csv]
+//            [--salience-width E] [--salience-width-reach R] [--salience-width-radius F]
+//            [--salience-width-samples N] [--sdf-rays N]
+//   (--salience-width E: PartSalience::Param::widthExponent, the shape-diameter ratio's
+//   exponent, 0 = off; the others its widthReach, widthRadius, widthSamples and sdf.rays)
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
