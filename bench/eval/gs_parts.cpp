@@ -10,6 +10,10 @@
 //            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B]
 //   (the width profile's PartProfile::Param slope, minTube and PartSalience::Param profilePrice,
 //   profileBand; --profile-slope 0 turns it off)
+//            [--salience-width E] [--salience-width-reach R] [--salience-width-radius F]
+//            [--salience-width-samples N] [--sdf-rays N]
+//   (--salience-width E: PartSalience::Param::widthExponent, the shape-diameter ratio's
+//   exponent, 0 = off; the others its widthReach, widthRadius, widthSamples and sdf.rays)
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
@@ -130,6 +134,11 @@ int main(int argc, char **argv)
         else if (a == "--profile-tube") vlp.salience.profile.minTube = std::stod(next());
         else if (a == "--profile-price") vlp.salience.profilePrice = std::stod(next());
         else if (a == "--profile-band") vlp.salience.profileBand = std::stod(next());
+        else if (a == "--salience-width") vlp.salience.widthExponent = std::stod(next());
+        else if (a == "--salience-width-reach") vlp.salience.widthReach = std::stod(next());
+        else if (a == "--sdf-rays") vlp.salience.sdf.rays = std::stoi(next());
+        else if (a == "--salience-width-radius") vlp.salience.widthRadius = std::stod(next());
+        else if (a == "--salience-width-samples") vlp.salience.widthSamples = std::stoi(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
