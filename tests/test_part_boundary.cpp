@@ -868,6 +868,7 @@ TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
     }
     ValleyLoop<CMeshO>::Param par;
     par.concavityWeight = 0; // the crease at the limb's base would decide alone
+    par.salience.widthExponent = 0; // the shape diameter's width term finds this ring too
     auto meanZ = [&](const std::vector<int> &vl) {
         double z = 0;
         for (int v : vl) z += m.vert[v].cP()[2] / (kLimbStep * vl.size());
