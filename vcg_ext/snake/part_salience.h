@@ -234,49 +234,15 @@ public:
         // the shape diameter against the region round the loop, built when the first candidate
         // is scored (cost follows the loop and the steps searched, not the mesh)
         std::unique_ptr<typename ShapeDiameter<MeshType>::Region> sdf;
-        const double wReach = par.widthReach * h;
-        // (d_part / d_body)^widthExponent for loop l, onPart(v) true on its part's side; the
-        // medians of at most widthSamples vertices a side (every k-th, in the order reached)
         auto width = [&](const std::vector<int> &l, const std::function<bool(int)> &onPart) {
-            std::vector<int> vp, vb;
-            std::unordered_map<int, double> dd;
-            std::unordered_map<int, char> on;
-            typedef std::pair<double, int> QD;
-            std::priority_queue<QD, std::vector<QD>, std::greater<QD>> qd;
-            for (int v : l) on[v] = 1, dd[v] = 0, qd.push({0, v});
-            while (!qd.empty()) {
-                const QD e = qd.top();
-                qd.pop();
-                if (e.first > dd[e.second]) continue;
-                if (!on.count(e.second)) (onPart(e.second) ? vp : vb).push_back(e.second);
-                ForFaces(m, e.second, [&](const FaceType *f, int z) {
-                    for (int k = 1; k < 3; ++k) {
-                        const int b = index(m, f->cV((z + k) % 3));
-                        if (on.count(b)) continue;
-                        const double nd = e.first + vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
-                        if (nd > wReach) continue;
-                        const auto it = dd.find(b);
-                        if (it == dd.end() || nd < it->second) dd[b] = nd, qd.push({nd, b});
-                    }
-                });
-            }
-            if (vp.size() < 3 || vb.size() < 3) return 1.0;
-            auto median = [&](const std::vector<int> &vs) {
-                const size_t k = std::max<size_t>(1, (vs.size() + par.widthSamples - 1) / std::max(1, par.widthSamples));
-                std::vector<double> d;
-                for (size_t i = 0; i < vs.size(); i += k) d.push_back(sdf->At(vs[i]));
-                std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
-                return d[d.size() / 2];
-            };
-            const double a = median(vp), b = median(vb);
-            return a > 0 && b > 0 ? std::pow(a / b, par.widthExponent) : 1.0;
+            return std::pow(sdf->SideRatio(l, onPart, par.widthReach * h, par.widthSamples), par.widthExponent);
         };
         auto ensureSdf = [&]() {
             if (sdf || !(par.widthExponent > 0)) return;
             vcg::Point3d c(0, 0, 0);
             for (int v : loop) c += vcg::Point3d::Construct(m.vert[v].cP());
             c /= double(loop.size());
-            const double R = par.widthRadius * L0 + par.steps * par.stepLength * h + wReach;
+            const double R = par.widthRadius * L0 + (par.steps * par.stepLength + par.widthReach) * h;
             sdf.reset(new typename ShapeDiameter<MeshType>::Region(m, loop, c, R, par.sdf));
             bestScore *= width(loop, [&](int v) {
                 const int c = s0.Side(v);

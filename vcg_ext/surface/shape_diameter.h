@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <queue>
 #include <unordered_map>
 #include <vector>
 
@@ -165,6 +167,51 @@ public:
             if (hits.empty()) return radius;
             std::nth_element(hits.begin(), hits.begin() + hits.size() / 2, hits.end());
             return std::min(radius, hits[hits.size() / 2]);
+        }
+
+        /// Across a loop of vertex indices: the median shape diameter of the vertices within
+        /// `reach` of it along edges on the part's side (onPart(v) true) over that on the other
+        /// side, each from at most `samples` vertices (every k-th, in the order reached, so the
+        /// rays' cost follows `samples`, not the mesh's resolution); 1 when a side holds fewer
+        /// than 3 vertices. Below 1 where a limb meets a wider body.
+        double SideRatio(const std::vector<int> &loop, const std::function<bool(int)> &onPart, double reach, int samples)
+        {
+            std::vector<int> part, body;
+            std::unordered_map<int, double> dist;
+            std::unordered_map<int, char> on;
+            typedef std::pair<double, int> QD;
+            std::priority_queue<QD, std::vector<QD>, std::greater<QD>> queue;
+            for (int v : loop) on[v] = 1, dist[v] = 0, queue.push({0, v});
+            while (!queue.empty()) {
+                const QD e = queue.top();
+                queue.pop();
+                if (e.first > dist[e.second]) continue;
+                if (!on.count(e.second)) (onPart(e.second) ? part : body).push_back(e.second);
+                const VertexType &x = m.vert[e.second];
+                for (const FaceType *f = x.cVFp(), *next = nullptr; f; f = next) {
+                    const int z = (f->cV(0) == &x) ? 0 : (f->cV(1) == &x ? 1 : 2);
+                    next = f->cVFp(z);
+                    if (f->IsD()) continue;
+                    for (int k = 1; k < 3; ++k) {
+                        const int b = int(f->cV((z + k) % 3) - &m.vert[0]);
+                        if (on.count(b)) continue;
+                        const double nd = e.first + vcg::Distance(x.cP(), m.vert[b].cP());
+                        if (nd > reach) continue;
+                        const auto it = dist.find(b);
+                        if (it == dist.end() || nd < it->second) dist[b] = nd, queue.push({nd, b});
+                    }
+                }
+            }
+            if (part.size() < 3 || body.size() < 3) return 1.0;
+            auto median = [&](const std::vector<int> &vs) {
+                const size_t k = std::max<size_t>(1, (vs.size() + samples - 1) / std::max(1, samples));
+                std::vector<double> d;
+                for (size_t i = 0; i < vs.size(); i += k) d.push_back(At(vs[i]));
+                std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+                return d[d.size() / 2];
+            };
+            const double a = median(part), b = median(body);
+            return a > 0 && b > 0 ? a / b : 1.0;
         }
 
         size_t Faces() const { return local.face.size(); }
