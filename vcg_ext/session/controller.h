@@ -41,7 +41,6 @@ class SnakeController : public SnakeStoredSession<MeshType>
 
 public:
     typedef typename Base::Snake Snake;
-    typedef typename Base::Surface Surface;
     typedef typename Base::IO IO;
     typedef typename Base::Action Action;
 

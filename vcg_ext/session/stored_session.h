@@ -41,17 +41,17 @@ public:
     /// The whole session (SnakeSessionFile): energy settings, parameters, seeds, snakes with pins.
     json ToJson()
     {
-        SessionFile f(mesh);
-        f.energyFromQuality = energy.FromQuality();
-        f.energyType = energy.Type();
-        f.energySmoothing = energy.Smoothing();
-        f.creaseAngle = energy.CreaseAngle();
-        f.params = params;
-        f.seedCost = seedCost;
-        f.selected = selected;
-        f.seeds = seedList;
-        json j = f.HeaderJson(mesh);
-        for (auto &s : snakes) j["snakes"].push_back(IO::ToJson(*s));
+        SessionFile f(this->mesh);
+        f.energyFromQuality = this->energy.FromQuality();
+        f.energyType = this->energy.Type();
+        f.energySmoothing = this->energy.Smoothing();
+        f.creaseAngle = this->energy.CreaseAngle();
+        f.params = this->params;
+        f.seedCost = this->seedCost;
+        f.selected = this->selected;
+        f.seeds = this->seedList;
+        json j = f.HeaderJson(this->mesh);
+        for (auto &s : this->snakes) j["snakes"].push_back(IO::ToJson(*s));
         return j;
     }
 
@@ -59,10 +59,10 @@ public:
     /// mesh, broken file) the session is unchanged and a SnakeError says why.
     void FromJson(const json &j)
     {
-        SessionFile f = SessionFile::Read(mesh, j);
-        if (energy.Apply(f.energyFromQuality, f.energyType, f.energySmoothing, f.creaseAngle)) energyChanged();
-        const std::shared_ptr<Surface> &surface = energy.EnsureSurface();
-        checkMesh();
+        SessionFile f = SessionFile::Read(this->mesh, j);
+        if (this->energy.Apply(f.energyFromQuality, f.energyType, f.energySmoothing, f.creaseAngle)) this->energyChanged();
+        const std::shared_ptr<Surface> &surface = this->energy.EnsureSurface();
+        this->checkMesh();
         std::vector<std::unique_ptr<Snake>> nsn;
         for (const auto &fs : f.snakes) {
             std::unique_ptr<Snake> s(new Snake(surface, fs.params));
@@ -71,13 +71,13 @@ public:
             if (!fs.embedded.empty()) s->KeepPolyline(fs.embedded);
             nsn.push_back(std::move(s));
         }
-        snakes = std::move(nsn);
-        history.Clear();
-        selected = f.selected;
-        params = f.params;
-        seedList = f.seeds;
-        seedCost = f.seedCost;
-        touch("load");
+        this->snakes = std::move(nsn);
+        this->history.Clear();
+        this->selected = f.selected;
+        this->params = f.params;
+        this->seedList = f.seeds;
+        this->seedCost = f.seedCost;
+        this->touch("load");
     }
 
     /// Writes the session safely (SafeFileWrite: temporary file, then rename): a crash or a
@@ -86,7 +86,7 @@ public:
     {
         if (path.empty()) throw SnakeError("Geometric snake: no file name to save the session to.");
         SafeFileWrite::Write(path, ToJson().dump(1) + "\n");
-        autosave.Saved(revision);
+        autosave.Saved(this->revision);
     }
 
     /// Loads a session file; false if there is none, throws if it is unusable. Only what the
@@ -96,7 +96,7 @@ public:
         std::error_code ec;
         if (!std::filesystem::exists(path, ec)) return false;
         FromJson(IO::ParseFileLean(path));
-        autosave.Saved(revision);
+        autosave.Saved(this->revision);
         return true;
     }
 
@@ -113,7 +113,7 @@ public:
             if (load)
                 Load(side);
             else
-                SessionFile::Read(mesh, IO::ParseFileLean(side)); // readable, and of this mesh?
+                SessionFile::Read(this->mesh, IO::ParseFileLean(side)); // readable, and of this mesh?
         });
     }
 
@@ -124,25 +124,11 @@ public:
     /// has passed. Returns true if it wrote. Throws SnakeError if writing fails.
     bool Autosave(bool force = false)
     {
-        if (!autosave.Due(revision, force)) return false;
+        if (!autosave.Due(this->revision, force)) return false;
         Save(autosave.Path());
         return true;
     }
-    bool Dirty() const { return autosave.Dirty(revision); }
-
-protected:
-    using Base::checkMesh;
-    using Base::energy;
-    using Base::energyChanged;
-    using Base::history;
-    using Base::mesh;
-    using Base::params;
-    using Base::revision;
-    using Base::seedCost;
-    using Base::seedList;
-    using Base::selected;
-    using Base::snakes;
-    using Base::touch;
+    bool Dirty() const { return autosave.Dirty(this->revision); }
 
 private:
     SnakeAutosave autosave;
