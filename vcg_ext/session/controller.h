@@ -1,15 +1,14 @@
 #ifndef VCG_EXT_SNAKE_CONTROLLER_H
 #define VCG_EXT_SNAKE_CONTROLLER_H
 
-// The logic of the interactive edit tool, without Qt or OpenGL (so it is unit-testable):
-// several snakes on one mesh (one selected), the seeds being placed, step/run, point
-// editing (move, pin, insert, delete), parameters and export, over a session
-// (session/snake_session.h: its state and the undo of whole user actions) that is saved to /
-// restored from JSON, e.g. the sidecar file <mesh>.snakes.json next to the mesh, with a
-// throttled autosave (session/stored_session.h).
-//
-// Its other parts: the energy and surface (SnakeEnergySource), the seed list being placed
-// (SnakeSeedList) and how a new snake is built from it (SnakeBuilder).
+// The logic of the interactive edit tool, without Qt or OpenGL (so it is unit-testable): the
+// operations on several snakes on one mesh (one selected): the seeds being placed (SnakeSeedList)
+// and the snakes built from them (SnakeBuilder), step/run, point editing (move, pin, insert,
+// delete), parameters and export. They work on a SnakeSession (session/snake_session.h: the
+// energy, the snakes, seeds and parameters, the rule every change follows, the undo of whole
+// user actions) that is saved to / restored from JSON, e.g. the sidecar file
+// <mesh>.snakes.json next to the mesh, with a throttled autosave (SnakeStoredSession,
+// session/stored_session.h).
 //
 // Every user input is validated: bad input throws vcg::tri::SnakeError with a message
 // for the user, and leaves the controller unchanged.
@@ -50,6 +49,7 @@ public:
     explicit SnakeController(MeshType &m) : Base(m) {}
 
     // ================================================================ energy
+    // (its settings: SnakeSession)
     /// Computes the energy and builds the shared surface on another thread, for the snakes to
     /// come (SnakeEnergySource::PrepareInBackground): the edit tool starts it when it starts,
     /// so that Build does not wait for them. The mesh must not change until a call that uses
