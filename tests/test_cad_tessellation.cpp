@@ -15,6 +15,7 @@
 #include "cad_meshes.h"
 #include "snake_test_util.h"
 #include "vcg_ext/energy/crease_energy.h"
+#include "vcg_ext/energy/crease_energy_field.h"
 #include "vcg_ext/energy/feature_energy.h"
 #include "vcg_ext/snake/geometric_snake.h"
 #include "vcg_ext/embedding/local_region.h"

@@ -66,6 +66,25 @@ std::vector<int> RingSeeds(const CMeshO &m, Radius R, double phi)
     return gs_test::NearestVertices(m, pts);
 }
 
+/// How far the points `loop` lie from the parallel at polar angle phiStar of the revolved shape
+/// R: |phi - phiStar| times the radius there, in mean edge lengths h (mean and largest).
+struct ParallelOffset
+{
+    double mean = 0, max = 0;
+};
+template <class Radius>
+ParallelOffset OffParallel(const std::vector<P3> &loop, Radius R, double phiStar, double h)
+{
+    ParallelOffset r;
+    for (const P3 &x : loop) {
+        const double phi = std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm())));
+        const double off = std::fabs(phi - phiStar) * R(phiStar) / h;
+        r.mean += off / loop.size();
+        r.max = std::max(r.max, off);
+    }
+    return r;
+}
+
 struct LoopResult
 {
     double meanOff = 0, maxOff = 0; ///< |phi - phi*| times the radius there, in mean edge lengths
@@ -84,12 +103,9 @@ LoopResult RunLoop(std::shared_ptr<Surface> surf, const std::vector<int> &seeds,
     const double h = surf->MeanEdge();
     LoopResult r;
     const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
-    for (const P3 &x : loop) {
-        const double phi = std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm())));
-        const double off = std::fabs(phi - phiStar) * R(phiStar) / h;
-        r.meanOff += off / loop.size();
-        r.maxOff = std::max(r.maxOff, off);
-    }
+    const ParallelOffset off = OffParallel(loop, R, phiStar, h);
+    r.meanOff = off.mean;
+    r.maxOff = off.max;
     r.lengthRatio = gs_parts::LoopLength(loop) / (2 * M_PI * R(phiStar) * std::sin(phiStar));
     r.stopped = s.Stats().stopped;
     return r;
@@ -118,6 +134,32 @@ double RimOf(Radius R)
     return best;
 }
 double BumpRim() { return RimOf(Bump); }
+
+/// A smooth revolved shape R (no noise) with the part-boundary energy, the setup of the tests of
+/// a loop's end on a part's rim: the mesh, the rim's polar angle, the snakes' surface, its h.
+template <class Radius>
+struct RevolvedRim
+{
+    Radius R;
+    double rim;
+    CMeshO m;
+    std::shared_ptr<Surface> surf;
+    double h = 0;
+    explicit RevolvedRim(Radius r) : R(r), rim(RimOf(r))
+    {
+        MakeRevolved(m, R, 0.0);
+        surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+        h = surf->MeanEdge();
+    }
+    RevolvedRim(const RevolvedRim &) = delete;
+    /// Seeds on the parallel d mean edge lengths from the rim (d > 0: towards the equator).
+    std::vector<int> SeedsOff(double d) const { return RingSeeds(m, R, rim + d * h / R(rim)); }
+    /// How far the snake's curve, resampled every h/4, lies from the rim (OffParallel).
+    ParallelOffset OffRim(Snake &s) const
+    {
+        return OffParallel(gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h), R, rim, h);
+    }
+};
 
 // A torus-like handle joined to a body: the upper half of a torus (axis y, centre-line radius
 // kHandleR in the xz-plane, tube radius kHandleTube) standing on a slab (|x| <= 3.5, |y| <= 2,
@@ -423,11 +465,7 @@ TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
     const int ops = s.Stats().operations;
     ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
     EXPECT_EQ(s.Stats().stop, SnakeStop::Converged);
-    double maxOff = 0;
-    for (const P3 &x : s.PolylinePositions()) {
-        const double phi = std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm())));
-        maxOff = std::max(maxOff, std::fabs(phi - M_PI / 2) * Waist(M_PI / 2) / h);
-    }
+    const double maxOff = OffParallel(s.PolylinePositions(), Waist, M_PI / 2, h).max;
     std::printf("valley loop on the waist: %zu samples, max %.2f h off the waist\n", s.PolylinePositions().size(), maxOff);
     EXPECT_LT(maxOff, 1.0);
     const std::vector<P3> snapped = s.PolylinePositions();
@@ -666,16 +704,14 @@ TEST(PartSalience, SidesFloodOnlyAsFarAsThePart)
 // Measured: FinishRun true, mean 0.34 h, max 0.48 h off the rim, from both seedings.
 TEST(ValleyLoop, NarrowsABandThatCoversAShortPartsTop)
 {
-    auto low = [](double phi) { return 1.0 + 0.1 * std::exp(-std::pow(phi / 0.12, 2)); };
-    const double rim = RimOf(low);
-    CMeshO m;
-    MakeRevolved(m, low, 0.0);
-    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
-    const double h = surf->MeanEdge();
-    EXPECT_LT(2 * M_PI * low(rim) * std::sin(rim) / h, 16.0); // a short rim, as the fourleg's legs
+    const RevolvedRim low([](double phi) { return 1.0 + 0.1 * std::exp(-std::pow(phi / 0.12, 2)); });
+    const CMeshO &m = low.m;
+    const auto &surf = low.surf;
+    const double h = low.h;
+    EXPECT_LT(2 * M_PI * low.R(low.rim) * std::sin(low.rim) / h, 16.0); // a short rim, as the fourleg's legs
     for (double off : {0.0, 1.5}) { // on the rim, outside it
         Snake s(surf);
-        s.InitFromSeeds(RingSeeds(m, low, rim + off * h / low(rim)), true);
+        s.InitFromSeeds(low.SeedsOff(off), true);
         s.Run(400);
         ASSERT_TRUE(s.Stats().converged);
         std::vector<int> faces;
@@ -685,15 +721,10 @@ TEST(ValleyLoop, NarrowsABandThatCoversAShortPartsTop)
         const std::vector<int> wide = ValleyLoop<CMeshO>::Find(m, s.PolylinePositions(), faces, surf->Energy(), s.LengthScale());
         EXPECT_LT(wide.size() < 3 ? 0.0 : ValleyLoop<CMeshO>::LengthOf(m, wide), 0.5 * len);
         EXPECT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
-        double mean = 0, mx = 0;
-        const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
-        for (const P3 &x : loop) {
-            const double o = std::fabs(std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm()))) - rim) * low(rim) / h;
-            mean += o / loop.size(), mx = std::max(mx, o);
-        }
-        std::printf("low bump, seeds %.1f h off the rim: the edge loop mean %.2f h, max %.2f h off the rim\n", off, mean, mx);
-        EXPECT_LT(mean, 0.6);
-        EXPECT_LT(mx, 1.0);
+        const ParallelOffset o = low.OffRim(s);
+        std::printf("low bump, seeds %.1f h off the rim: the edge loop mean %.2f h, max %.2f h off the rim\n", off, o.mean, o.max);
+        EXPECT_LT(o.mean, 0.6);
+        EXPECT_LT(o.max, 1.0);
     }
 }
 
@@ -745,49 +776,38 @@ TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
 // (16.6 h, on the equator's band, when the seeded search is taken without the price test).
 TEST(ValleyLoop, SearchesRoundTheSeededLoopWhenTheSnakeShrankFar)
 {
-    auto leg = [](double phi) { return 1.0 + 0.8 * std::exp(-std::pow(phi / 0.25, 2)); };
-    const double rim = RimOf(leg);
-    CMeshO m;
-    MakeRevolved(m, leg, 0.0);
-    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
-    const double h = surf->MeanEdge();
-    auto offRim = [&](Snake &s) {
-        double mean = 0;
-        const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
-        for (const P3 &x : loop)
-            mean += std::fabs(std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm()))) - rim) * leg(rim) / h / loop.size();
-        return mean;
-    };
+    const RevolvedRim leg([](double phi) { return 1.0 + 0.8 * std::exp(-std::pow(phi / 0.25, 2)); });
+    const auto &surf = leg.surf;
     Snake outside(surf);
-    outside.InitFromSeeds(RingSeeds(m, leg, rim + 2 * h / leg(rim)), true);
+    outside.InitFromSeeds(leg.SeedsOff(2), true);
     const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(outside);
     const ValleyLoop<CMeshO>::Param par;
     double off[2] = {0, 0};
     for (int with : {0, 1}) {
         Snake up(surf);
-        up.InitFromSeeds(RingSeeds(m, leg, rim - 4 * h / leg(rim)), true);
+        up.InitFromSeeds(leg.SeedsOff(-4), true);
         up.EndRun(SnakeStop::Converged);
         ASSERT_LT(gs_parts::LoopLength(up.PolylinePositions()), par.seededShrink * gs_parts::LoopLength(seeded.loop)); // the premise
         const bool done = ValleyLoop<CMeshO>::FinishRun(up, FeatureEnergyType::PartBoundary, false, par, with ? &seeded : nullptr);
         if (with) EXPECT_TRUE(done); // without it the bands round the loop cover the bump's top: no ring, the loop stays
         EXPECT_EQ(up.Stats().stop, SnakeStop::Converged);
-        off[with] = offRim(up);
+        off[with] = leg.OffRim(up).mean;
     }
     std::printf("loop up the bump: %.2f h off the rim without the seeded loop, %.2f h with it\n", off[0], off[1]);
     EXPECT_GT(off[0], 2.0);
     EXPECT_LT(off[1], 0.6);
     // a loop that shrank onto the rim from the equator stays on the rim
     Snake wide(surf);
-    wide.InitFromSeeds(RingSeeds(m, leg, M_PI / 2), true);
+    wide.InitFromSeeds(RingSeeds(leg.m, leg.R, M_PI / 2), true);
     const auto equator = ValleyLoop<CMeshO>::Seeded::Of(wide);
     Snake s(surf);
-    s.InitFromSeeds(RingSeeds(m, leg, rim + 2 * h / leg(rim)), true);
+    s.InitFromSeeds(leg.SeedsOff(2), true);
     s.Run(400);
     ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
     ASSERT_LT(gs_parts::LoopLength(s.PolylinePositions()), par.seededShrink * gs_parts::LoopLength(equator.loop));
     ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &equator));
-    std::printf("loop on the rim, seeded on the equator: %.2f h off the rim\n", offRim(s));
-    EXPECT_LT(offRim(s), 0.6);
+    std::printf("loop on the rim, seeded on the equator: %.2f h off the rim\n", leg.OffRim(s).mean);
+    EXPECT_LT(leg.OffRim(s).mean, 0.6);
 }
 
 namespace {

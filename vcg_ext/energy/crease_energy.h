@@ -33,7 +33,7 @@
 // at SideCap() times the crease's own scale, its narrower side; for their precise level the
 // own scale), so the basin reaches across the patch, and its ridge is where the nearest
 // crease changes (the medial axis): neighbouring creases never share a basin, whatever the
-// width.
+// width. The snakes read it through CreaseEnergyField (energy/crease_energy_field.h).
 
 #include <algorithm>
 #include <array>
@@ -48,7 +48,6 @@
 #include <vcg/space/distance3.h>
 #include <vcg/space/segment3.h>
 
-#include <vcg_ext/energy/energy_field.h>
 #include <vcg_ext/energy/patch_crease_grid.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/surface/mesh_validation.h>
@@ -461,66 +460,6 @@ private:
         }
         candStart[nf] = int(cand.size());
     }
-};
-
-/// The crease energy as the snakes read it (SnakeEnergyField): evaluated at each sample, not
-/// interpolated from vertices. Level 1 (capture) has the local basin width 3 f s, s the feature
-/// size of the nearest crease on the sample's side (f = CreaseEnergy::WidthFraction(smoothing)):
-/// it reaches across the face the snake was seeded on. Level 0 has the width f s', s' the
-/// crease's own scale (its narrower side): on a tessellation's long side slivers beside a
-/// narrow shoulder the side's own width made a valley so flat at its bottom that the curve
-/// stopped short of the rim (bench/eval/gs_creases). The snakes first slither on the wide
-/// basins, then settle in the narrow ones.
-template <class MeshType>
-class CreaseEnergyField : public SnakeEnergyField<MeshType>
-{
-public:
-    typedef CreaseEnergy<MeshType> Crease;
-    /// Width fractions of the levels for `steps` smoothing steps.
-    static std::vector<double> Fractions(int steps)
-    {
-        const double f = Crease::WidthFraction(steps);
-        return {f, CaptureFactor() * f};
-    }
-    static double CaptureFactor() { return 3.0; }
-
-    CreaseEnergyField(const MeshType &m, double angleDeg, const std::vector<double> &levelFractions) : fractions(levelFractions)
-    {
-        if (fractions.empty()) throw SnakeError("The crease energy needs at least one basin width.");
-        for (double f : fractions)
-            if (!std::isfinite(f) || f <= 0) throw SnakeError("The crease energy needs a positive basin width.");
-        crease.Build(m, angleDeg);
-        crease.Collect(Crease::ReachInWidths() * *std::max_element(fractions.begin(), fractions.end()) * crease.MaxFeatureSize());
-    }
-    int Levels() const override { return int(fractions.size()); }
-    double Value(int level, const SurfacePoint &p) const override { return crease.LocalValue(p, fraction(level), scale(level)); }
-    vcg::Point3d Gradient(int level, const SurfacePoint &p) const override
-    {
-        return crease.LocalGradient(p, fraction(level), scale(level));
-    }
-    bool AcrossFeature(int /*level*/, const SurfacePoint &p, vcg::Point3d &dir) const override
-    {
-        return crease.AcrossDirection(p, dir);
-    }
-    const Crease &Creases() const { return crease; }
-
-    /// The length unit of a snake seeded at `pts` (spacing, step caps): the basin width without
-    /// smoothing of the nearest creases' own scale (CreaseSize), the median over the points; of
-    /// the whole part's creases without points. Smoothing widens the basins, never the sampling.
-    double LengthUnit(const std::vector<SurfacePoint> &pts = {}) const
-    {
-        std::vector<double> u;
-        for (const SurfacePoint &p : pts) u.push_back(crease.CreaseSizeAt(p));
-        if (u.empty()) return Crease::WidthFraction(0) * crease.MedianCreaseSize();
-        std::nth_element(u.begin(), u.begin() + u.size() / 2, u.end());
-        return Crease::WidthFraction(0) * u[u.size() / 2];
-    }
-
-private:
-    Crease crease;
-    std::vector<double> fractions;
-    double fraction(int level) const { return fractions[std::max(0, std::min(level, int(fractions.size()) - 1))]; }
-    typename Crease::Scale scale(int level) const { return level <= 0 ? Crease::Scale::Crease : Crease::Scale::Side; }
 };
 
 } // namespace tri

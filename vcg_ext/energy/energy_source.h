@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <vcg_ext/energy/crease_energy.h>
+#include <vcg_ext/energy/crease_energy_field.h>
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/surface/mesh_validation.h>

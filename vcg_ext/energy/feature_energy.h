@@ -460,14 +460,6 @@ private:
         }
     }
 
-    static double Diagonal(const MeshType &m)
-    {
-        vcg::Box3d b;
-        for (const VertexType &v : m.vert)
-            if (!v.IsD()) b.Add(vcg::Point3d::Construct(v.cP()));
-        return b.Diag();
-    }
-
     /// MeshValidation::MeanEdgeLength, 0 where it has none (Compute says why in its own words).
     static double MeanEdgeOrZero(const MeshType &m)
     {

@@ -1,48 +1,30 @@
 #ifndef VCG_EXT_SNAKE_CONTROLLER_H
 #define VCG_EXT_SNAKE_CONTROLLER_H
 
-// The logic of the interactive edit tool, without Qt or OpenGL (so it is unit-testable):
-// several snakes on one mesh (one selected), the seeds being placed, step/run, point
-// editing (move, pin, insert, delete), undo/redo, export, and the session (snakes, pins,
-// parameters, energy settings) saved to / restored from JSON, e.g. the sidecar file
-// <mesh>.snakes.json next to the mesh, with a throttled autosave.
-//
-// Its parts: the energy and surface (SnakeEnergySource), the seed list being placed
-// (SnakeSeedList), how a new snake is built from it (SnakeBuilder), the undo history of whole
-// user actions (SnakeSessionHistory), the session file (SnakeSessionFile), and where and when it
-// is saved (SnakeSidecar, SnakeAutosave).
+// The logic of the interactive edit tool, without Qt or OpenGL (so it is unit-testable): the
+// operations on several snakes on one mesh (one selected): the seeds being placed (SnakeSeedList)
+// and the snakes built from them (SnakeBuilder), step/run, point editing (move, pin, insert,
+// delete), parameters and export. They work on a SnakeSession (session/snake_session.h: the
+// energy, the snakes, seeds and parameters, the rule every change follows, the undo of whole
+// user actions) that is saved to / restored from JSON, e.g. the sidecar file
+// <mesh>.snakes.json next to the mesh, with a throttled autosave (SnakeStoredSession,
+// session/stored_session.h).
 //
 // Every user input is validated: bad input throws vcg::tri::SnakeError with a message
 // for the user, and leaves the controller unchanged.
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <ctime>
-#include <filesystem>
-#include <fstream>
-#include <functional>
 #include <limits>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include <vcg_ext/energy/crease_energy.h>
-#include <vcg_ext/energy/energy_source.h>
-#include <vcg_ext/energy/feature_energy.h>
-#include <vcg_ext/io/safe_file_write.h>
 #include <vcg_ext/io/snake_io.h>
 #include <vcg_ext/paths/seed_list.h>
 #include <vcg_ext/paths/seed_path_cost.h>
 #include <vcg_ext/paths/seed_points.h>
-#include <vcg_ext/session/mesh_selection_memento.h>
-#include <vcg_ext/session/session_file.h>
-#include <vcg_ext/session/session_history.h>
-#include <vcg_ext/session/sidecar.h>
 #include <vcg_ext/session/snake_builder.h>
+#include <vcg_ext/session/stored_session.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/snake/geometric_snake.h>
 #include <vcg_ext/surface/snake_surface.h>
@@ -52,65 +34,22 @@ namespace vcg {
 namespace tri {
 
 template <class MeshType>
-class SnakeController
+class SnakeController : public SnakeStoredSession<MeshType>
 {
-public:
-    typedef GeometricSnake<MeshType> Snake;
-    typedef SnakeSurface<MeshType> Surface;
-    typedef SnakeIO<MeshType> IO;
-    typedef nlohmann::json json;
+    typedef SnakeStoredSession<MeshType> Base;
 
-    typedef SnakeSessionFile<MeshType> SessionFile;
+public:
+    typedef typename Base::Snake Snake;
+    typedef typename Base::IO IO;
+    typedef typename Base::Action Action;
 
     /// Largest selection "use selected vertices" accepts (the ordering is quadratic).
     static int MaxSelectedSeeds() { return 5000; }
 
-    explicit SnakeController(MeshType &m) : mesh(m) {}
-    // the undo history refers to the members
-    SnakeController(const SnakeController &) = delete;
-    SnakeController &operator=(const SnakeController &) = delete;
-
-    MeshType &Mesh() { return mesh; }
+    explicit SnakeController(MeshType &m) : Base(m) {}
 
     // ================================================================ energy
-    /// Computes the feature energy into the vertex quality (low = feature) and makes every
-    /// snake slither on it. Throws on a bad type/smoothing or an unusable mesh.
-    void ComputeEnergy(FeatureEnergyType type, int smoothing)
-    {
-        energy.Compute(type, smoothing);
-        energyChanged();
-    }
-    /// The energy with the current settings, computed (if it is not yet) while `adjacency`,
-    /// the caller's FF/VF build, runs: on a large mesh the two share the two cores
-    /// (SnakeEnergySource::ComputeBeside).
-    void ComputeEnergyBeside(const std::function<void()> &adjacency)
-    {
-        const bool before = energy.Computed();
-        energy.ComputeBeside(adjacency);
-        if (!before) energyChanged();
-    }
-    /// Any quality field can drive a snake: take the current vertex quality as the energy
-    /// (low = feature) instead of computing one. Saved sessions remember it.
-    void UseQualityAsEnergy()
-    {
-        energy.UseQuality();
-        energyChanged();
-    }
-    bool EnergyFromQuality() const { return energy.FromQuality(); }
-    bool EnergyComputed() const { return energy.Computed(); }
-    FeatureEnergyType EnergyType() const { return energy.Type(); }
-    /// Dihedral angle (degrees) above which an edge is a crease, for the crease energy.
-    double CreaseAngle() const { return energy.CreaseAngle(); }
-    void SetCreaseAngle(double deg)
-    {
-        if (energy.SetCreaseAngle(deg)) energyChanged();
-    }
-    int EnergySmoothing() const { return energy.Smoothing(); }
-    /// Energy settings used when the energy is computed on demand (first snake).
-    void SetEnergySettings(FeatureEnergyType type, int smoothing)
-    {
-        if (energy.SetSettings(type, smoothing)) energyChanged();
-    }
+    // (its settings: SnakeSession)
     /// Computes the energy and builds the shared surface on another thread, for the snakes to
     /// come (SnakeEnergySource::PrepareInBackground): the edit tool starts it when it starts,
     /// so that Build does not wait for them. The mesh must not change until a call that uses
@@ -120,16 +59,6 @@ public:
         energy.PrepareInBackground();
         builder.PrepareInBackground();
     }
-    /// The shared surface; computes the energy first if that was not done yet.
-    Surface &EnsureSurface() { return *energy.EnsureSurface(); }
-    bool HasSurface() const { return bool(energy.SurfacePtr()); }
-    /// Warnings about the energy the snakes read, for the Log.
-    std::vector<std::string> EnergyWarnings() { return energy.Warnings(); }
-    /// False when the mesh lost or gained elements since the snakes were built on it.
-    bool MeshMatches() const { return !HasSurface() || energy.SurfacePtr()->MatchesMesh(); }
-    double MeanEdge() { return EnsureSurface().MeanEdge(); }
-    /// The length unit of new snakes seeded at `seeds` (SnakeEnergySource::LengthScale).
-    double LengthScale(const std::vector<SurfacePoint> &seeds = {}) { return energy.LengthScale(seeds); }
 
     // ================================================================ seeds
     /// The seed list being placed (SnakeSeedList); each change below is one undo step.
@@ -206,7 +135,7 @@ public:
         if (seedList.size() < need)
             throw SnakeError(std::string("Geometric snake: ") + (closed ? "a closed" : "an open") + " snake needs at least " +
                              std::to_string(need) + " seeds (" + std::to_string(seedList.size()) + " placed).");
-        EnsureSurface();
+        this->EnsureSurface();
         checkMesh();
         addSnake(builder.FromSeeds(seedList, closed, params, seedCost), true);
         return selected;
@@ -216,7 +145,7 @@ public:
     /// Pick Points file, SeedPointSnap): the curve starts and ends exactly at them. Selects it.
     int CreateSnakeFromSeedPoints(const std::vector<SurfacePoint> &pts, bool closed)
     {
-        EnsureSurface();
+        this->EnsureSurface();
         checkMesh();
         addSnake(builder.FromSeedPoints(pts, closed, params, seedCost), false);
         return selected;
@@ -238,7 +167,7 @@ public:
         if (seedList.size() < 2)
             throw SnakeError("Geometric snake: completing a stroke into a loop needs at least 2 seeds across the part (" +
                              std::to_string(seedList.size()) + " placed).");
-        addSnake(loopSnake(seedList.Points(EnsureSurface()), view), true);
+        addSnake(loopSnake(seedList.Points(this->EnsureSurface()), view), true);
         return selected;
     }
 
@@ -356,24 +285,21 @@ public:
     void MoveSample(int i, const SurfacePoint &p, bool pin)
     {
         checkSurfacePoint(p);
-        Snake &s = sel();
-        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        Snake &s = selSample(i);
         record("move sample");
         s.MoveSample(i, p, pin);
         touch("move sample");
     }
     void SetFixed(int i, bool fixed)
     {
-        Snake &s = sel();
-        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        Snake &s = selSample(i);
         record(fixed ? "pin" : "unpin");
         s.SetFixed(i, fixed);
         touch(fixed ? "pin" : "unpin");
     }
     bool TogglePin(int i)
     {
-        Snake &s = sel();
-        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        Snake &s = selSample(i);
         bool f = !s.Samples()[i].fixed;
         SetFixed(i, f);
         return f;
@@ -381,8 +307,7 @@ public:
     /// Inserts a sample after sample i (before it for the last sample of an open snake).
     int InsertSampleAfter(int i)
     {
-        Snake &s = sel();
-        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        Snake &s = selSample(i);
         int gap = (!s.Closed() && i == s.SampleCount() - 1) ? i - 1 : i;
         const bool pushed = record("insert sample");
         int r;
@@ -393,8 +318,7 @@ public:
     }
     void DeleteSample(int i)
     {
-        Snake &s = sel();
-        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        Snake &s = selSample(i);
         if (s.SampleCount() <= (s.Closed() ? 3 : 2))
             throw SnakeError("Geometric snake: cannot delete, the snake would have too few samples.");
         record("delete sample");
@@ -402,69 +326,6 @@ public:
         touch("delete sample");
     }
 
-    // --- undo / redo of whole user actions (SnakeSessionHistory)
-    /// Groups every change until the matching EndAction into one undo step (a Run, a drag);
-    /// groups nest. An action that changes nothing leaves no step.
-    void BeginAction(const std::string &label) { history.BeginAction(label); }
-    void EndAction() { history.EndAction(); }
-    bool InAction() const { return history.InAction(); }
-    /// BeginAction / EndAction for a scope.
-    struct Action
-    {
-        SnakeController &c;
-        Action(SnakeController &ctl, const std::string &label) : c(ctl) { c.BeginAction(label); }
-        ~Action() { c.EndAction(); }
-    };
-
-    bool CanUndo() const { return history.CanUndo(); }
-    bool CanRedo() const { return history.CanRedo(); }
-    /// The action Undo / Redo would take back / do again, e.g. "run" ("" if none).
-    std::string UndoLabel() const { return history.UndoLabel(); }
-    std::string RedoLabel() const { return history.RedoLabel(); }
-    /// Returns to the session as it was before the last action (all snakes, seeds, selection).
-    bool Undo()
-    {
-        if (!history.Undo(makeSnake(), saveSelection(), loadSelection())) return false;
-        touch("undo");
-        return true;
-    }
-    bool Redo()
-    {
-        if (!history.Redo(makeSnake(), saveSelection(), loadSelection())) return false;
-        touch("redo");
-        return true;
-    }
-    /// A change of the mesh's face and vertex selection made by `change()` (e.g. a cut's Select
-    /// inside): one undo step that brings the selection back. Nothing is recorded if change()
-    /// leaves the selection as it was, or throws (the selection is then put back).
-    template <class Change>
-    void ChangeSelection(const std::string &label, Change change)
-    {
-        auto before = std::make_shared<const Selection>(Selection::Save(mesh));
-        try {
-            change();
-        } catch (...) {
-            before->Restore(mesh);
-            throw;
-        }
-        if (Selection::Save(mesh) == *before) return;
-        history.RecordMesh(label, std::move(before));
-        ++selectionRevision;
-        touch(label.c_str());
-    }
-    /// Increases whenever the controller changes the mesh's selection (ChangeSelection, or an
-    /// undo / redo of it): the view redraws the selection then.
-    long SelectionRevision() const { return selectionRevision; }
-    /// The undo history, to keep while the edit tool is away (SnakeKeptHistories): taken out
-    /// (this controller's history is left empty) and adopted by the next controller on the same
-    /// mesh once it has restored the session this one saved.
-    typedef typename SnakeSessionHistory<Snake, SnakeSeedList<MeshType>, MeshSelectionMemento<MeshType>>::KeptSteps KeptHistory;
-    KeptHistory TakeHistory() { return history.Take(); }
-    void AdoptHistory(KeptHistory h) { history.Adopt(std::move(h)); }
-    /// Memory bound of the history (default 100 MB) and its current estimate.
-    void SetUndoLimit(size_t bytes) { history.SetLimit(bytes); }
-    size_t UndoBytes() const { return history.Bytes(); }
-    size_t UndoSteps() const { return history.Steps(); }
     /// Compute time of all operations so far (ms): a Run's wall time is compared to it.
     double ComputeMs() const { return computeMs; }
 
@@ -507,144 +368,32 @@ public:
         IO::WriteCurves(path, out, keep);
     }
 
-    /// The whole session (SnakeSessionFile): energy settings, parameters, seeds, snakes with pins.
-    json ToJson()
-    {
-        SessionFile f(mesh);
-        f.energyFromQuality = energy.FromQuality();
-        f.energyType = energy.Type();
-        f.energySmoothing = energy.Smoothing();
-        f.creaseAngle = energy.CreaseAngle();
-        f.params = params;
-        f.seedCost = seedCost;
-        f.selected = selected;
-        f.seeds = seedList;
-        json j = f.HeaderJson(mesh);
-        for (auto &s : snakes) j["snakes"].push_back(IO::ToJson(*s));
-        return j;
-    }
-
-    /// Restores a session saved by ToJson on this mesh. All or nothing: on error (other
-    /// mesh, broken file) the controller is unchanged and a SnakeError says why.
-    void FromJson(const json &j)
-    {
-        SessionFile f = SessionFile::Read(mesh, j);
-        if (energy.Apply(f.energyFromQuality, f.energyType, f.energySmoothing, f.creaseAngle)) energyChanged();
-        const std::shared_ptr<Surface> &surface = energy.EnsureSurface();
-        checkMesh();
-        std::vector<std::unique_ptr<Snake>> nsn;
-        for (const auto &fs : f.snakes) {
-            std::unique_ptr<Snake> s(new Snake(surface, fs.params));
-            s->InitFromSamples(fs.samples, fs.closed, fs.lengthScale);
-            // the curve a cut embedded, as saved (false, the snake traced anew, if it no longer fits)
-            if (!fs.embedded.empty()) s->KeepPolyline(fs.embedded);
-            nsn.push_back(std::move(s));
-        }
-        snakes = std::move(nsn);
-        history.Clear();
-        selected = f.selected;
-        params = f.params;
-        seedList = f.seeds;
-        seedCost = f.seedCost;
-        touch("load");
-    }
-
-    /// Writes the session safely (SafeFileWrite: temporary file, then rename): a crash or a
-    /// full disk never leaves a half-written session behind.
-    void Save(const std::string &path)
-    {
-        if (path.empty()) throw SnakeError("Geometric snake: no file name to save the session to.");
-        SafeFileWrite::Write(path, ToJson().dump(1) + "\n");
-        autosave.Saved(revision);
-    }
-
-    /// Loads a session file; false if there is none, throws if it is unusable. Only what the
-    /// session needs is kept while reading (SnakeIO::ParseLean): memory about the file's size.
-    bool Load(const std::string &path)
-    {
-        std::error_code ec;
-        if (!std::filesystem::exists(path, ec)) return false;
-        FromJson(IO::ParseFileLean(path));
-        autosave.Saved(revision);
-        return true;
-    }
-
-    typedef SnakeAutosave::Status SidecarStatus;
-    /// Starts the session of the mesh file `meshPath`: restores its sidecar (if `restore` and it
-    /// exists) and autosaves to it from now on. A sidecar that cannot be read (broken, truncated,
-    /// made on another mesh, too large) is never touched: the session autosaves to a new
-    /// SnakeSidecar::RecoveryPath() file instead, and the message says so (SnakeAutosave::Open).
-    /// That holds too when the session came from the mesh (`restore` false): a sidecar of the mesh
-    /// as it is on disk is not this mesh's once a cut added faces (issue 34), and keeps its curves.
-    SidecarStatus OpenSidecar(const std::string &meshPath, bool restore, std::time_t now = std::time(nullptr))
-    {
-        return autosave.Open(meshPath, restore, now, [this](const std::string &side, bool load) {
-            if (load)
-                Load(side);
-            else
-                SessionFile::Read(mesh, IO::ParseFileLean(side)); // readable, and of this mesh?
-        });
-    }
-
-    /// Autosave target (empty: none) and minimum interval between two autosaves.
-    void SetAutosave(const std::string &path, double minIntervalSeconds = 1.0) { autosave.Set(path, minIntervalSeconds); }
-    const std::string &AutosavePath() const { return autosave.Path(); }
-    /// Saves if something changed since the last save and (unless forced) the interval
-    /// has passed. Returns true if it wrote. Throws SnakeError if writing fails.
-    bool Autosave(bool force = false)
-    {
-        if (!autosave.Due(revision, force)) return false;
-        Save(autosave.Path());
-        return true;
-    }
-    bool Dirty() const { return autosave.Dirty(revision); }
-
     // ================================================================ status
-    /// Increases with every change (for redraws, autosave and auto-export).
-    long Revision() const { return revision; }
-    const std::string &LastOperation() const { return lastOp; }
     double LastOperationMs() const { return lastOpMs; }
 
 private:
-    MeshType &mesh;
-    SnakeEnergySource<MeshType> energy{mesh};
-    std::vector<std::unique_ptr<Snake>> snakes;
-    int selected = -1;
-    SnakeSeedList<MeshType> seedList{mesh};
-    SnakeParams params;
-    SeedPathCost seedCost = SeedPathCost::Length;
-    long revision = 0;
-    std::string lastOp;
-    double lastOpMs = 0;
-    SnakeAutosave autosave;
-    double computeMs = 0;
+    using Base::checkMesh;
+    using Base::energy;
+    using Base::energyChanged;
+    using Base::history;
+    using Base::mesh;
+    using Base::params;
+    using Base::record;
+    using Base::seedCost;
+    using Base::seedList;
+    using Base::selected;
+    using Base::snakes;
+    using Base::touch;
 
-    typedef MeshSelectionMemento<MeshType> Selection;
-    SnakeSessionHistory<Snake, SnakeSeedList<MeshType>, Selection> history{{snakes, selected, seedList, params}};
-    long selectionRevision = 0;
-    auto saveSelection()
-    {
-        return [this] { return std::make_shared<const Selection>(Selection::Save(mesh)); };
-    }
-    auto loadSelection()
-    {
-        return [this](const Selection &s) {
-            if (s.Restore(mesh)) ++selectionRevision;
-        };
-    }
+    double lastOpMs = 0;
+    double computeMs = 0;
     // builds new snakes, keeping the seed paths' index across builds; last: its background
     // build ends first
     SnakeBuilder<MeshType> builder{mesh, energy};
 
-    bool record(const char *label) { return history.Record(label); }
-    // builds the snakes an undo brings back
-    auto makeSnake()
-    {
-        return [this](const SnakeParams &p) { return std::unique_ptr<Snake>(new Snake(energy.EnsureSurface(), p)); };
-    }
     std::unique_ptr<Snake> loopSnake(const std::vector<SurfacePoint> &stroke, const vcg::Point3d &view)
     {
-        EnsureSurface();
+        this->EnsureSurface();
         checkMesh();
         return builder.LoopFromStroke(stroke, view, params, seedCost);
     }
@@ -659,18 +408,6 @@ private:
         touch("create snake");
     }
 
-    void touch(const char *op)
-    {
-        ++revision;
-        lastOp = op;
-    }
-    /// A new energy: the snakes start afresh on it, and their mementos are outdated.
-    void energyChanged()
-    {
-        for (auto &s : snakes) s->EnergyChanged();
-        history.AllChanged();
-        touch("energy");
-    }
     void checkSnake(int i) const
     {
         if (i < 0 || i >= int(snakes.size()))
@@ -695,17 +432,18 @@ private:
         }
         return r;
     }
-    void checkMesh() const
-    {
-        if (!MeshMatches())
-            throw SnakeError("Geometric snake: the mesh changed (vertices or faces were added or removed) since the "
-                             "snakes were built; restart the tool.");
-    }
     Snake &sel()
     {
         Snake *s = SelectedSnake();
         if (!s) throw SnakeError("Geometric snake: no snake selected (place seeds and close them first).");
         return *s;
+    }
+    // the selected snake, which has a sample i
+    Snake &selSample(int i)
+    {
+        Snake &s = sel();
+        if (i < 0 || i >= s.SampleCount()) throw SnakeError("Geometric snake: no sample " + std::to_string(i) + ".");
+        return s;
     }
 };
 
