@@ -183,9 +183,9 @@ public:
     /// and candidates round the same part moved into the body. h: the length unit.
     /// find(guide, guideFaces, cost, narrow): the cheapest edge loop round a guide polyline
     /// (empty if none), descended; narrow: in a band of Param::profileBand units, not descended
-    /// (the width profile's ring). inBand(p): p lies in the band the loop was already chosen in (candidates mostly
-    /// there are left to that choice). The mesh's VF adjacency must be current; the cost follows
-    /// the part and the steps x stepLength units searched, not the mesh.
+    /// (the width profile's ring). inBand(p): p lies in the band the loop was already chosen in
+    /// (candidates mostly there are left to that choice). The mesh's VF adjacency must be
+    /// current; the cost follows the part and the steps x stepLength units searched, not the mesh.
     template <class Finder, class InBand>
     static std::vector<int> Choose(const MeshType &m, const std::vector<int> &loop, double cost, double h, const Param &par,
                                    Finder find, InBand inBand)
@@ -350,10 +350,10 @@ public:
         return best;
     }
 
-    /// The area A of the side of a candidate loop (sc, its sides) holding vertex rep (the part's), flooded to its end
-    /// (the smaller side, as a rule); false when rep is on the loop, the loop cuts nothing off,
-    /// or that side is not below mp of the mesh (s0, the first loop's sides, flooded further
-    /// only as far as this test needs the mesh's area).
+    /// The area A of the side of a candidate loop (sc: its sides) holding vertex rep (the
+    /// part's), flooded to its end (the smaller side, as a rule); false when rep is on the loop,
+    /// the loop cuts nothing off, or that side is not below mp of the mesh (s0, the first loop's
+    /// sides, flooded further only as far as this test needs the mesh's area).
     static bool PartArea(Sides &sc, int rep, Sides &s0, double mp, double &A)
     {
         if (sc.OnLoop(rep)) return false;
