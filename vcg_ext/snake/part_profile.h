@@ -9,9 +9,10 @@
 // Lee et al. 2005's part salience: a cut where the part's cross-section jumps). Beyond the paper
 // (Lee & Lee 2002 has no part boundaries); used by PartSalience (docs/method.md, "Session 26").
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -46,6 +47,19 @@ public:
     template <class IsBody>
     static double ContourLength(const MeshType &m, IsBody isBody, const std::unordered_map<int, double> &dist, double d)
     {
+        return ContourLengths(m, isBody, dist, std::vector<double>(1, d))[0];
+    }
+
+    /// ContourLength at every level of `levels` in one pass over the faces: a face
+    /// counts at level d when first reached from a vertex nearer than d, in dist's order, so each
+    /// level's sum adds the same terms in the same order as ContourLength at that level alone.
+    template <class IsBody>
+    static std::vector<double> ContourLengths(const MeshType &m, IsBody isBody, const std::unordered_map<int, double> &dist,
+                                              const std::vector<double> &levels)
+    {
+        std::vector<double> len(levels.size(), 0);
+        if (levels.empty()) return len;
+        const double top = *std::max_element(levels.begin(), levels.end());
         auto val = [&](int v, double &x) {
             if (!isBody(v)) {
                 x = -1;
@@ -56,29 +70,41 @@ public:
             x = it->second;
             return true;
         };
-        std::unordered_set<const FaceType *> seen;
-        double len = 0;
+        // per face reached: the least distance of the vertices it was reached from so far (a
+        // level above it has counted the face already)
+        std::unordered_map<const FaceType *, double> reached;
         for (const auto &od : dist) {
-            if (!(od.second < d)) continue;
+            const double dv = od.second;
+            if (!(dv < top)) continue; // reaches no level
             const typename MeshType::VertexType *p = &m.vert[od.first];
             for (const FaceType *f = p->cVFp(), *next = nullptr; f; f = next) {
                 const int z = (f->cV(0) == p) ? 0 : (f->cV(1) == p ? 1 : 2);
                 next = f->cVFp(z);
-                if (f->IsD() || !seen.insert(f).second) continue;
+                if (f->IsD()) continue;
+                const auto ins = reached.insert({f, dv});
+                const double before = ins.second ? std::numeric_limits<double>::infinity() : ins.first->second;
+                if (!ins.second) {
+                    if (!(dv < before)) continue; // every level this vertex reaches counted the face
+                    ins.first->second = dv;
+                }
                 double x[3];
                 bool known = true;
                 for (int k = 0; k < 3 && known; ++k) known = val(int(f->cV(k) - &m.vert[0]), x[k]);
                 if (!known) continue;
-                vcg::Point3d q[2];
-                int n = 0;
-                for (int k = 0; k < 3 && n < 2; ++k) {
-                    const double a = x[k] - d, b = x[(k + 1) % 3] - d;
-                    if ((a < 0) != (b < 0)) {
-                        const double t = a / (a - b);
-                        q[n++] = vcg::Point3d::Construct(f->cP(k)) * (1 - t) + vcg::Point3d::Construct(f->cP((k + 1) % 3)) * t;
+                for (size_t i = 0; i < levels.size(); ++i) {
+                    const double d = levels[i];
+                    if (!(dv < d) || before < d) continue; // not reached here / reached before
+                    vcg::Point3d q[2];
+                    int n = 0;
+                    for (int k = 0; k < 3 && n < 2; ++k) {
+                        const double a = x[k] - d, b = x[(k + 1) % 3] - d;
+                        if ((a < 0) != (b < 0)) {
+                            const double t = a / (a - b);
+                            q[n++] = vcg::Point3d::Construct(f->cP(k)) * (1 - t) + vcg::Point3d::Construct(f->cP((k + 1) % 3)) * t;
+                        }
                     }
+                    if (n == 2) len[i] += vcg::Distance(q[0], q[1]);
                 }
-                if (n == 2) len += vcg::Distance(q[0], q[1]);
             }
         }
         return len;
@@ -94,8 +120,10 @@ public:
         if (!(par.slope > 0) || !(par.grid > 0) || !(h > 0)) return -1;
         const int n = int(std::floor(reach / (par.grid * h) + 1e-9));
         const int span = std::max(1, int(std::lround(1.0 / par.grid))); // one unit
-        std::vector<double> L(n + 1, 0);
-        for (int k = 1; k <= n; ++k) L[k] = ContourLength(m, isBody, dist, k * par.grid * h) / h;
+        std::vector<double> levels(std::max(0, n)), L(n + 1, 0);
+        for (int k = 1; k <= n; ++k) levels[k - 1] = k * par.grid * h;
+        const std::vector<double> len = ContourLengths(m, isBody, dist, levels);
+        for (int k = 1; k <= n; ++k) L[k] = len[k - 1] / h;
         for (int k = 1; k + span <= n; ++k)
             if (L[k + span] - L[k] > par.slope) return k * par.grid >= par.minTube ? k * par.grid * h : -1;
         return -1;
