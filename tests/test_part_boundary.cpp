@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <unordered_map>
 #include <random>
 #include <string>
 
@@ -911,6 +912,29 @@ TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
     EXPECT_LT(maxOff(with, 0.0), 1e-6); // every vertex on the limb's last ring
     ASSERT_EQ(without.size(), size_t(kLimbN));
     EXPECT_LT(maxOff(without, 3.0), 1e-6); // the mechanism: salience and the descent keep the dimple
+}
+
+// The profile's level-set lengths for all levels in one pass (session 27) are ContourLength's at
+// each level, bit for bit (the same terms added in the same order), and on the tube of the limb
+// above the perimeter of its ring polygon: the depth below z = 0.3 as the distance, the levels
+// between rings (3 in the tube, 9 down the body's cone).
+TEST(PartProfile, ContourLengthsInOnePassMatchEachLevel)
+{
+    CMeshO m;
+    MakeLimbOnBody(m);
+    std::unordered_map<int, double> dist;
+    for (int v = 0; v < int(m.vert.size()); ++v)
+        if (m.vert[v].cP()[2] <= 0.3 + 1e-6) dist[v] = 0.3 - m.vert[v].cP()[2];
+    auto isBody = [](int) { return true; };
+    std::vector<double> levels;
+    for (int j = 0; j < 12; ++j) levels.push_back((j + 0.5) * kLimbStep);
+    const std::vector<double> all = PartProfile<CMeshO>::ContourLengths(m, isBody, dist, levels);
+    ASSERT_EQ(all.size(), levels.size());
+    for (size_t i = 0; i < levels.size(); ++i) {
+        EXPECT_EQ(all[i], PartProfile<CMeshO>::ContourLength(m, isBody, dist, levels[i])) << "level " << levels[i];
+        if (i < 3) EXPECT_NEAR(all[i], 2 * kLimbN * std::sin(M_PI / kLimbN), 1e-5) << "level " << levels[i];
+        if (i >= 3) EXPECT_GT(all[i], all[i - 1]); // the cone opens
+    }
 }
 
 namespace {
