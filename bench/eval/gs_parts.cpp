@@ -14,9 +14,6 @@
 //            [--salience-width-samples N] [--sdf-rays N]
 //   (--salience-width E: PartSalience::Param::widthExponent, the shape-diameter ratio's
 //   exponent, 0 = off; the others its widthReach, widthRadius, widthSamples and sdf.rays)
-//            [--salience-part-steps N] [--salience-part-margin M] [--salience-part-step S]
-//            [--salience-part-descend] [--salience-part-keep-band]
-//   (candidates towards the part, PartSalience::Param::partSteps etc.; 0 steps = off)
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
 //   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
 //   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
@@ -142,11 +139,6 @@ int main(int argc, char **argv)
         else if (a == "--sdf-rays") vlp.salience.sdf.rays = std::stoi(next());
         else if (a == "--salience-width-radius") vlp.salience.widthRadius = std::stod(next());
         else if (a == "--salience-width-samples") vlp.salience.widthSamples = std::stoi(next());
-        else if (a == "--salience-part-steps") vlp.salience.partSteps = std::stoi(next());
-        else if (a == "--salience-part-margin") vlp.salience.partMargin = std::stod(next());
-        else if (a == "--salience-part-step") vlp.salience.partStepLength = std::stod(next());
-        else if (a == "--salience-part-descend") vlp.salience.partDescend = true;
-        else if (a == "--salience-part-keep-band") vlp.salience.partSkipBand = false;
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());

@@ -86,18 +86,6 @@ public:
         /// region is most of the price.
         double widthRadius = 0.5;
         typename ShapeDiameter<MeshType>::Param sdf;
-        /// Candidates towards the part too (session 27): guides at k x stepLength units into
-        /// the part's side, k = 1..partSteps, found without the descent (in a band of
-        /// profileBand units: the descent slides back to the loop), each taken when it scores
-        /// below partMargin x the best so far. 0: off.
-        /// On bench/eval/gs_parts (--energy part --rings 2,3) against 161/220, none gained:
-        /// 4 steps of 2 units, margin 0.95: 154 (-7); with the descent 152 (-9); margin 0.8:
-        /// 159 (-2); steps of 1 unit, band rings kept: 157 (-4), margin 0.8 159 (-2).
-        int partSteps = 0;
-        double partMargin = 0.95;
-        double partStepLength = 2.0;
-        bool partDescend = false;
-        bool partSkipBand = true; ///< candidates mostly in the descent's band are left to it
     };
 
     /// The sides of a loop of vertex indices: the mesh's vertices without the loop's, joined by
@@ -269,12 +257,53 @@ public:
             return c != -1 && (c == -2 || c == body);
         };
         std::unordered_map<int, double> dist;
-        SideDistance(m, loop, isBody, reach, dist);
+        typedef std::pair<double, int> QE;
+        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+        for (int v : loop) dist[v] = 0, q.push({0, v});
+        double edge = 0; // the longest edge out of a vertex nearer than reach
+        while (!q.empty()) {
+            const QE e = q.top();
+            q.pop();
+            if (e.first > dist[e.second]) continue;
+            if (e.first > reach + edge) break;
+            ForFaces(m, e.second, [&](const FaceType *f, int z) {
+                for (int k = 1; k < 3; ++k) {
+                    const int b = index(m, f->cV((z + k) % 3));
+                    if (!isBody(b)) continue;
+                    const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
+                    if (e.first < reach) edge = std::max(edge, l);
+                    const auto it = dist.find(b);
+                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
+                }
+            });
+        }
         std::vector<int> nb;
         for (int k = 1; k <= par.steps; ++k) {
+            // the guide: the edge loop at distance d into the body where it is one loop (session
+            // 24), else each loop vertex walked up the distance into the body to k steps (the
+            // walks merge on a thin part: a guide of 4 chords across it finds no ring)
+            const double d = k * par.stepLength * h;
             std::vector<vcg::Point3d> guide;
             std::vector<int> guideFaces;
-            Guide(m, loop, isBody, dist, k * par.stepLength * h, nb, guide, guideFaces);
+            std::vector<int> gv = LevelLoop(m, isBody, dist, d);
+            if (gv.empty())
+                for (int v : loop) {
+                    int cur = v;
+                    while (dist.at(cur) < d) {
+                        int nx = -1;
+                        Neighbours(m, cur, nb);
+                        for (int b : nb)
+                            if (isBody(b) && dist.at(b) > dist.at(cur) && (nx < 0 || dist.at(b) > dist.at(nx))) nx = b;
+                        if (nx < 0) break;
+                        cur = nx;
+                    }
+                    if (gv.empty() || gv.back() != cur) gv.push_back(cur);
+                }
+            for (int v : gv) {
+                guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+                const FaceType *f = m.vert[v].cVFp();
+                if (f) guideFaces.push_back(int(f - &m.face[0]));
+            }
             if (guide.size() < 3) break;
             double gL = 0;
             for (size_t i = 0; i < guide.size(); ++i) gL += vcg::Distance(guide[i], guide[(i + 1) % guide.size()]);
@@ -297,47 +326,6 @@ public:
                 sc2 *= width(cand, [&](int v) { return sc.Side(v) == pc; });
             }
             if (sc2 < par.margin * bestScore) bestScore = sc2, best = cand, bestCpl = c / L;
-        }
-        // candidates towards the part (session 27): a loop that settled on the body's side of
-        // where the part meets it (a deeper valley round the body's side of a hip) competes
-        // with rings on the part's side, priced by the same salience and width, found in the
-        // narrow band without the descent (which would slide back to the loop)
-        if (par.partSteps > 0) {
-            auto isPart = [&](int v) {
-                const int c = s0.Side(v);
-                return c >= 0 && c != body;
-            };
-            std::unordered_map<int, double> pdist;
-            const double psl = par.partStepLength;
-            SideDistance(m, loop, isPart, par.partSteps * psl * h, pdist);
-            double partBest = bestScore;
-            std::vector<int> partLoop;
-            for (int k = 1; k <= par.partSteps; ++k) {
-                std::vector<vcg::Point3d> guide;
-                std::vector<int> guideFaces;
-                Guide(m, loop, isPart, pdist, k * psl * h, nb, guide, guideFaces);
-                if (guide.size() < 3) break;
-                double c = 0;
-                const std::vector<int> cand = find(guide, guideFaces, c, !par.partDescend);
-                if (cand.size() < 3) continue;
-                int within = 0;
-                for (int v : cand) within += inBand(vcg::Point3d::Construct(m.vert[v].cP()));
-                if (par.partSkipBand && 2 * within >= int(cand.size())) continue;
-                if (cand == loop) continue;
-                const double L = Length(m, cand);
-                if (!(L > 0.5 * L0) || L > par.growth * L0) continue;
-                Sides sc(m, cand);
-                double A = 0;
-                if (!PartArea(sc, rep, s0, mp, A)) continue;
-                double sc2 = score(c, L, A);
-                if (par.widthExponent > 0) {
-                    ensureSdf();
-                    const int pc = sc.Side(rep);
-                    sc2 *= width(cand, [&](int v) { return sc.Side(v) == pc; });
-                }
-                if (sc2 < par.partMargin * partBest) partBest = sc2, partLoop = cand;
-            }
-            if (!partLoop.empty()) return partLoop;
         }
         // the width profile (session 26): the ring before the part's perimeter jumps, where a
         // limb of even width meets the body, when the loop sits farther up the limb
@@ -397,62 +385,6 @@ public:
     }
 
 private:
-    /// Edge distance from `loop` over the vertices with onSide(v) (the loop's own at 0): every
-    /// vertex nearer than reach and its neighbours.
-    template <class OnSide>
-    static void SideDistance(const MeshType &m, const std::vector<int> &loop, OnSide onSide, double reach,
-                             std::unordered_map<int, double> &dist)
-    {
-        typedef std::pair<double, int> QE;
-        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
-        for (int v : loop) dist[v] = 0, q.push({0, v});
-        double edge = 0; // the longest edge out of a vertex nearer than reach
-        while (!q.empty()) {
-            const QE e = q.top();
-            q.pop();
-            if (e.first > dist[e.second]) continue;
-            if (e.first > reach + edge) break;
-            ForFaces(m, e.second, [&](const FaceType *f, int z) {
-                for (int k = 1; k < 3; ++k) {
-                    const int b = index(m, f->cV((z + k) % 3));
-                    if (!onSide(b)) continue;
-                    const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
-                    if (e.first < reach) edge = std::max(edge, l);
-                    const auto it = dist.find(b);
-                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
-                }
-            });
-        }
-    }
-
-    /// The guide at distance d on a side: the edge loop at that level where it is one loop
-    /// (session 24), else each loop vertex walked up the distance to d (the walks merge on a
-    /// thin part: a guide of 4 chords across it finds no ring). nb: scratch.
-    template <class OnSide>
-    static void Guide(const MeshType &m, const std::vector<int> &loop, OnSide onSide, const std::unordered_map<int, double> &dist,
-                      double d, std::vector<int> &nb, std::vector<vcg::Point3d> &guide, std::vector<int> &guideFaces)
-    {
-        std::vector<int> gv = LevelLoop(m, onSide, dist, d);
-        if (gv.empty())
-            for (int v : loop) {
-                int cur = v;
-                while (dist.at(cur) < d) {
-                    int nx = -1;
-                    Neighbours(m, cur, nb);
-                    for (int b : nb)
-                        if (onSide(b) && dist.at(b) > dist.at(cur) && (nx < 0 || dist.at(b) > dist.at(nx))) nx = b;
-                    if (nx < 0) break;
-                    cur = nx;
-                }
-                if (gv.empty() || gv.back() != cur) gv.push_back(cur);
-            }
-        for (int v : gv) {
-            guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-            const FaceType *f = m.vert[v].cVFp();
-            if (f) guideFaces.push_back(int(f - &m.face[0]));
-        }
-    }
-
     /// The boundary of the faces whose vertices are all off the body or nearer than d to the
     /// loop (the level d of the distance into the body), ordered, or empty when it is not one
     /// simple loop. Only faces round the level are visited (VF adjacency).
