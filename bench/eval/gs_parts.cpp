@@ -30,7 +30,10 @@
 //   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
 //   loop, + on the part's side, with their energy against the loop's. GS_PARTS_STAGES=1: per
 //   loop, its length, capture and coverage after each stage of the Run's end: the snake's own
-//   loop, the first band's valley loop, the descent over bands, part salience.)
+//   loop, the first band's valley loop, the descent over bands, part salience. GS_PARTS_SEEDED=1:
+//   per loop, the stop, the seeded and the final length, and the valley loop (FinishFrom) found
+//   round the loop where the Run ended and round the seeded loop, with capture/coverage and
+//   cost per length, or "none" when no band holds a ring.)
 //   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
 //   criterion if their own cut were scored like a loop against the other people's cuts: the
 //   agreement among people that the loops' figures can be read against.)

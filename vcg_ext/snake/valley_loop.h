@@ -91,7 +91,9 @@ public:
         /// (+1 -0: fourleg 381 part 3 outside 2). The seeded search's loop taken whenever the
         /// band holds a ring: 0.4 156, 0.5 158 (+2 -0), 0.6 159 (+3 -0), 0.75 157 (+3 -2), but
         /// a loop seeded far out on a featureless body would be pulled back there
-        /// (ValleyLoop.SearchesRoundTheSeededLoopWhenTheSnakeShrankFar).
+        /// (ValleyLoop.SearchesRoundTheSeededLoopWhenTheSnakeShrankFar). Session 27: also
+        /// when no band round the loop holds a ring, and when none round the seeded loop does
+        /// either, from the seeds' ring towards the body (TowardBody): 161 -> 164/220 (+3 -0).
         double seededShrink = 0.5;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
