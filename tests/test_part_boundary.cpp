@@ -939,6 +939,108 @@ TEST(PartProfile, ContourLengthsInOnePassMatchEachLevel)
 
 namespace {
 
+// A short thin part on a body (issue 33, session 27; cf. the fourleg 381's ears, 5 rings deep):
+// revolved round z with kStubN vertices a ring, a tube of radius 0.2 from z = 0 to 0.3 (rings
+// kStubStep apart), a flat cone tip to (0, 0, 0.35) in 3 rings, the body opening at 45 degrees
+// below z = 0 (a concave crease round the part's base, the answer) to radius 1.2, down to z = -2,
+// closed. Returns the index of each tube ring's first vertex by its height in steps.
+const double kStubStep = 0.1;
+const int kStubN = 12;
+
+std::vector<int> MakeStubOnBody(CMeshO &m)
+{
+    std::vector<std::pair<double, double>> prof; // (r, z), from the top axis to the bottom axis
+    auto run = [&](double r0, double z0, double r1, double z1, int k) { // (r0,z0) excluded
+        if (k <= 0) k = std::max(1, int(std::lround(std::hypot(r1 - r0, z1 - z0) / kStubStep)));
+        for (int i = 1; i <= k; ++i) prof.push_back({r0 + (r1 - r0) * i / k, z0 + (z1 - z0) * i / k});
+    };
+    const double r = 0.2, top = 0.3;
+    prof.push_back({0.0, top + 0.05});
+    run(0.0, top + 0.05, r, top, 3); // the tip
+    run(r, top, r, 0.0, 0);          // the part
+    run(r, 0.0, 1.2, r - 1.2, 0);    // the body opens at 45 degrees
+    run(1.2, r - 1.2, 1.2, -2.0, 0);
+    run(1.2, -2.0, 0.0, -2.0, 0);
+    std::vector<int> ring(4, -1), first(prof.size());
+    for (size_t j = 0; j < prof.size(); ++j) {
+        const double pr = prof[j].first, z = prof[j].second;
+        first[j] = int(m.vert.size());
+        if (pr < 1e-12) {
+            vcg::tri::Allocator<CMeshO>::AddVertex(m, Point3m(0, 0, z));
+            continue;
+        }
+        if (std::fabs(pr - r) < 1e-9 && z > -1e-9) ring[int(std::lround(z / kStubStep))] = first[j];
+        auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, kStubN);
+        for (int k = 0; k < kStubN; ++k, ++vi)
+            vi->P() = Point3m(pr * std::cos(2 * M_PI * k / kStubN), pr * std::sin(2 * M_PI * k / kStubN), z);
+    }
+    auto V = [&](size_t j, int k) { return &m.vert[prof[j].first < 1e-12 ? first[j] : first[j] + k % kStubN]; };
+    for (size_t j = 0; j + 1 < prof.size(); ++j)
+        for (int k = 0; k < kStubN; ++k) { // outward normals: the profile runs top to bottom
+            if (prof[j].first >= 1e-12) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k), V(j + 1, k), V(j, k + 1));
+            if (prof[j + 1].first >= 1e-12) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k + 1), V(j + 1, k), V(j + 1, k + 1));
+        }
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    return ring;
+}
+
+} // namespace
+
+// A closed loop seeded round a short part, 2 rings up from its base, that shrank onto its tip
+// (fourleg 381's ears: 3.6 h from 10.5 h seeded, people's cut 13 h). The energy is flat (0.5), so
+// the valley loop's concavity term and part salience decide. The Run is repeated from the
+// snake's end (converged) with a length unit 1.5 x the seeds' (faces at the tip a little
+// coarser): every band round the seeded loop (2.5 and 1.5 units) then covers the tip, and its
+// cheapest loop winds round the tip, shorter than half the seeded loop, so that before session
+// 27 FinishRun found no ring round the seeded loop and kept the loop round the tip (0.17 long, at
+// z 0.33-0.35). Now the edge ring along the seeded loop and part salience's candidates from it
+// into the body (ValleyLoop::TowardBody) give the part's base ring, z = 0, 1.24 long.
+TEST(ValleyLoop, SearchesFromTheSeedsTowardsTheBodyWhenTheLoopShrankOntoAShortPartsTip)
+{
+    CMeshO m;
+    const std::vector<int> ring = MakeStubOnBody(m);
+    ASSERT_GE(ring[2], 0);
+    for (auto &v : m.vert) v.Q() = 0.5;
+    auto surf = std::make_shared<Surface>(m, 0); // the energy: the vertices' quality
+    std::vector<int> seeds;
+    for (int k = 0; k < kStubN; k += 2) seeds.push_back(ring[2] + k);
+    Snake t(surf);
+    t.InitFromSeeds(seeds, true);
+    const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(t);
+    const double L0 = gs_parts::LoopLength(seeded.loop);
+    t.Run(400);
+    Snake s(surf);
+    s.InitFromSamples(t.Samples(), true, 1.5 * t.LengthScale());
+    s.EndRun(SnakeStop::Converged);
+    const double L1 = gs_parts::LoopLength(s.PolylinePositions());
+    const ValleyLoop<CMeshO>::Param par;
+    ASSERT_LT(L1, par.seededShrink * L0); // the premise: the loop shrank onto the tip
+    // no band round the seeded loop holds a ring (the premise of the search towards the body)
+    double ref = -1, cost = 0;
+    EXPECT_TRUE(ValleyLoop<CMeshO>::FinishFrom(m, seeded.loop, seeded.faces, surf->Energy(), s.LengthScale(), par, ref, cost).empty());
+    ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &seeded));
+    double zMin = 1e9, zMax = -1e9;
+    for (const P3 &x : s.PolylinePositions()) zMin = std::min(zMin, x[2]), zMax = std::max(zMax, x[2]);
+    const double L = gs_parts::LoopLength(s.PolylinePositions());
+    std::printf("short part: seeded %.2f long, shrank to %.2f; the Run ends at z %.3f..%.3f, %.2f long\n", L0, L1, zMin, zMax, L);
+    EXPECT_LT(std::max(std::fabs(zMin), std::fabs(zMax)), 1e-4); // the part's base ring
+    EXPECT_NEAR(L, kStubN * 2 * 0.2 * std::sin(M_PI / kStubN), 1e-3); // the 12-gon of radius 0.2
+    EXPECT_EQ(s.Stats().stop, SnakeStop::Converged);
+    // with part salience off there are no candidates: the loop round the tip stays
+    ValleyLoop<CMeshO>::Param off = par;
+    off.salience.exponent = 0;
+    Snake u(surf);
+    u.InitFromSamples(t.Samples(), true, 1.5 * t.LengthScale());
+    u.EndRun(SnakeStop::Converged);
+    ValleyLoop<CMeshO>::FinishRun(u, FeatureEnergyType::PartBoundary, false, off, &seeded);
+    double zu = 1e9;
+    for (const P3 &x : u.PolylinePositions()) zu = std::min(zu, x[2]);
+    EXPECT_GT(zu, 0.25);
+}
+
+namespace {
+
 // The generated cases re-tessellated as users' meshes are (the guide's 20x edge-length
 // variation, slivers, noise), each with its exact part boundary: a revolved surface (the waist,
 // the bump) with its boundary at polar angle phiStar, or the handle on its slab.

@@ -30,7 +30,10 @@
 //   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
 //   loop, + on the part's side, with their energy against the loop's. GS_PARTS_STAGES=1: per
 //   loop, its length, capture and coverage after each stage of the Run's end: the snake's own
-//   loop, the first band's valley loop, the descent over bands, part salience.)
+//   loop, the first band's valley loop, the descent over bands, part salience. GS_PARTS_SEEDED=1:
+//   per loop, the stop, the seeded and the final length, and the valley loop (FinishFrom) found
+//   round the loop where the Run ended and round the seeded loop, with capture/coverage and
+//   cost per length, or "none" when no band holds a ring.)
 //   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
 //   criterion if their own cut were scored like a loop against the other people's cuts: the
 //   agreement among people that the loops' figures can be read against.)
@@ -238,6 +241,28 @@ int main(int argc, char **argv)
                                 std::fprintf(stderr, " %s L=%.1fh %.2f/%.2f |", names[st], gs_parts::LoopLength(tl) / md.h,
                                              ts.capture, ts.coverage);
                             }
+                            std::fprintf(stderr, "\n");
+                        }
+                        if (std::getenv("GS_PARTS_SEEDED") && valleyLoop) {
+                            // the seeded search: the valley loop round the loop the Run started from,
+                            // against the one round the loop where it ended (ValleyLoop::FinishRun)
+                            typedef ValleyLoop<CMeshO> VL;
+                            const auto own = VL::Seeded::Of(s);
+                            double r1 = -1, c1 = 0, r2 = -1, c2 = 0;
+                            const std::vector<int> v1 = VL::FinishFrom(md.mesh, own.loop, own.faces, surf->Energy(), s.LengthScale(), vlp, r1, c1);
+                            const std::vector<int> v2 = VL::FinishFrom(md.mesh, seeded.loop, seeded.faces, surf->Energy(), s.LengthScale(), vlp, r2, c2);
+                            auto show = [&](const char *name, const std::vector<int> &v) {
+                                if (v.size() < 3) return (void)std::fprintf(stderr, " %s none |", name);
+                                std::vector<vcg::Point3d> pl;
+                                for (int x : v) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[x].cP()));
+                                const gs_parts::Score ts = gs_parts::Measure(pl, p, md.h, md.h);
+                                std::fprintf(stderr, " %s L=%.1fh %.2f/%.2f perL=%.3f |", name, VL::LengthOf(md.mesh, v) / md.h,
+                                             ts.capture, ts.coverage, VL::PerLength(md.mesh, v, surf->Energy(), r1 >= 0 ? r1 : r2, vlp));
+                            };
+                            std::fprintf(stderr, "SEEDED %d %d %s %d stop=%d L0=%.1fh L=%.1fh |", id, p.index, side > 0 ? "in" : "out", ring,
+                                         int(s.Stats().stop), L0 / md.h, VL::PolyLength(own.loop) / md.h);
+                            show("own", v1);
+                            show("seeded", v2);
                             std::fprintf(stderr, "\n");
                         }
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host

@@ -91,7 +91,9 @@ public:
         /// (+1 -0: fourleg 381 part 3 outside 2). The seeded search's loop taken whenever the
         /// band holds a ring: 0.4 156, 0.5 158 (+2 -0), 0.6 159 (+3 -0), 0.75 157 (+3 -2), but
         /// a loop seeded far out on a featureless body would be pulled back there
-        /// (ValleyLoop.SearchesRoundTheSeededLoopWhenTheSnakeShrankFar).
+        /// (ValleyLoop.SearchesRoundTheSeededLoopWhenTheSnakeShrankFar). Session 27: also
+        /// when no band round the loop holds a ring, and when none round the seeded loop does
+        /// either, from the seeds' ring towards the body (TowardBody): 161 -> 164/220 (+3 -0).
         double seededShrink = 0.5;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
@@ -147,16 +149,20 @@ public:
         double ref = -1, cost = 0;
         std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);
         // a loop that converged at less than seededShrink of the length it was seeded with may
-        // have slid past the valley onto the part (issue 33, session 25): the valley loop is
-        // also searched round the loop the user seeded
+        // have slid past the valley onto the part (issue 33, session 25), and one round which no
+        // band holds a ring has shrunk towards a short part's tip (session 27): the valley loop
+        // is also searched round the loop the user seeded
         if (seeded && seeded->loop.size() >= 3 && par.seededShrink > 0 &&
-            PolyLength(own.loop) < par.seededShrink * PolyLength(seeded->loop)) {
+            (PolyLength(own.loop) < par.seededShrink * PolyLength(seeded->loop) || vl.empty())) {
             double ref2 = -1, cost2 = 0;
-            const std::vector<int> v2 = FinishFrom(m, seeded->loop, seeded->faces, energy, h, par, ref2, cost2);
+            std::vector<int> v2 = FinishFrom(m, seeded->loop, seeded->faces, energy, h, par, ref2, cost2);
             // taken when it is a deeper valley per length (both priced with one concavity
             // reference): a seeded loop far out on a featureless body does not pull a loop
             // that shrank onto a rim back to the body
             const double r = ref >= 0 ? ref : ref2;
+            // no band round the seeded loop holds a ring either (it covers a short part's tip):
+            // from the seeds' ring towards the body (session 27)
+            if (v2.empty()) v2 = TowardBody(m, *seeded, energy, h, par, r);
             if (!v2.empty() && (vl.empty() || PerLength(m, v2, energy, r, par) < PerLength(m, vl, energy, r, par))) vl = v2;
         }
         if (vl.empty()) return false;
@@ -188,25 +194,55 @@ public:
             std::vector<vcg::Point3d> pl;
             for (int v : vl) pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
             const LoopIndex band(pl, par.bandWidth * h);
-            const double minLen = 0.5 * LengthOf(m, vl);
-            auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c, bool narrow) {
-                double r = ref;
-                if (narrow) {
-                    Param pn = par;
-                    pn.bandWidth = par.salience.profileBand;
-                    return FindAt(m, guide, guideFaces, energy, h, pn, r, c);
-                }
-                std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, par, r, c);
-                if (cand.size() >= 3) cand = Descend(m, cand, c, energy, h, par, ref, minLen);
-                return cand;
-            };
-            auto inBand = [&](const vcg::Point3d &p) {
+            vl = Salient(m, vl, cost, energy, h, par, ref, [&](const vcg::Point3d &p) {
                 double at = -1;
                 return band.Dist(p, at) <= band.w;
-            };
-            vl = PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);
+            });
         }
         return vl;
+    }
+
+    /// Part salience's choice (PartSalience::Choose) from edge loop vl (cost `cost` with
+    /// concavity reference ref): candidates found round guides moved into the body, each
+    /// descended, and the width profile's ring. inBand(p): p lies where vl was already chosen.
+    template <class EnergyVector, class InBand>
+    static std::vector<int> Salient(const MeshType &m, const std::vector<int> &vl, double cost, const EnergyVector &energy,
+                                    double h, const Param &par, double ref, InBand inBand)
+    {
+        const double minLen = 0.5 * LengthOf(m, vl);
+        auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c, bool narrow) {
+            double r = ref;
+            if (narrow) {
+                Param pn = par;
+                pn.bandWidth = par.salience.profileBand;
+                return FindAt(m, guide, guideFaces, energy, h, pn, r, c);
+            }
+            std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, par, r, c);
+            if (cand.size() >= 3) cand = Descend(m, cand, c, energy, h, par, ref, minLen);
+            return cand;
+        };
+        return PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);
+    }
+
+    /// For a loop that shrank towards a part's tip (FinishRun), when no band round the seeded
+    /// loop holds a ring (a short part: the band covers its tip): the edge ring along the seeded
+    /// loop (a band of kHug units), then part salience's candidates moved from it into the body.
+    /// Empty when no candidate beats that ring (the seeds' own ring is no valley).
+    template <class EnergyVector>
+    static std::vector<int> TowardBody(const MeshType &m, const Seeded &seeded, const EnergyVector &energy, double h,
+                                       const Param &par, double ref)
+    {
+        if (!(par.salience.exponent > 0)) return {};
+        Param pn = par;
+        pn.bandWidth = kHug;
+        double r = ref, c = 0;
+        const std::vector<int> ring = FindAt(m, seeded.loop, seeded.faces, energy, h, pn, r, c);
+        if (ring.size() < 3 || !(LengthOf(m, ring) > 0.5 * PolyLength(seeded.loop))) return {};
+        double e, len, cc;
+        CostParts(m, ring, energy, ref, e, len, cc); // priced as the candidates are
+        const double cost = e + par.lambda * len + par.concavityWeight * cc;
+        const std::vector<int> best = Salient(m, ring, cost, energy, h, par, ref, [](const vcg::Point3d &) { return false; });
+        return best == ring ? std::vector<int>() : best;
     }
 
     /// Vertex indices of the cheapest edge loop round `loop` (closed polyline), or empty when
@@ -427,6 +463,8 @@ public:
 private:
     /// Band narrowing factor when a band is no ring (2.5 -> 1.5 units with the default band).
     static constexpr double kNarrow = 0.6;
+    /// Half-width of the band that holds the edge ring along a seeded loop (TowardBody), units.
+    static constexpr double kHug = 0.5;
 
     /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
     /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
