@@ -11,13 +11,13 @@
 // BM_BuildCold     the same on a controller that has not prepared (what the first Build cost
 //                  before; every Build paid the seed path's O(mesh) part)
 // BM_ValleyLoop    the end of a converged closed Run on the part-boundary energy (issue 33,
-//                  ValleyLoop::FinishRun: the cheapest edge loop within 2 units of the snake
+//                  PartBoundaryEnd::FinishRun: the cheapest edge loop within 2 units of the snake
 //                  replaces it), what the edit tool does at every such Run end; a loop of 6
 //                  clicks round a patch of the bunny's flank, run 60 operations; arg = the
 //                  mesh's faces (bunny00 as scanned, and subdivided to 1.2M: the ratio shows
 //                  what grows with the mesh rather than with the band)
 // BM_ValleyLoopSeeded the same end when the loop converged shorter than half its seeded loop
-//                  (ValleyLoop::Param::seededShrink, session 25: a second search round the
+//                  (PartBoundaryEnd::Param::seededShrink, session 25: a second search round the
 //                  seeded loop), on a tall bump on a sphere (icosphere 6, 81920 faces; its rim a
 //                  concave valley 70 edges round); arg 0: case (0: a loop 16 h up the bump seeded
 //                  8 h outside its rim, the pattern of fourleg 381; 1: a loop that converged on
@@ -38,7 +38,7 @@
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/session/controller.h>
-#include <vcg_ext/snake/valley_loop.h>
+#include <vcg_ext/snake/part_boundary_end.h>
 
 namespace {
 
@@ -223,7 +223,7 @@ void BM_ValleyLoop(benchmark::State &state)
         s->InitFromSamples(k.samples, true, k.unit);
         s->EndRun(SnakeStop::Converged); // as a Run that converged there
         state.ResumeTiming();
-        replaced += ValleyLoop<CMeshO>::FinishRun(*s, FeatureEnergyType::PartBoundary, false);
+        replaced += PartBoundaryEnd<CMeshO>::FinishRun(*s, FeatureEnergyType::PartBoundary, false);
     }
     state.counters["faces"] = k.c->Mesh().fn;
     state.counters["samples"] = double(k.samples.size());
@@ -238,7 +238,7 @@ struct SeededCase
     std::shared_ptr<SnakeSurface<CMeshO>> surf;
     std::vector<SnakeSample> samples[2];
     double unit[2] = {0, 0};
-    ValleyLoop<CMeshO>::Seeded seeded[2];
+    PartBoundaryEnd<CMeshO>::Seeded seeded[2];
 };
 
 double Leg(double phi) { return 1.0 + 0.8 * std::exp(-std::pow(phi / 0.25, 2)); }
@@ -281,12 +281,12 @@ SeededCase &Seeded()
     GeometricSnake<CMeshO> s(k->surf);
     // case 0: seeded 2 units outside the rim, ended 4 units up the bump
     s.InitFromSeeds(ring(rim + 2 * u / Leg(rim)), true);
-    k->seeded[0] = ValleyLoop<CMeshO>::Seeded::Of(s);
+    k->seeded[0] = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
     s.InitFromSeeds(ring(rim - 4 * u / Leg(rim)), true);
     k->samples[0] = s.Samples(), k->unit[0] = s.LengthScale();
     // case 1: seeded on the equator, converged on the rim (a Run from 2 units outside it)
     s.InitFromSeeds(ring(M_PI / 2), true);
-    k->seeded[1] = ValleyLoop<CMeshO>::Seeded::Of(s);
+    k->seeded[1] = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
     s.InitFromSeeds(ring(rim + 2 * u / Leg(rim)), true);
     s.Run(400);
     k->samples[1] = s.Samples(), k->unit[1] = s.LengthScale();
@@ -307,10 +307,10 @@ void BM_ValleyLoopSeeded(benchmark::State &state)
         s.InitFromSamples(k.samples[c], true, k.unit[c]);
         s.EndRun(SnakeStop::Converged); // as a Run that converged there
         shrank += ValleyLoop<CMeshO>::PolyLength(s.PolylinePositions()) <
-                  ValleyLoop<CMeshO>::Param().seededShrink * ValleyLoop<CMeshO>::PolyLength(k.seeded[c].loop);
+                  PartBoundaryEnd<CMeshO>::Param().seededShrink * ValleyLoop<CMeshO>::PolyLength(k.seeded[c].loop);
         state.ResumeTiming();
-        replaced += ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, ValleyLoop<CMeshO>::Param(),
-                                                  with ? &k.seeded[c] : nullptr);
+        replaced += PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, PartBoundaryEnd<CMeshO>::Param(),
+                                                       with ? &k.seeded[c] : nullptr);
     }
     state.counters["faces"] = k.m.fn;
     state.counters["samples"] = double(k.samples[c].size());

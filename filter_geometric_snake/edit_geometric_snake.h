@@ -31,7 +31,7 @@
 #include <vcg_ext/cut/cut_point_map.h>
 #include <vcg_ext/session/controller.h>
 #include <vcg_ext/session/mesh_undo.h>
-#include <vcg_ext/snake/valley_loop.h>
+#include <vcg_ext/snake/part_boundary_end.h>
 
 class QDockWidget;
 class QKeyEvent;
@@ -84,8 +84,8 @@ private:
     double runCompute0 = 0, sliceMs = 30;
     qint64 sliceEnd = -1;
     int runOps0 = 0;
-    // the loop the Run started from, for ValleyLoop::FinishRun (a loop that shrinks far)
-    vcg::tri::ValleyLoop<CMeshO>::Seeded runSeeded;
+    // the loop the Run started from, for PartBoundaryEnd::FinishRun (a loop that shrinks far)
+    vcg::tri::PartBoundaryEnd<CMeshO>::Seeded runSeeded;
     bool keysOwned = false;
     bool hidePending = false;
     long exportedRevision = -1;

@@ -35,7 +35,7 @@ void EditGeometricSnakePlugin::setRunning(bool on)
         runClock.start();
         runCompute0 = ctl->ComputeMs();
         runOps0 = ctl->SelectedSnake()->Stats().operations;
-        runSeeded = vcg::tri::ValleyLoop<CMeshO>::Seeded::Of(*ctl->SelectedSnake());
+        runSeeded = vcg::tri::PartBoundaryEnd<CMeshO>::Seeded::Of(*ctl->SelectedSnake());
         runEnd = vcg::tri::SnakeStop::Running;
         sliceMs = 30;
         sliceEnd = -1;

@@ -13,7 +13,8 @@
 #include <string>
 
 #include <part_cases.h>
-#include <vcg_ext/snake/valley_loop.h>
+#include <revolved_profile.h>
+#include <vcg_ext/snake/part_boundary_end.h>
 #include <snake_test_util.h>
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/energy/feature_energy.h>
@@ -100,7 +101,7 @@ LoopResult RunLoop(std::shared_ptr<Surface> surf, const std::vector<int> &seeds,
     Snake s(surf);
     s.InitFromSeeds(seeds, true);
     s.Run(400);
-    ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false); // as every host does
+    PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false); // as every host does
     const double h = surf->MeanEdge();
     LoopResult r;
     const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
@@ -349,7 +350,7 @@ TEST(PartBoundaryBenchmark, TeddyPartsCapturedByThePartBoundaryEnergyOnly)
                 s.InitFromSeeds(seeds, true);
                 const double L0 = gs_parts::LoopLength(s.PolylinePositions());
                 s.Run(400);
-                ValleyLoop<CMeshO>::FinishRun(s, t, false); // as every host does (nothing for normal variation)
+                PartBoundaryEnd<CMeshO>::FinishRun(s, t, false); // as every host does (nothing for normal variation)
                 const std::vector<P3> loop = s.PolylinePositions();
                 const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
                 ++cases;
@@ -446,10 +447,10 @@ TEST(PartBoundaryLoop, SettlesOnTheBaseOfAHandle)
     }
 }
 
-// The end of a converged part-boundary loop (snake/valley_loop.h): the cheapest edge loop round
-// it replaces it, on the waist's valley, and the run's end stays (converged: a new Run does not
-// move it, one undo step returns the state before the Run); other energies, open snakes and runs
-// that did not converge are left as they are.
+// The end of a converged part-boundary loop (snake/part_boundary_end.h): the cheapest edge loop
+// round it (snake/valley_loop.h) replaces it, on the waist's valley, and the run's end stays
+// (converged: a new Run does not move it, one undo step returns the state before the Run); other
+// energies, open snakes and runs that did not converge are left as they are.
 TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
 {
     CMeshO m;
@@ -461,10 +462,10 @@ TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
     const std::vector<P3> start = s.PolylinePositions();
     s.Run(400);
     ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
-    EXPECT_FALSE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::NormalVariation, false));
-    EXPECT_FALSE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, true)); // quality as energy
+    EXPECT_FALSE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::NormalVariation, false));
+    EXPECT_FALSE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, true)); // quality as energy
     const int ops = s.Stats().operations;
-    ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
+    ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
     EXPECT_EQ(s.Stats().stop, SnakeStop::Converged);
     const double maxOff = OffParallel(s.PolylinePositions(), Waist, M_PI / 2, h).max;
     std::printf("valley loop on the waist: %zu samples, max %.2f h off the waist\n", s.PolylinePositions().size(), maxOff);
@@ -482,7 +483,7 @@ TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
     Snake t(surf);
     t.InitFromSeeds(RingSeeds(m, Waist, M_PI / 2 + 3 * h / Waist(M_PI / 2)), true);
     t.Run(1);
-    EXPECT_FALSE(ValleyLoop<CMeshO>::FinishRun(t, FeatureEnergyType::PartBoundary, false));
+    EXPECT_FALSE(PartBoundaryEnd<CMeshO>::FinishRun(t, FeatureEnergyType::PartBoundary, false));
 }
 
 namespace {
@@ -573,7 +574,7 @@ TEST(ValleyLoop, EndsOnTheValleyWhereEdgeLengthsVary20x)
         else
             s.EndRun(SnakeStop::Converged);
         ASSERT_EQ(s.Stats().stop, SnakeStop::Converged) << "seeds at z = " << c.zSeed;
-        ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false)) << "seeds at z = " << c.zSeed;
+        ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false)) << "seeds at z = " << c.zSeed;
         double maxOff = 0, len = 0;
         const std::vector<P3> l = s.PolylinePositions();
         for (size_t i = 0; i < l.size(); ++i) {
@@ -701,7 +702,7 @@ TEST(PartSalience, SidesFloodOnlyAsFarAsThePart)
 // bump 14 edges round (a fourleg's stubby leg, an ant's foot). The band round a loop on its rim
 // covers the top and is no ring: its cheapest "loop" circles the top's middle (6.4 edges long
 // round a 17-edge snake), and the snake's own loop was kept. The band is narrowed until it is a
-// ring (ValleyLoop::FinishRun, session 24): the edge loop then lies on the rim.
+// ring (PartBoundaryEnd::FinishRun, session 24): the edge loop then lies on the rim.
 // Measured: FinishRun true, mean 0.34 h, max 0.48 h off the rim, from both seedings.
 TEST(ValleyLoop, NarrowsABandThatCoversAShortPartsTop)
 {
@@ -721,7 +722,7 @@ TEST(ValleyLoop, NarrowsABandThatCoversAShortPartsTop)
         // the default band is no ring here: the premise of the test
         const std::vector<int> wide = ValleyLoop<CMeshO>::Find(m, s.PolylinePositions(), faces, surf->Energy(), s.LengthScale());
         EXPECT_LT(wide.size() < 3 ? 0.0 : ValleyLoop<CMeshO>::LengthOf(m, wide), 0.5 * len);
-        EXPECT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
+        EXPECT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
         const ParallelOffset o = low.OffRim(s);
         std::printf("low bump, seeds %.1f h off the rim: the edge loop mean %.2f h, max %.2f h off the rim\n", off, o.mean, o.max);
         EXPECT_LT(o.mean, 0.6);
@@ -733,7 +734,7 @@ TEST(ValleyLoop, NarrowsABandThatCoversAShortPartsTop)
 // as FindAt does: on the knee tube with the concavity reference below the crease's dihedral
 // angle, the crease ring costs its length (energy 0.5 x length, no concavity cost), the ring
 // below it its full length in concavity cost (convex edges), and the cost FindAt reports for
-// the loop it finds is the sum of the parts with the Param's weights.
+// the loop it finds is the sum of the parts with the Param's weights (ValleyLoop::Cost).
 TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
 {
     CMeshO m;
@@ -763,9 +764,12 @@ TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
     ASSERT_GE(found.size(), 100u);
     ValleyLoop<CMeshO>::CostParts(m, found, flat, ref, e, l, c);
     EXPECT_NEAR(cost, e + par.lambda * l + par.concavityWeight * c, 1e-9 * cost);
+    double len = 0; // Cost: the same sum, as the Run's end compares loops with (PerLength)
+    EXPECT_NEAR(ValleyLoop<CMeshO>::Cost(m, found, flat, ref, par, len), cost, 1e-9 * cost);
+    EXPECT_EQ(len, l);
 }
 
-// A loop that converged at less than half the length it was seeded with (ValleyLoop::Param::
+// A loop that converged at less than half the length it was seeded with (PartBoundaryEnd::Param::
 // seededShrink, session 25): on the benchmark, outside loops that slid through a leg's narrowing
 // onto the leg (fourleg 381 part 3). On a tall bump (its rim a concave valley 35 edges round):
 // a loop that ended 4 h up the bump (a Run that converged there, set by EndRun as the edit tool
@@ -781,15 +785,15 @@ TEST(ValleyLoop, SearchesRoundTheSeededLoopWhenTheSnakeShrankFar)
     const auto &surf = leg.surf;
     Snake outside(surf);
     outside.InitFromSeeds(leg.SeedsOff(2), true);
-    const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(outside);
-    const ValleyLoop<CMeshO>::Param par;
+    const auto seeded = PartBoundaryEnd<CMeshO>::Seeded::Of(outside);
+    const PartBoundaryEnd<CMeshO>::Param par;
     double off[2] = {0, 0};
     for (int with : {0, 1}) {
         Snake up(surf);
         up.InitFromSeeds(leg.SeedsOff(-4), true);
         up.EndRun(SnakeStop::Converged);
         ASSERT_LT(gs_parts::LoopLength(up.PolylinePositions()), par.seededShrink * gs_parts::LoopLength(seeded.loop)); // the premise
-        const bool done = ValleyLoop<CMeshO>::FinishRun(up, FeatureEnergyType::PartBoundary, false, par, with ? &seeded : nullptr);
+        const bool done = PartBoundaryEnd<CMeshO>::FinishRun(up, FeatureEnergyType::PartBoundary, false, par, with ? &seeded : nullptr);
         if (with) EXPECT_TRUE(done); // without it the bands round the loop cover the bump's top: no ring, the loop stays
         EXPECT_EQ(up.Stats().stop, SnakeStop::Converged);
         off[with] = leg.OffRim(up).mean;
@@ -800,13 +804,13 @@ TEST(ValleyLoop, SearchesRoundTheSeededLoopWhenTheSnakeShrankFar)
     // a loop that shrank onto the rim from the equator stays on the rim
     Snake wide(surf);
     wide.InitFromSeeds(RingSeeds(leg.m, leg.R, M_PI / 2), true);
-    const auto equator = ValleyLoop<CMeshO>::Seeded::Of(wide);
+    const auto equator = PartBoundaryEnd<CMeshO>::Seeded::Of(wide);
     Snake s(surf);
     s.InitFromSeeds(leg.SeedsOff(2), true);
     s.Run(400);
     ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
     ASSERT_LT(gs_parts::LoopLength(s.PolylinePositions()), par.seededShrink * gs_parts::LoopLength(equator.loop));
-    ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &equator));
+    ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &equator));
     std::printf("loop on the rim, seeded on the equator: %.2f h off the rim\n", leg.OffRim(s).mean);
     EXPECT_LT(leg.OffRim(s).mean, 0.6);
 }
@@ -824,42 +828,15 @@ const int kLimbN = 63;
 
 std::vector<int> MakeLimbOnBody(CMeshO &m)
 {
-    std::vector<std::pair<double, double>> prof; // (r, z), from the top axis to the bottom axis
-    auto run = [&](double r0, double z0, double r1, double z1) { // (r0,z0) excluded, (r1,z1) included
-        const int k = std::max(1, int(std::lround(std::hypot(r1 - r0, z1 - z0) / kLimbStep)));
-        for (int i = 1; i <= k; ++i) prof.push_back({r0 + (r1 - r0) * i / k, z0 + (z1 - z0) * i / k});
-    };
-    prof.push_back({0.0, 1.7});
-    run(0.0, 1.7, 2.5, 1.7);  // the head's top
-    run(2.5, 1.7, 2.5, 1.2);  // its side
-    run(2.5, 1.2, 1.0, 1.2);  // its underside
-    run(1.0, 1.2, 1.0, 0.0);  // the limb
-    run(1.0, 0.0, 4.0, -3.0); // the body opens at 45 degrees
-    run(4.0, -3.0, 0.0, -3.0); // the bottom
-    std::vector<int> ring(13, -1);
-    std::vector<int> first(prof.size());
-    for (size_t j = 0; j < prof.size(); ++j) {
-        const double r = prof[j].first, z = prof[j].second;
-        first[j] = int(m.vert.size());
-        if (r < 1e-12) { // a pole: one vertex
-            vcg::tri::Allocator<CMeshO>::AddVertex(m, Point3m(0, 0, z));
-            continue;
-        }
-        if (std::fabs(r - 1.0) < 1e-9 && z > -1e-9 && z < 1.2 + 1e-9) ring[int(std::lround(z / kLimbStep))] = first[j];
-        auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, kLimbN);
-        for (int k = 0; k < kLimbN; ++k, ++vi)
-            vi->P() = Point3m(r * std::cos(2 * M_PI * k / kLimbN), r * std::sin(2 * M_PI * k / kLimbN), z);
-    }
-    auto V = [&](size_t j, int k) { return &m.vert[prof[j].first < 1e-12 ? first[j] : first[j] + k % kLimbN]; };
-    for (size_t j = 0; j + 1 < prof.size(); ++j)
-        for (int k = 0; k < kLimbN; ++k) { // outward normals: the profile runs top to bottom
-            const bool poleA = prof[j].first < 1e-12, poleB = prof[j + 1].first < 1e-12;
-            if (!poleA) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k), V(j + 1, k), V(j, k + 1));
-            if (!poleB) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k + 1), V(j + 1, k), V(j + 1, k + 1));
-        }
-    gs_test::EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-    return ring;
+    return gs_test::MakeRevolvedProfile(m,
+                                        {{0.0, 1.7, 0},
+                                         {2.5, 1.7, 0},   // the head's top
+                                         {2.5, 1.2, 0},   // its side
+                                         {1.0, 1.2, 0},   // its underside
+                                         {1.0, 0.0, 0},   // the limb
+                                         {4.0, -3.0, 0},  // the body opens at 45 degrees
+                                         {0.0, -3.0, 0}}, // the bottom
+                                        kLimbN, kLimbStep, 1.0, 13);
 }
 
 } // namespace
@@ -887,8 +864,8 @@ TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
         loop.push_back(P3::Construct(m.vert[ring[3] + k].cP()));
         faces.push_back(int(m.vert[ring[3] + k].cVFp() - &m.face[0]));
     }
-    ValleyLoop<CMeshO>::Param par;
-    par.concavityWeight = 0; // the crease at the limb's base would decide alone
+    PartBoundaryEnd<CMeshO>::Param par;
+    par.valley.concavityWeight = 0; // the crease at the limb's base would decide alone
     par.salience.widthExponent = 0; // the shape diameter's width term finds this ring too
     auto meanZ = [&](const std::vector<int> &vl) {
         double z = 0;
@@ -901,11 +878,11 @@ TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
         return o;
     };
     double ref = -1, cost = 0;
-    const std::vector<int> with = ValleyLoop<CMeshO>::FinishFrom(m, loop, faces, energy, kLimbStep, par, ref, cost);
-    ValleyLoop<CMeshO>::Param off = par;
+    const std::vector<int> with = PartBoundaryEnd<CMeshO>::FinishFrom(m, loop, faces, energy, kLimbStep, par, ref, cost);
+    PartBoundaryEnd<CMeshO>::Param off = par;
     off.salience.profile.slope = 0;
     ref = -1;
-    const std::vector<int> without = ValleyLoop<CMeshO>::FinishFrom(m, loop, faces, energy, kLimbStep, off, ref, cost);
+    const std::vector<int> without = PartBoundaryEnd<CMeshO>::FinishFrom(m, loop, faces, energy, kLimbStep, off, ref, cost);
     std::printf("limb on a body: with the profile %zu vertices at mean z %.3f rings, without %zu at %.3f\n", with.size(),
                 meanZ(with), without.size(), meanZ(without));
     ASSERT_EQ(with.size(), size_t(kLimbN));
@@ -939,51 +916,12 @@ TEST(PartProfile, ContourLengthsInOnePassMatchEachLevel)
 
 namespace {
 
-// A short thin part on a body (issue 33, session 27; cf. the fourleg 381's ears, 5 rings deep):
-// revolved round z with kStubN vertices a ring, a tube of radius 0.2 from z = 0 to 0.3 (rings
-// kStubStep apart), a flat cone tip to (0, 0, 0.35) in 3 rings, the body opening at 45 degrees
-// below z = 0 (a concave crease round the part's base, the answer) to radius 1.2, down to z = -2,
-// closed. Returns the index of each tube ring's first vertex by its height in steps.
+// A short thin part on a body (gs_test::MakeStubOnBody): a tube of radius 0.2 from z = 0 to 0.3,
+// kStubN vertices a ring, rings kStubStep apart.
 const double kStubStep = 0.1;
 const int kStubN = 12;
 
-std::vector<int> MakeStubOnBody(CMeshO &m)
-{
-    std::vector<std::pair<double, double>> prof; // (r, z), from the top axis to the bottom axis
-    auto run = [&](double r0, double z0, double r1, double z1, int k) { // (r0,z0) excluded
-        if (k <= 0) k = std::max(1, int(std::lround(std::hypot(r1 - r0, z1 - z0) / kStubStep)));
-        for (int i = 1; i <= k; ++i) prof.push_back({r0 + (r1 - r0) * i / k, z0 + (z1 - z0) * i / k});
-    };
-    const double r = 0.2, top = 0.3;
-    prof.push_back({0.0, top + 0.05});
-    run(0.0, top + 0.05, r, top, 3); // the tip
-    run(r, top, r, 0.0, 0);          // the part
-    run(r, 0.0, 1.2, r - 1.2, 0);    // the body opens at 45 degrees
-    run(1.2, r - 1.2, 1.2, -2.0, 0);
-    run(1.2, -2.0, 0.0, -2.0, 0);
-    std::vector<int> ring(4, -1), first(prof.size());
-    for (size_t j = 0; j < prof.size(); ++j) {
-        const double pr = prof[j].first, z = prof[j].second;
-        first[j] = int(m.vert.size());
-        if (pr < 1e-12) {
-            vcg::tri::Allocator<CMeshO>::AddVertex(m, Point3m(0, 0, z));
-            continue;
-        }
-        if (std::fabs(pr - r) < 1e-9 && z > -1e-9) ring[int(std::lround(z / kStubStep))] = first[j];
-        auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, kStubN);
-        for (int k = 0; k < kStubN; ++k, ++vi)
-            vi->P() = Point3m(pr * std::cos(2 * M_PI * k / kStubN), pr * std::sin(2 * M_PI * k / kStubN), z);
-    }
-    auto V = [&](size_t j, int k) { return &m.vert[prof[j].first < 1e-12 ? first[j] : first[j] + k % kStubN]; };
-    for (size_t j = 0; j + 1 < prof.size(); ++j)
-        for (int k = 0; k < kStubN; ++k) { // outward normals: the profile runs top to bottom
-            if (prof[j].first >= 1e-12) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k), V(j + 1, k), V(j, k + 1));
-            if (prof[j + 1].first >= 1e-12) vcg::tri::Allocator<CMeshO>::AddFace(m, V(j, k + 1), V(j + 1, k), V(j + 1, k + 1));
-        }
-    gs_test::EnableSnakeAdjacency(m);
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-    return ring;
-}
+std::vector<int> MakeStubOnBody(CMeshO &m) { return gs_test::MakeStubOnBody(m, kStubN, kStubStep); }
 
 } // namespace
 
@@ -995,7 +933,7 @@ std::vector<int> MakeStubOnBody(CMeshO &m)
 // cheapest loop winds round the tip, shorter than half the seeded loop, so that before session
 // 27 FinishRun found no ring round the seeded loop and kept the loop round the tip (0.17 long, at
 // z 0.33-0.35). Now the edge ring along the seeded loop and part salience's candidates from it
-// into the body (ValleyLoop::TowardBody) give the part's base ring, z = 0, 1.24 long.
+// into the body (PartBoundaryEnd::TowardBody) give the part's base ring, z = 0, 1.24 long.
 TEST(ValleyLoop, SearchesFromTheSeedsTowardsTheBodyWhenTheLoopShrankOntoAShortPartsTip)
 {
     CMeshO m;
@@ -1007,19 +945,19 @@ TEST(ValleyLoop, SearchesFromTheSeedsTowardsTheBodyWhenTheLoopShrankOntoAShortPa
     for (int k = 0; k < kStubN; k += 2) seeds.push_back(ring[2] + k);
     Snake t(surf);
     t.InitFromSeeds(seeds, true);
-    const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(t);
+    const auto seeded = PartBoundaryEnd<CMeshO>::Seeded::Of(t);
     const double L0 = gs_parts::LoopLength(seeded.loop);
     t.Run(400);
     Snake s(surf);
     s.InitFromSamples(t.Samples(), true, 1.5 * t.LengthScale());
     s.EndRun(SnakeStop::Converged);
     const double L1 = gs_parts::LoopLength(s.PolylinePositions());
-    const ValleyLoop<CMeshO>::Param par;
+    const PartBoundaryEnd<CMeshO>::Param par;
     ASSERT_LT(L1, par.seededShrink * L0); // the premise: the loop shrank onto the tip
     // no band round the seeded loop holds a ring (the premise of the search towards the body)
     double ref = -1, cost = 0;
-    EXPECT_TRUE(ValleyLoop<CMeshO>::FinishFrom(m, seeded.loop, seeded.faces, surf->Energy(), s.LengthScale(), par, ref, cost).empty());
-    ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &seeded));
+    EXPECT_TRUE(PartBoundaryEnd<CMeshO>::FinishFrom(m, seeded.loop, seeded.faces, surf->Energy(), s.LengthScale(), par, ref, cost).empty());
+    ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &seeded));
     double zMin = 1e9, zMax = -1e9;
     for (const P3 &x : s.PolylinePositions()) zMin = std::min(zMin, x[2]), zMax = std::max(zMax, x[2]);
     const double L = gs_parts::LoopLength(s.PolylinePositions());
@@ -1028,12 +966,12 @@ TEST(ValleyLoop, SearchesFromTheSeedsTowardsTheBodyWhenTheLoopShrankOntoAShortPa
     EXPECT_NEAR(L, kStubN * 2 * 0.2 * std::sin(M_PI / kStubN), 1e-3); // the 12-gon of radius 0.2
     EXPECT_EQ(s.Stats().stop, SnakeStop::Converged);
     // with part salience off there are no candidates: the loop round the tip stays
-    ValleyLoop<CMeshO>::Param off = par;
+    PartBoundaryEnd<CMeshO>::Param off = par;
     off.salience.exponent = 0;
     Snake u(surf);
     u.InitFromSamples(t.Samples(), true, 1.5 * t.LengthScale());
     u.EndRun(SnakeStop::Converged);
-    ValleyLoop<CMeshO>::FinishRun(u, FeatureEnergyType::PartBoundary, false, off, &seeded);
+    PartBoundaryEnd<CMeshO>::FinishRun(u, FeatureEnergyType::PartBoundary, false, off, &seeded);
     double zu = 1e9;
     for (const P3 &x : u.PolylinePositions()) zu = std::min(zu, x[2]);
     EXPECT_GT(zu, 0.25);
@@ -1217,9 +1155,9 @@ RoughMeasure RoughRun(std::shared_ptr<Surface> surf, const std::vector<int> &see
     RoughMeasure r;
     Snake s(surf);
     s.InitFromSeeds(seeds, true);
-    const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(s);
+    const auto seeded = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
     s.Run(400);
-    r.finished = ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, ValleyLoop<CMeshO>::Param(), &seeded);
+    r.finished = PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, PartBoundaryEnd<CMeshO>::Param(), &seeded);
     r.stop = SnakeStopKey(s.Stats().stop);
     const std::vector<P3> pl = s.PolylinePositions();
     for (const P3 &x : pl) r.finite = r.finite && std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
@@ -1264,7 +1202,7 @@ TEST(ValleyLoop, FindsARingWhereTheSnakesFacesAreWiderThanItsBand)
         ASSERT_GE(ring.size(), 3u);
         EXPECT_GT(ValleyLoop<CMeshO>::LengthOf(m, ring), 0.5 * len);
         const double unit = s.LengthScale();
-        ASSERT_TRUE(ValleyLoop<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
+        ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false));
         double mean = 0, mx = 0;
         const std::vector<P3> loop = gs_parts::ResampleLoop(s.PolylinePositions(), 0.25 * h);
         for (const P3 &x : loop) {

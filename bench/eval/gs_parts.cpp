@@ -15,9 +15,10 @@
 //   (--salience-width E: PartSalience::Param::widthExponent, the shape-diameter ratio's
 //   exponent, 0 = off; the others its widthReach, widthRadius, widthSamples and sdf.rays)
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
-//   host ends a converged part-boundary loop on, snake/valley_loop.h; --valley-concavity W: its
-//   Param::concavityWeight, 0 = by energy and length alone, as before session 22; --valley-band,
-//   --valley-lambda, --valley-cscale: its bandWidth, lambda and concavityScale)
+//   host ends a converged part-boundary loop on, snake/part_boundary_end.h and valley_loop.h;
+//   --valley-concavity W: ValleyLoop::Param::concavityWeight, 0 = by energy and length alone, as
+//   before session 22; --valley-band, --valley-lambda, --valley-cscale: its bandWidth, lambda
+//   and concavityScale)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -59,7 +60,7 @@
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/snake/geometric_snake.h>
-#include <vcg_ext/snake/valley_loop.h>
+#include <vcg_ext/snake/part_boundary_end.h>
 
 using namespace vcg::tri;
 typedef GeometricSnake<CMeshO> Snake;
@@ -105,7 +106,7 @@ int main(int argc, char **argv)
     int seedCount = 8, maxOps = 400;
     double balloon = 0, alpha = -1, beta = -1, ext = -1;
     bool valleyLoop = true;
-    ValleyLoop<CMeshO>::Param vlp;
+    PartBoundaryEnd<CMeshO>::Param vlp;
     int smoothing = 2, capture = -1; // -1: the tool's choice for the energy
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -124,11 +125,11 @@ int main(int argc, char **argv)
         else if (a == "--smoothing") smoothing = std::stoi(next());
         else if (a == "--capture") capture = std::stoi(next());
         else if (a == "--no-valley-loop") valleyLoop = false;
-        else if (a == "--valley-concavity") vlp.concavityWeight = std::stod(next());
-        else if (a == "--valley-band") vlp.bandWidth = std::stod(next());
-        else if (a == "--valley-lambda") vlp.lambda = std::stod(next());
-        else if (a == "--valley-cscale") vlp.concavityScale = std::stod(next());
-        else if (a == "--valley-iterations") vlp.iterations = std::stoi(next());
+        else if (a == "--valley-concavity") vlp.valley.concavityWeight = std::stod(next());
+        else if (a == "--valley-band") vlp.valley.bandWidth = std::stod(next());
+        else if (a == "--valley-lambda") vlp.valley.lambda = std::stod(next());
+        else if (a == "--valley-cscale") vlp.valley.concavityScale = std::stod(next());
+        else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
@@ -219,7 +220,7 @@ int main(int argc, char **argv)
                         Snake s(surf, sp);
                         s.InitFromSeeds(seeds, true);
                         const double L0 = gs_parts::LoopLength(s.PolylinePositions());
-                        const auto seeded = ValleyLoop<CMeshO>::Seeded::Of(s);
+                        const auto seeded = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
                         const auto c0 = std::chrono::steady_clock::now();
                         s.Run(maxOps);
                         const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
@@ -231,10 +232,10 @@ int main(int argc, char **argv)
                                 Snake t(surf, sp); // not copyable: the same Run again (deterministic)
                                 t.InitFromSeeds(seeds, true);
                                 t.Run(maxOps);
-                                ValleyLoop<CMeshO>::Param q = vlp;
+                                PartBoundaryEnd<CMeshO>::Param q = vlp;
                                 if (st < 3) q.salience.exponent = 0;
-                                if (st < 2) q.iterations = 1;
-                                if (st > 0) ValleyLoop<CMeshO>::FinishRun(t, ty->second, false, q);
+                                if (st < 2) q.valley.iterations = 1;
+                                if (st > 0) PartBoundaryEnd<CMeshO>::FinishRun(t, ty->second, false, q);
                                 const std::vector<vcg::Point3d> tl = t.PolylinePositions();
                                 const gs_parts::Score ts = gs_parts::Measure(tl, p, md.h, md.h);
                                 static const char *names[] = {"snake", "band", "descent", "salience"};
@@ -245,19 +246,20 @@ int main(int argc, char **argv)
                         }
                         if (std::getenv("GS_PARTS_SEEDED") && valleyLoop) {
                             // the seeded search: the valley loop round the loop the Run started from,
-                            // against the one round the loop where it ended (ValleyLoop::FinishRun)
+                            // against the one round the loop where it ended (PartBoundaryEnd::FinishRun)
+                            typedef PartBoundaryEnd<CMeshO> End;
                             typedef ValleyLoop<CMeshO> VL;
-                            const auto own = VL::Seeded::Of(s);
+                            const auto own = End::Seeded::Of(s);
                             double r1 = -1, c1 = 0, r2 = -1, c2 = 0;
-                            const std::vector<int> v1 = VL::FinishFrom(md.mesh, own.loop, own.faces, surf->Energy(), s.LengthScale(), vlp, r1, c1);
-                            const std::vector<int> v2 = VL::FinishFrom(md.mesh, seeded.loop, seeded.faces, surf->Energy(), s.LengthScale(), vlp, r2, c2);
+                            const std::vector<int> v1 = End::FinishFrom(md.mesh, own.loop, own.faces, surf->Energy(), s.LengthScale(), vlp, r1, c1);
+                            const std::vector<int> v2 = End::FinishFrom(md.mesh, seeded.loop, seeded.faces, surf->Energy(), s.LengthScale(), vlp, r2, c2);
                             auto show = [&](const char *name, const std::vector<int> &v) {
                                 if (v.size() < 3) return (void)std::fprintf(stderr, " %s none |", name);
                                 std::vector<vcg::Point3d> pl;
                                 for (int x : v) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[x].cP()));
                                 const gs_parts::Score ts = gs_parts::Measure(pl, p, md.h, md.h);
                                 std::fprintf(stderr, " %s L=%.1fh %.2f/%.2f perL=%.3f |", name, VL::LengthOf(md.mesh, v) / md.h,
-                                             ts.capture, ts.coverage, VL::PerLength(md.mesh, v, surf->Energy(), r1 >= 0 ? r1 : r2, vlp));
+                                             ts.capture, ts.coverage, VL::PerLength(md.mesh, v, surf->Energy(), r1 >= 0 ? r1 : r2, vlp.valley));
                             };
                             std::fprintf(stderr, "SEEDED %d %d %s %d stop=%d L0=%.1fh L=%.1fh |", id, p.index, side > 0 ? "in" : "out", ring,
                                          int(s.Stats().stop), L0 / md.h, VL::PolyLength(own.loop) / md.h);
@@ -266,7 +268,7 @@ int main(int argc, char **argv)
                             std::fprintf(stderr, "\n");
                         }
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host
-                        if (valleyLoop) ValleyLoop<CMeshO>::FinishRun(s, ty->second, false, vlp, &seeded);
+                        if (valleyLoop) PartBoundaryEnd<CMeshO>::FinishRun(s, ty->second, false, vlp, &seeded);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
@@ -303,11 +305,11 @@ int main(int argc, char **argv)
                             std::vector<int> faces;
                             for (const auto &x : s.Samples()) faces.push_back(x.p.face);
                             double ref = -1, cost = 0;
-                            const std::vector<int> vl = ValleyLoop<CMeshO>::FindAt(md.mesh, loop, faces, surf->Energy(), s.LengthScale(), vlp, ref, cost);
+                            const std::vector<int> vl = ValleyLoop<CMeshO>::FindAt(md.mesh, loop, faces, surf->Energy(), s.LengthScale(), vlp.valley, ref, cost);
                             auto print = [&](const char *name, const std::vector<int> &l) {
                                 double e, len, c;
                                 ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c);
-                                const double tot = e + vlp.lambda * len + vlp.concavityWeight * c;
+                                const double tot = ValleyLoop<CMeshO>::Cost(md.mesh, l, surf->Energy(), ref, vlp.valley, len);
                                 std::fprintf(stderr, " %s L=%.1f E=%.1f C=%.1f tot=%.1f perL=%.3f |", name, len / md.h, e / md.h,
                                              c / md.h, tot / md.h, tot / len);
                             };

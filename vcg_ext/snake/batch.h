@@ -15,7 +15,7 @@
 #include <vector>
 
 #include <vcg_ext/session/controller.h>
-#include <vcg_ext/snake/valley_loop.h>
+#include <vcg_ext/snake/part_boundary_end.h>
 
 namespace vcg {
 namespace tri {
@@ -90,10 +90,10 @@ public:
         SnakeRunLimits lim;
         lim.maxOperations = s.maxOperations;
         lim.seconds = s.timeLimit;
-        const auto seeded = ValleyLoop<MeshType>::Seeded::Of(snake); // a loop that shrinks far is searched from it
+        const auto seeded = PartBoundaryEnd<MeshType>::Seeded::Of(snake); // a loop that shrinks far is searched from it
         r.stop = snake.Run(lim, progress);
-        ValleyLoop<MeshType>::FinishRun(snake, ctl.EnergyType(), ctl.EnergyFromQuality(),
-                                        typename ValleyLoop<MeshType>::Param(), &seeded);
+        PartBoundaryEnd<MeshType>::FinishRun(snake, ctl.EnergyType(), ctl.EnergyFromQuality(),
+                                             typename PartBoundaryEnd<MeshType>::Param(), &seeded);
         r.stopMessage = snake.Stats().stopMessage;
         r.curve = snake.PolylinePositions();
         for (const auto &x : r.curve)

@@ -29,9 +29,8 @@
 
 #include <vcg/complex/complex.h>
 
-#include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/snake/error.h>
 #include <vcg_ext/snake/part_salience.h>
-#include <vcg_ext/snake/stop.h>
 
 namespace vcg {
 namespace tri {
@@ -83,44 +82,26 @@ public:
         /// 20 bands 143 (6 loops gained, none lost); accepting by total cost alone 142 (8
         /// gained, 3 lost: bird wing loops slid up the tapering wing, same ground, shorter).
         int iterations = 8;
-        /// A closed snake that converged shorter than this fraction of the loop it was seeded
-        /// with (FinishRun's `seeded`, kept by the host) may have slid past the part's valley
-        /// (an outside loop through the narrowing onto the part): the valley loop is also
-        /// searched round the seeded loop and taken when it is cheaper per length. On
-        /// bench/eval/gs_parts (--energy part --rings 2,3, session 25) against 156/220: 157
-        /// (+1 -0: fourleg 381 part 3 outside 2). The seeded search's loop taken whenever the
-        /// band holds a ring: 0.4 156, 0.5 158 (+2 -0), 0.6 159 (+3 -0), 0.75 157 (+3 -2), but
-        /// a loop seeded far out on a featureless body would be pulled back there
-        /// (ValleyLoop.SearchesRoundTheSeededLoopWhenTheSnakeShrankFar). Session 27: also
-        /// when no band round the loop holds a ring, and when none round the seeded loop does
-        /// either, from the seeds' ring towards the body (TowardBody): 161 -> 164/220 (+3 -0).
-        double seededShrink = 0.5;
-        /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
-        typename PartSalience<MeshType>::Param salience;
     };
 
-    /// The loop a Run started from (its polyline and its samples' faces), kept by the host
-    /// for FinishRun (Param::seededShrink): a loop that shrank far is searched from it.
-    struct Seeded
+    /// An edge loop's cost under FindAt's pricing with concavity reference ref (CostParts weighed
+    /// by par: E + lambda length + concavityWeight (1 - c), each summed over length), and its length.
+    template <class EnergyVector>
+    static double Cost(const MeshType &m, const std::vector<int> &l, const EnergyVector &energy, double ref, const Param &par,
+                       double &len)
     {
-        std::vector<vcg::Point3d> loop;
-        std::vector<int> faces;
-        template <class SnakeType>
-        static Seeded Of(SnakeType &s)
-        {
-            Seeded r;
-            r.loop = s.PolylinePositions();
-            for (const auto &x : s.Samples()) r.faces.push_back(x.p.face);
-            return r;
-        }
-    };
+        double e, c;
+        CostParts(m, l, energy, ref, e, len, c);
+        return e + par.lambda * len + par.concavityWeight * c;
+    }
 
+    /// Cost per length: how deep a valley the loop runs through, whatever its length.
     template <class EnergyVector>
     static double PerLength(const MeshType &m, const std::vector<int> &l, const EnergyVector &energy, double ref, const Param &par)
     {
-        double e, len, c;
-        CostParts(m, l, energy, ref, e, len, c);
-        return (e + par.lambda * len + par.concavityWeight * c) / len;
+        double len;
+        const double cost = Cost(m, l, energy, ref, par, len);
+        return cost / len;
     }
 
     static double PolyLength(const std::vector<vcg::Point3d> &loop)
@@ -128,121 +109,6 @@ public:
         double len = 0;
         for (size_t i = 0; i < loop.size(); ++i) len += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
         return len;
-    }
-
-    /// The rule every host follows (the program, the filters, the edit tool, bench/eval/gs_parts):
-    /// a closed snake that converged on the part-boundary energy ends on the cheapest loop of
-    /// edges round it. Returns true when the snake was replaced by that loop (it is kept as it
-    /// is when the band holds no loop, or only one shorter than half the snake).
-    /// `seeded`: the loop the Run started from (Seeded::Of before the Run), or null.
-    template <class SnakeType>
-    static bool FinishRun(SnakeType &s, FeatureEnergyType type, bool energyFromQuality, const Param &par = Param(),
-                          const Seeded *seeded = nullptr)
-    {
-        if (!s.Closed() || energyFromQuality || type != FeatureEnergyType::PartBoundary ||
-            s.Stats().stop != SnakeStop::Converged)
-            return false;
-        const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
-        const auto &energy = s.GetSurface().Energy();
-        const double h = s.LengthScale();
-        const Seeded own = Seeded::Of(s); // the loop where the Run ended
-        double ref = -1, cost = 0;
-        std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);
-        // a loop that converged at less than seededShrink of the length it was seeded with may
-        // have slid past the valley onto the part (issue 33, session 25), and one round which no
-        // band holds a ring has shrunk towards a short part's tip (session 27): the valley loop
-        // is also searched round the loop the user seeded
-        if (seeded && seeded->loop.size() >= 3 && par.seededShrink > 0 &&
-            (PolyLength(own.loop) < par.seededShrink * PolyLength(seeded->loop) || vl.empty())) {
-            double ref2 = -1, cost2 = 0;
-            std::vector<int> v2 = FinishFrom(m, seeded->loop, seeded->faces, energy, h, par, ref2, cost2);
-            // taken when it is a deeper valley per length (both priced with one concavity
-            // reference): a seeded loop far out on a featureless body does not pull a loop
-            // that shrank onto a rim back to the body
-            const double r = ref >= 0 ? ref : ref2;
-            // no band round the seeded loop holds a ring either (it covers a short part's tip):
-            // from the seeds' ring towards the body (session 27)
-            if (v2.empty()) v2 = TowardBody(m, *seeded, energy, h, par, r);
-            if (!v2.empty() && (vl.empty() || PerLength(m, v2, energy, r, par) < PerLength(m, vl, energy, r, par))) vl = v2;
-        }
-        if (vl.empty()) return false;
-        s.SetClosedVertexLoop(vl);
-        return true;
-    }
-
-    /// The valley loop round `loop` (its band narrowed while it is no ring), descended and
-    /// chosen by salience; empty when no band holds a ring at least half as long as `loop`.
-    template <class EnergyVector>
-    static std::vector<int> FinishFrom(const MeshType &m, const std::vector<vcg::Point3d> &loop, const std::vector<int> &faces,
-                                       const EnergyVector &energy, double h, const Param &parIn, double &ref, double &cost)
-    {
-        Param par = parIn;
-        std::vector<int> vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
-        const double len0 = PolyLength(loop);
-        // a band that covers a short part's tip is no ring round it (its cheapest "loop" circles
-        // the tip's middle): narrower bands, down to 1 unit, until one is (issue 33, session 24)
-        while ((vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) && par.bandWidth * kNarrow >= 1.0) {
-            par.bandWidth *= kNarrow;
-            ref = -1;
-            vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
-        }
-        if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return {};
-        vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
-        if (par.salience.exponent > 0) {
-            // candidates round the same part, each found and descended like this loop, but only
-            // those mostly beyond the band the descent searched: within it its choice stands
-            std::vector<vcg::Point3d> pl;
-            for (int v : vl) pl.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-            const LoopIndex band(pl, par.bandWidth * h);
-            vl = Salient(m, vl, cost, energy, h, par, ref, [&](const vcg::Point3d &p) {
-                double at = -1;
-                return band.Dist(p, at) <= band.w;
-            });
-        }
-        return vl;
-    }
-
-    /// Part salience's choice (PartSalience::Choose) from edge loop vl (cost `cost` with
-    /// concavity reference ref): candidates found round guides moved into the body, each
-    /// descended, and the width profile's ring. inBand(p): p lies where vl was already chosen.
-    template <class EnergyVector, class InBand>
-    static std::vector<int> Salient(const MeshType &m, const std::vector<int> &vl, double cost, const EnergyVector &energy,
-                                    double h, const Param &par, double ref, InBand inBand)
-    {
-        const double minLen = 0.5 * LengthOf(m, vl);
-        auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c, bool narrow) {
-            double r = ref;
-            if (narrow) {
-                Param pn = par;
-                pn.bandWidth = par.salience.profileBand;
-                return FindAt(m, guide, guideFaces, energy, h, pn, r, c);
-            }
-            std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, par, r, c);
-            if (cand.size() >= 3) cand = Descend(m, cand, c, energy, h, par, ref, minLen);
-            return cand;
-        };
-        return PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);
-    }
-
-    /// For a loop that shrank towards a part's tip (FinishRun), when no band round the seeded
-    /// loop holds a ring (a short part: the band covers its tip): the edge ring along the seeded
-    /// loop (a band of kHug units), then part salience's candidates moved from it into the body.
-    /// Empty when no candidate beats that ring (the seeds' own ring is no valley).
-    template <class EnergyVector>
-    static std::vector<int> TowardBody(const MeshType &m, const Seeded &seeded, const EnergyVector &energy, double h,
-                                       const Param &par, double ref)
-    {
-        if (!(par.salience.exponent > 0)) return {};
-        Param pn = par;
-        pn.bandWidth = kHug;
-        double r = ref, c = 0;
-        const std::vector<int> ring = FindAt(m, seeded.loop, seeded.faces, energy, h, pn, r, c);
-        if (ring.size() < 3 || !(LengthOf(m, ring) > 0.5 * PolyLength(seeded.loop))) return {};
-        double e, len, cc;
-        CostParts(m, ring, energy, ref, e, len, cc); // priced as the candidates are
-        const double cost = e + par.lambda * len + par.concavityWeight * cc;
-        const std::vector<int> best = Salient(m, ring, cost, energy, h, par, ref, [](const vcg::Point3d &) { return false; });
-        return best == ring ? std::vector<int>() : best;
     }
 
     /// Vertex indices of the cheapest edge loop round `loop` (closed polyline), or empty when
@@ -439,7 +305,8 @@ public:
     static double LengthOf(const MeshType &m, const std::vector<int> &l) { return PartSalience<MeshType>::Length(m, l); }
 
     /// The parts of an edge loop's cost under FindAt's pricing with concavity reference ref:
-    /// sum len * E, sum len, sum len * (1 - c) (weights not applied). For diagnostics (gs_parts).
+    /// sum len * E, sum len, sum len * (1 - c) (weights not applied: Cost weighs them; the
+    /// diagnostics of gs_parts print them apart).
     template <class EnergyVector>
     static void CostParts(const MeshType &m, const std::vector<int> &vl, const EnergyVector &energy, double ref,
                           double &eSum, double &lSum, double &cSum)
@@ -458,32 +325,6 @@ public:
             lSum += len;
             cSum += len * (1 - c);
         }
-    }
-
-private:
-    /// Band narrowing factor when a band is no ring (2.5 -> 1.5 units with the default band).
-    static constexpr double kNarrow = 0.6;
-    /// Half-width of the band that holds the edge ring along a seeded loop (TowardBody), units.
-    static constexpr double kHug = 0.5;
-
-    /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
-    /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
-    /// the edge has one face. (Not vcg::face::DihedralAngleRad: that one is in the mesh's
-    /// scalar, float for CMeshO, and needs FF adjacency.)
-    static double ConcaveAngle(const FaceType *f0, const FaceType *f1)
-    {
-        if (!f0 || !f1) return 0;
-        vcg::Point3d n0 = vcg::Point3d::Construct(vcg::TriangleNormal(*f0));
-        vcg::Point3d n1 = vcg::Point3d::Construct(vcg::TriangleNormal(*f1));
-        if (!(n0.Norm() > 0 && n1.Norm() > 0)) return 0;
-        n0.Normalize(), n1.Normalize();
-        for (int k = 0; k < 3; ++k) {
-            const VertexType *c = f1->cV(k);
-            if (c == f0->cV(0) || c == f0->cV(1) || c == f0->cV(2)) continue;
-            const double up = n0 * (vcg::Point3d::Construct(c->cP()) - vcg::Point3d::Construct(f0->cP(0)));
-            return up > 0 ? std::acos(std::max(-1.0, std::min(1.0, n0 * n1))) : 0.0;
-        }
-        return 0;
     }
 
     /// The loop's segments with their arc lengths, and a bounding sphere each, so that a
@@ -523,6 +364,28 @@ private:
             return d;
         }
     };
+
+private:
+    /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
+    /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
+    /// the edge has one face. (Not vcg::face::DihedralAngleRad: that one is in the mesh's
+    /// scalar, float for CMeshO, and needs FF adjacency.)
+    static double ConcaveAngle(const FaceType *f0, const FaceType *f1)
+    {
+        if (!f0 || !f1) return 0;
+        vcg::Point3d n0 = vcg::Point3d::Construct(vcg::TriangleNormal(*f0));
+        vcg::Point3d n1 = vcg::Point3d::Construct(vcg::TriangleNormal(*f1));
+        if (!(n0.Norm() > 0 && n1.Norm() > 0)) return 0;
+        n0.Normalize(), n1.Normalize();
+        for (int k = 0; k < 3; ++k) {
+            const VertexType *c = f1->cV(k);
+            if (c == f0->cV(0) || c == f0->cV(1) || c == f0->cV(2)) continue;
+            const double up = n0 * (vcg::Point3d::Construct(c->cP()) - vcg::Point3d::Construct(f0->cP(0)));
+            return up > 0 ? std::acos(std::max(-1.0, std::min(1.0, n0 * n1))) : 0.0;
+        }
+        return 0;
+    }
+
 };
 
 } // namespace tri
