@@ -23,6 +23,11 @@
 //                  8 h outside its rim, the pattern of fourleg 381; 1: a loop that converged on
 //                  the rim, seeded on the equator), arg 1: the seeded loop given (1) or not
 //                  (0, what FinishRun cost before session 25)
+// BM_PartEndTowardBody the same end when no band round the seeded loop holds a ring either
+//                  (PartBoundaryEnd::TowardBody, session 27: the seeds' ring moved towards the
+//                  body by part salience), on the short part of tests/test_part_boundary.cpp
+//                  (984 faces); arg = the mesh's faces at least, the body far below the part
+//                  midpoint-subdivided (0: as the test, 100000: 127k, 1200000: 2.0M faces)
 // Run: build/bench/bench_edit_response --benchmark_repetitions=5 and read the medians.
 
 #include <benchmark/benchmark.h>
@@ -35,10 +40,12 @@
 
 #include <snake_bench_util.h>
 #include <vcg/complex/algorithms/closest.h>
+#include <vcg/complex/algorithms/refine.h>
 #include <vcg/space/index/grid_static_ptr.h>
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/session/controller.h>
 #include <vcg_ext/snake/part_boundary_end.h>
+#include <revolved_profile.h>
 
 namespace {
 
@@ -318,6 +325,95 @@ void BM_ValleyLoopSeeded(benchmark::State &state)
     state.counters["replaced"] = double(replaced) / state.iterations();
 }
 
+/// The short part of tests/test_part_boundary.cpp
+/// (ValleyLoop.SearchesFromTheSeedsTowardsTheBodyWhenTheLoopShrankOntoAShortPartsTip), its loop
+/// seeded 2 tube rings up (0.2 units of the part's 0.3) and the loop that shrank onto its tip,
+/// repeated with a length unit 1.5 x the Run's: no band round the seeded loop holds a ring, so
+/// the Run's end searches from the seeds' ring towards the body. The body below z = -1 (half
+/// the mesh, far from the part) is midpoint-subdivided until the mesh has `faces` faces: what
+/// grows with the mesh rather than with the part.
+struct StubCase
+{
+    CMeshO m;
+    std::shared_ptr<SnakeSurface<CMeshO>> surf;
+    std::vector<SnakeSample> samples;
+    double unit = 0;
+    PartBoundaryEnd<CMeshO>::Seeded seeded;
+    bool towardBody = false; // the seeded loop's search empty after the loop shrank: TowardBody's path
+};
+
+/// Splits the edges with both ends below z = -1.
+struct LowerBodyEdge
+{
+    bool operator()(vcg::face::Pos<CFaceO> ep) const { return ep.V()->cP()[2] < -1 && ep.VFlip()->cP()[2] < -1; }
+};
+
+StubCase &Stub(int faces)
+{
+    static std::map<int, std::unique_ptr<StubCase>> cases;
+    std::unique_ptr<StubCase> &k = cases[faces];
+    if (k) return *k;
+    k.reset(new StubCase);
+    CMeshO &m = k->m;
+    const int n = 12;
+    const std::vector<int> ring = gs_test::MakeStubOnBody(m, n, 0.1);
+    while (m.fn < faces) {
+        vcg::tri::UpdateTopology<CMeshO>::FaceFace(m);
+        vcg::tri::MidPoint<CMeshO> mid(&m);
+        LowerBodyEdge lower;
+        if (!vcg::tri::RefineE(m, mid, lower)) break;
+    }
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    for (auto &v : m.vert) v.Q() = 0.5;
+    k->surf = std::make_shared<SnakeSurface<CMeshO>>(m, 0); // the energy: the vertices' quality
+    std::vector<int> seeds;
+    for (int i = 0; i < n; i += 2) seeds.push_back(ring[2] + i);
+    GeometricSnake<CMeshO> t(k->surf);
+    t.InitFromSeeds(seeds, true);
+    k->seeded = PartBoundaryEnd<CMeshO>::Seeded::Of(t);
+    t.Run(400);
+    k->samples = t.Samples(), k->unit = 1.5 * t.LengthScale();
+    GeometricSnake<CMeshO> s(k->surf);
+    s.InitFromSamples(k->samples, true, k->unit);
+    const auto own = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
+    const PartBoundaryEnd<CMeshO>::Param par;
+    double r1 = -1, c1 = 0, r2 = -1, c2 = 0;
+    const auto &e = k->surf->Energy();
+    const bool ownEmpty = PartBoundaryEnd<CMeshO>::FinishFrom(m, own.loop, own.faces, e, k->unit, par, r1, c1).empty();
+    const bool seededEmpty = PartBoundaryEnd<CMeshO>::FinishFrom(m, k->seeded.loop, k->seeded.faces, e, k->unit, par, r2, c2).empty();
+    const double L0 = ValleyLoop<CMeshO>::PolyLength(k->seeded.loop), L1 = ValleyLoop<CMeshO>::PolyLength(own.loop);
+    k->towardBody = seededEmpty && (L1 < par.seededShrink * L0 || ownEmpty);
+    std::fprintf(stderr, "stub case on %d faces: seeded %.3f long, shrank to %.3f; valley loop round it %s, round the "
+                         "seeded loop %s\n", m.fn, L0, L1, ownEmpty ? "none" : "found", seededEmpty ? "none" : "found");
+    return *k;
+}
+
+/// The Run's end down TowardBody's path (PartBoundaryEnd::FinishRun, session 27); arg: the
+/// mesh's faces at least (0: the test's mesh, 984 faces).
+void BM_PartEndTowardBody(benchmark::State &state)
+{
+    StubCase &k = Stub(int(state.range(0)));
+    GeometricSnake<CMeshO> s(k.surf);
+    int replaced = 0;
+    double zMax = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        s.InitFromSamples(k.samples, true, k.unit);
+        s.EndRun(SnakeStop::Converged); // as a Run that converged there
+        state.ResumeTiming();
+        replaced += PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false,
+                                                       PartBoundaryEnd<CMeshO>::Param(), &k.seeded);
+        state.PauseTiming();
+        for (const auto &x : s.PolylinePositions()) zMax = std::max(zMax, std::fabs(x[2]));
+        state.ResumeTiming();
+    }
+    state.counters["faces"] = k.m.fn;
+    state.counters["towardBody"] = k.towardBody; // 1: the path measured is TowardBody's
+    state.counters["replaced"] = double(replaced) / state.iterations();
+    state.counters["zMax"] = zMax; // 0: the loop ends on the part's base ring
+}
+
 } // namespace
 
 BENCHMARK(BM_PickGrid)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
@@ -327,5 +423,6 @@ BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5)
 BENCHMARK(BM_BuildCold)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_ValleyLoop)->Arg(0)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(BM_ValleyLoopSeeded)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
+BENCHMARK(BM_PartEndTowardBody)->Arg(0)->Arg(100000)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 
 BENCHMARK_MAIN();
