@@ -18,6 +18,7 @@
 // place: its cost follows the band, not the mesh (bench_edit_response BM_ValleyLoop).
 // The search is repeated round its own loop while the loop gets cheaper in total and per
 // length (Param::iterations): a descent that reaches a deeper valley beyond the first band.
+// Where a part-boundary Run's end searches and which loop it keeps: part_boundary_end.h.
 
 #include <algorithm>
 #include <cmath>
