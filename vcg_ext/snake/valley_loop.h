@@ -97,6 +97,11 @@ public:
         double seededShrink = 0.5;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
+        /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
+        /// Run's end finds and the stage that found it ("band", "descent", "salience",
+        /// "profile"); an empty loop marks where the searches from the seeded loop ("seeded")
+        /// and TowardBody ("toward") begin. Empty: nothing is recorded, nothing changes.
+        std::function<void(const char *, const std::vector<int> &)> record;
     };
 
     /// The loop a Run started from (its polyline and its samples' faces), kept by the host
@@ -155,6 +160,7 @@ public:
         if (seeded && seeded->loop.size() >= 3 && par.seededShrink > 0 &&
             (PolyLength(own.loop) < par.seededShrink * PolyLength(seeded->loop) || vl.empty())) {
             double ref2 = -1, cost2 = 0;
+            Record(par, "seeded", {});
             std::vector<int> v2 = FinishFrom(m, seeded->loop, seeded->faces, energy, h, par, ref2, cost2);
             // taken when it is a deeper valley per length (both priced with one concavity
             // reference): a seeded loop far out on a featureless body does not pull a loop
@@ -162,7 +168,7 @@ public:
             const double r = ref >= 0 ? ref : ref2;
             // no band round the seeded loop holds a ring either (it covers a short part's tip):
             // from the seeds' ring towards the body (session 27)
-            if (v2.empty()) v2 = TowardBody(m, *seeded, energy, h, par, r);
+            if (v2.empty()) Record(par, "toward", {}), v2 = TowardBody(m, *seeded, energy, h, par, r);
             if (!v2.empty() && (vl.empty() || PerLength(m, v2, energy, r, par) < PerLength(m, vl, energy, r, par))) vl = v2;
         }
         if (vl.empty()) return false;
@@ -178,6 +184,7 @@ public:
     {
         Param par = parIn;
         std::vector<int> vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
+        Record(par, "band", vl);
         const double len0 = PolyLength(loop);
         // a band that covers a short part's tip is no ring round it (its cheapest "loop" circles
         // the tip's middle): narrower bands, down to 1 unit, until one is (issue 33, session 24)
@@ -185,6 +192,7 @@ public:
             par.bandWidth *= kNarrow;
             ref = -1;
             vl = FindAt(m, loop, faces, energy, h, par, ref, cost);
+            Record(par, "band", vl);
         }
         if (vl.size() < 3 || !(LengthOf(m, vl) > 0.5 * len0)) return {};
         vl = Descend(m, vl, cost, energy, h, par, ref, 0.5 * len0);
@@ -215,9 +223,12 @@ public:
             if (narrow) {
                 Param pn = par;
                 pn.bandWidth = par.salience.profileBand;
-                return FindAt(m, guide, guideFaces, energy, h, pn, r, c);
+                std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, pn, r, c);
+                Record(par, "profile", cand);
+                return cand;
             }
             std::vector<int> cand = FindAt(m, guide, guideFaces, energy, h, par, r, c);
+            Record(par, "salience", cand);
             if (cand.size() >= 3) cand = Descend(m, cand, c, energy, h, par, ref, minLen);
             return cand;
         };
@@ -237,6 +248,7 @@ public:
         pn.bandWidth = kHug;
         double r = ref, c = 0;
         const std::vector<int> ring = FindAt(m, seeded.loop, seeded.faces, energy, h, pn, r, c);
+        Record(par, "band", ring);
         if (ring.size() < 3 || !(LengthOf(m, ring) > 0.5 * PolyLength(seeded.loop))) return {};
         double e, len, cc;
         CostParts(m, ring, energy, ref, e, len, cc); // priced as the candidates are
@@ -425,6 +437,7 @@ public:
             }
             double c2 = 0, r = ref;
             const std::vector<int> next = FindAt(m, pl, pf, energy, h, par, r, c2);
+            Record(par, "descent", next);
             // a step must make the loop cheaper per length too (deeper, more concave): by its
             // total cost alone a loop on a part that tapers slides to a shorter ring of the same
             // ground, off the valley at the part's base
@@ -461,6 +474,11 @@ public:
     }
 
 private:
+    static void Record(const Param &par, const char *stage, const std::vector<int> &l)
+    {
+        if (par.record) par.record(stage, l);
+    }
+
     /// Band narrowing factor when a band is no ring (2.5 -> 1.5 units with the default band).
     static constexpr double kNarrow = 0.6;
     /// Half-width of the band that holds the edge ring along a seeded loop (TowardBody), units.
