@@ -34,7 +34,7 @@
 //   per loop, the stop, the seeded and the final length, and the valley loop (FinishFrom) found
 //   round the loop where the Run ended and round the seeded loop, with capture/coverage and
 //   cost per length, or "none" when no band holds a ring.)
-//   GS_PARTS_ORACLE=FILE.csv: per loop, every edge loop the Run's end found (ValleyLoop::Param::
+//   (GS_PARTS_ORACLE=FILE.csv: per loop, every edge loop the Run's end found (ValleyLoop::Param::
 //   record: bands, descent steps, salience's and the profile's candidates, round the snake's
 //   loop, the seeded one and TowardBody's ring), one row each with its stage, whether it was
 //   chosen, capture/coverage, cost per length and salience score (without the width term); a
@@ -210,7 +210,7 @@ int main(int argc, char **argv)
     std::map<std::string, Tally> oracleTally; // category -> rows, ok, failed rows with a successful candidate
     if (oracleOut) {
         oracle.open(oracleOut);
-        oracle << "id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
+        oracle << "energy,id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
                   "area_share,sal,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body\n";
     }
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
@@ -358,7 +358,7 @@ int main(int argc, char **argv)
                             const std::vector<vcg::Point3d> finPts = gs_parts::ResampleLoop(loop, 0.25 * h);
                             auto row = [&](size_t ci, const std::string &stage, bool chosen, const std::vector<vcg::Point3d> &pl,
                                            const gs_parts::Score &ts, const std::string &rest) {
-                                oracle << id << ',' << md.category << ',' << p.index << ',' << (side > 0 ? "inside" : "outside") << ','
+                                oracle << en << ',' << id << ',' << md.category << ',' << p.index << ',' << (side > 0 ? "inside" : "outside") << ','
                                        << ring << ',' << int(sc.Success()) << ',' << ci << ',' << stage << ',' << int(chosen) << ','
                                        << int(ts.Success()) << ',' << ts.capture << ',' << ts.coverage << ','
                                        << gs_parts::LoopLength(pl) / h << ',' << rest << '\n';
@@ -418,7 +418,7 @@ int main(int argc, char **argv)
                                 row(ci + 1, uniq[ci].stage, chosen, pl, ts, rest);
                             }
                             for (const std::string &k : {md.category, std::string("ALL")}) {
-                                Tally &t = oracleTally[k];
+                                Tally &t = oracleTally[en + " " + k];
                                 ++t.n, t.ok += sc.Success(), t.points += !sc.Success() && anyOk;
                             }
                             oracle.flush();
@@ -593,7 +593,7 @@ int main(int argc, char **argv)
             std::fprintf(stderr, "%-10s %-10s %6d %7.0f%% %8d\n", e.first.c_str(), c.first.c_str(), c.second.n,
                          100.0 * c.second.ok / std::max(1, c.second.n), c.second.points);
     for (auto &c : oracleTally)
-        std::fprintf(stderr, "oracle     %-10s %6d %8d ok, %d failed with a successful candidate: ceiling %d\n", c.first.c_str(),
+        std::fprintf(stderr, "oracle %-14s %6d %8d ok, %d failed with a successful candidate: ceiling %d\n", c.first.c_str(),
                      c.second.n, c.second.ok, c.second.points, c.second.ok + c.second.points);
     if (people.is_open())
         std::fprintf(stderr, "people     ALL        %6d %7.0f%% (each person's cut against the others')\n", peopleAll.n,
