@@ -37,7 +37,7 @@
 //   (GS_PARTS_ORACLE=FILE.csv: per loop, every edge loop the Run's end found (ValleyLoop::Param::
 //   record: bands, descent steps, salience's and the profile's candidates, round the snake's
 //   loop, the seeded one and TowardBody's ring), one row each with its stage, whether it was
-//   chosen, capture/coverage, cost per length and salience score (without the width term); a
+//   chosen, capture/coverage, cost per length and salience score (without and with the width term); a
 //   summary on stderr: how many failed loops had a successful candidate (the choice's ceiling).)
 //   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
 //   criterion if their own cut were scored like a loop against the other people's cuts: the
@@ -58,6 +58,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <part_cases.h>
@@ -211,7 +212,7 @@ int main(int argc, char **argv)
     if (oracleOut) {
         oracle.open(oracleOut);
         oracle << "energy,id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
-                  "area_share,sal,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body\n";
+                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body\n";
     }
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
     const auto t0 = std::chrono::steady_clock::now();
@@ -363,9 +364,28 @@ int main(int argc, char **argv)
                                        << int(ts.Success()) << ',' << ts.capture << ',' << ts.coverage << ','
                                        << gs_parts::LoopLength(pl) / h << ',' << rest << '\n';
                             };
-                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,1,,,,,");
+                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,");
                             bool anyOk = false;
                             std::vector<char> in;
+                            // salience's width factor (d_part / d_body)^widthExponent, the shape
+                            // diameters read in one region round all the candidates (Choose's
+                            // radius about the longest), h the snake's unit as in Choose
+                            std::unique_ptr<vcg::tri::ShapeDiameter<CMeshO>::Region> sdf;
+                            if (!uniq.empty() && vlp.salience.widthExponent > 0) {
+                                vcg::Point3d c0(0, 0, 0);
+                                double Lmax = 0, far = 0;
+                                size_t nc = 0;
+                                for (const Candidate &c : uniq) {
+                                    Lmax = std::max(Lmax, VL::LengthOf(md.mesh, c.loop));
+                                    for (int v : c.loop) c0 += vcg::Point3d::Construct(md.mesh.vert[v].cP()), ++nc;
+                                }
+                                c0 /= double(nc);
+                                for (const Candidate &c : uniq)
+                                    for (int v : c.loop) far = std::max(far, vcg::Distance(c0, vcg::Point3d::Construct(md.mesh.vert[v].cP())));
+                                const auto &sp = vlp.salience;
+                                sdf.reset(new vcg::tri::ShapeDiameter<CMeshO>::Region(
+                                    md.mesh, uniq[0].loop, c0, far + sp.widthRadius * Lmax + sp.widthReach * s.LengthScale(), sp.sdf));
+                            }
                             for (size_t ci = 0; ci < uniq.size(); ++ci) {
                                 const std::vector<int> &l = uniq[ci].loop;
                                 std::vector<vcg::Point3d> pl;
@@ -380,6 +400,11 @@ int main(int argc, char **argv)
                                 VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c);
                                 const double cpl = (e + vlp.lambda * len + vlp.concavityWeight * c) / len;
                                 const double A = SideArea(md.mesh, l, rep, in);
+                                const double width = sdf ? std::pow(sdf->SideRatio(l, [&](int v) { return in[v] == 1; },
+                                                                                    vlp.salience.widthReach * s.LengthScale(),
+                                                                                    vlp.salience.widthSamples),
+                                                                     vlp.salience.widthExponent)
+                                                          : 1.0;
                                 double dOwn = 0, agree = 0;
                                 for (const auto &x : pl) dOwn += gs_parts::DistToLoop(x, ownSeed.loop) / h / pl.size();
                                 for (const auto &x : ownPts) agree += (gs_parts::DistToLoop(x, cp) <= h) / double(ownPts.size());
@@ -411,8 +436,9 @@ int main(int argc, char **argv)
                                     front = nx;
                                 }
                                 char rest[512];
-                                std::snprintf(rest, sizeof rest, "%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f", cpl,
+                                std::snprintf(rest, sizeof rest, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f", cpl,
                                               e / len, c / len, A / total, A > 0 ? cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
+                                              A > 0 ? width * cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
                                               dOwn, agree, std::sqrt(rms) / h, turn, eS[0] / nS[0], eS[1] / std::max(1.0, nS[1]),
                                               eS[2] / std::max(1.0, nS[2]));
                                 row(ci + 1, uniq[ci].stage, chosen, pl, ts, rest);

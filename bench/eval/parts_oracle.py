@@ -13,7 +13,7 @@ import collections
 import csv
 import sys
 
-NUM = ['capture', 'coverage', 'L_h', 'cpl', 'e_pl', 'c_pl', 'area_share', 'sal', 'd_own_h', 'own_agree',
+NUM = ['capture', 'coverage', 'L_h', 'cpl', 'e_pl', 'c_pl', 'area_share', 'sal', 'sal_w', 'd_own_h', 'own_agree',
        'plane_h', 'turn', 'e_loop', 'e_part', 'e_body']
 
 
@@ -64,7 +64,7 @@ def main():
             b = min(good, key=lambda c: c['cpl'])
             print(f'{name(k)}: chosen {ch["stage"].split("|")[0]} {ch["capture"]:.2f}/{ch["coverage"]:.2f}, '
                   f'successful {b["stage"].split("|")[0]}: cost per length x{b["cpl"] / ch["cpl"]:.3f}, '
-                  f'salience x{b["sal"] / ch["sal"]:.3f}, planarity x{b["plane_h"] / ch["plane_h"]:.2f}')
+                  f'salience x{b["sal"] / ch["sal"]:.3f} (with width x{b["sal_w"] / ch["sal_w"]:.3f}), planarity x{b["plane_h"] / ch["plane_h"]:.2f}')
     print('category   rows  ok  ceiling  with the snake\'s own loop')
     for c, t in sorted(cat.items()):
         print(f'{c:10s} {t[0]:4d} {t[1]:3d} {t[1] + t[2]:6d} {t[1] + t[3]:8d}')
@@ -72,11 +72,12 @@ def main():
     for tol in (1.0, 1.05, 1.1):
         n = sum(1 for v in rows.values() for ch in [next(c for c in v if c['chosen'])]
                 if ch['success'] and ch['stage'] != 'snake' and any(
-                    not c['success'] and (c['cpl'] <= tol * ch['cpl'] or 0 < c['sal'] <= tol * ch['sal']) for c in v[1:]))
+                    not c['success'] and (c['cpl'] <= tol * ch['cpl'] or 0 < c['sal_w'] <= tol * ch['sal_w']) for c in v[1:]))
         print(f'successes with a failing loop within {tol}x the chosen one\'s cost per length or salience: {n}')
     replay(rows, lambda e, ch: ch, 'chosen')
     replay(rows, lambda e, ch: min(e, key=lambda c: c['cpl']), 'cheapest per length')
     replay(rows, lambda e, ch: min(e, key=lambda c: c['sal'] if c['sal'] > 0 else 1e9), 'most salient (no width)')
+    replay(rows, lambda e, ch: min(e, key=lambda c: c['sal_w'] if c['sal_w'] > 0 else 1e9), 'most salient (width)')
     for t, p in ((1.05, 0.5), (1.3, 0.5), (1.3, 0.6), (1.3, 0.7)):
         def flatter(e, ch, t=t, p=p):
             cs = [c for c in e if c is not ch and c['cpl'] <= t * ch['cpl'] and c['plane_h'] <= p * ch['plane_h']
