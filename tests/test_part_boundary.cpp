@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -976,6 +977,60 @@ TEST(ValleyLoop, SearchesFromTheSeedsTowardsTheBodyWhenTheLoopShrankOntoAShortPa
     double zu = 1e9;
     for (const P3 &x : u.PolylinePositions()) zu = std::min(zu, x[2]);
     EXPECT_GT(zu, 0.25);
+}
+
+// ValleyLoop::Param::record (bench/eval/gs_parts GS_PARTS_ORACLE, session 28): every edge loop
+// the Run's end finds is passed to it with its stage, the searches from the seeded loop and
+// TowardBody behind their markers, and recording changes nothing. The case above goes through
+// every stage: the bands round the shrunk loop, the seeded search, TowardBody's ring, salience.
+TEST(PartBoundaryEnd, RecordsEveryLoopItFindsWithoutChangingTheChoice)
+{
+    CMeshO m;
+    const std::vector<int> ring = MakeStubOnBody(m);
+    ASSERT_GE(ring[2], 0);
+    for (auto &v : m.vert) v.Q() = 0.5;
+    auto surf = std::make_shared<Surface>(m, 0);
+    std::vector<int> seeds;
+    for (int k = 0; k < kStubN; k += 2) seeds.push_back(ring[2] + k);
+    Snake t(surf);
+    t.InitFromSeeds(seeds, true);
+    const auto seeded = PartBoundaryEnd<CMeshO>::Seeded::Of(t);
+    t.Run(400);
+    auto finish = [&](const PartBoundaryEnd<CMeshO>::Param &par) {
+        Snake s(surf);
+        s.InitFromSamples(t.Samples(), true, 1.5 * t.LengthScale());
+        s.EndRun(SnakeStop::Converged);
+        EXPECT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &seeded));
+        return s.PolylinePositions();
+    };
+    const std::vector<P3> plain = finish(PartBoundaryEnd<CMeshO>::Param());
+    PartBoundaryEnd<CMeshO>::Param par;
+    std::vector<std::pair<std::string, std::vector<int>>> rec;
+    par.valley.record = [&](const char *stage, const std::vector<int> &l) { rec.push_back({stage, l}); };
+    const std::vector<P3> recorded = finish(par);
+    ASSERT_EQ(recorded.size(), plain.size());
+    for (size_t i = 0; i < plain.size(); ++i) EXPECT_EQ(recorded[i], plain[i]);
+    std::vector<std::string> stages;
+    for (const auto &r : rec) stages.push_back(r.first);
+    auto at = [&](const char *x) { return std::find(stages.begin(), stages.end(), x) - stages.begin(); };
+    ASSERT_FALSE(rec.empty());
+    EXPECT_EQ(stages.front(), "band"); // the band round the snake's loop comes first
+    EXPECT_LT(at("seeded"), at("toward")); // then the seeded search, then TowardBody
+    EXPECT_LT(at("toward"), int(stages.size()));
+    EXPECT_TRUE(rec[at("seeded")].second.empty() && rec[at("toward")].second.empty()); // markers
+    EXPECT_LT(at("salience"), int(stages.size()));
+    // the loop the Run ended on is one of the loops recorded
+    bool found = false;
+    for (const auto &r : rec) {
+        if (r.second.size() < 3) continue;
+        std::vector<P3> pl;
+        for (int v : r.second) pl.push_back(P3::Construct(m.vert[v].cP()));
+        bool same = true;
+        for (const P3 &x : pl) same = same && gs_parts::DistToLoop(x, recorded) < 1e-9;
+        for (const P3 &x : recorded) same = same && gs_parts::DistToLoop(x, pl) < 1e-9;
+        found = found || same;
+    }
+    EXPECT_TRUE(found);
 }
 
 namespace {

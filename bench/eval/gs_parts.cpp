@@ -35,6 +35,11 @@
 //   per loop, the stop, the seeded and the final length, and the valley loop (FinishFrom) found
 //   round the loop where the Run ended and round the seeded loop, with capture/coverage and
 //   cost per length, or "none" when no band holds a ring.)
+//   (GS_PARTS_ORACLE=FILE.csv: per loop, every edge loop the Run's end found (ValleyLoop::Param::
+//   record: bands, descent steps, salience's and the profile's candidates, round the snake's
+//   loop, the seeded one and TowardBody's ring), one row each with its stage, whether it was
+//   chosen, capture/coverage, cost per length and salience score (without and with the width term); a
+//   summary on stderr: how many failed loops had a successful candidate (the choice's ceiling).)
 //   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
 //   criterion if their own cut were scored like a loop against the other people's cuts: the
 //   agreement among people that the loops' figures can be read against.)
@@ -54,6 +59,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <part_cases.h>
@@ -61,6 +67,7 @@
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/snake/geometric_snake.h>
 #include <vcg_ext/snake/part_boundary_end.h>
+#include <vcg/space/fitting3.h>
 
 using namespace vcg::tri;
 typedef GeometricSnake<CMeshO> Snake;
@@ -94,6 +101,40 @@ struct Tally
 {
     int n = 0, ok = 0, points = 0;
 };
+
+/// GS_PARTS_ORACLE: one edge loop the Run's end found, where it came from ("own", "seeded" or
+/// "toward", then the stage: band, descent, salience, salience+descent, profile).
+struct Candidate
+{
+    std::string stage;
+    std::vector<int> loop;
+};
+
+/// The area of the side of edge loop l that holds vertex rep (0 when rep is on l): the part's
+/// side, as PartSalience::Choose reads it (the whole mesh flooded; a diagnostic).
+double SideArea(CMeshO &m, const std::vector<int> &l, int rep, std::vector<char> &in)
+{
+    in.assign(m.vert.size(), 0);
+    for (int v : l) in[v] = 2;
+    if (rep < 0 || in[rep]) return 0;
+    std::vector<int> st = {rep};
+    in[rep] = 1;
+    double a = 0;
+    while (!st.empty()) {
+        const int v = st.back();
+        st.pop_back();
+        for (vcg::face::VFIterator<CFaceO> vfi(&m.vert[v]); !vfi.End(); ++vfi) {
+            int low = v; // the face's area, counted once: at its lowest vertex off the loop
+            for (int k = 0; k < 3; ++k) {
+                const int w = int(vcg::tri::Index(m, vfi.F()->V(k)));
+                if (in[w] != 2) low = std::min(low, w);
+                if (!in[w]) in[w] = 1, st.push_back(w);
+            }
+            if (low == v) a += vcg::DoubleArea(*vfi.F()) / 2;
+        }
+    }
+    return a;
+}
 
 } // namespace
 
@@ -166,6 +207,14 @@ int main(int argc, char **argv)
         people << "id,category,part,people,passing\n";
     }
     Tally peopleAll;
+    const char *oracleOut = valleyLoop ? std::getenv("GS_PARTS_ORACLE") : nullptr;
+    std::ofstream oracle;
+    std::map<std::string, Tally> oracleTally; // category -> rows, ok, failed rows with a successful candidate
+    if (oracleOut) {
+        oracle.open(oracleOut);
+        oracle << "energy,id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
+                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body\n";
+    }
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
     const auto t0 = std::chrono::steady_clock::now();
     for (int id : ids) {
@@ -267,12 +316,141 @@ int main(int argc, char **argv)
                             show("seeded", v2);
                             std::fprintf(stderr, "\n");
                         }
+                        // GS_PARTS_ORACLE: every edge loop the Run's end finds, with the stage that found it
+                        std::vector<Candidate> cands;
+                        std::string origin = "own", last = "band";
+                        const auto ownSeed = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
+                        PartBoundaryEnd<CMeshO>::Param run = vlp;
+                        if (oracleOut)
+                            run.valley.record = [&](const char *st, const std::vector<int> &l) {
+                                const std::string x = st;
+                                if (l.empty() && (x == "seeded" || x == "toward")) return (void)(origin = x);
+                                if (x != "descent") last = x;
+                                if (l.size() >= 3)
+                                    cands.push_back({origin + "/" + (x == "descent" && last != "band" ? last + "+descent" : x), l});
+                            };
                         // the part energy's loop ends on the cheapest edge loop round it, as in every host
-                        if (valleyLoop) PartBoundaryEnd<CMeshO>::FinishRun(s, ty->second, false, vlp, &seeded);
+                        const bool replaced = valleyLoop && PartBoundaryEnd<CMeshO>::FinishRun(s, ty->second, false, run, &seeded);
                         const std::vector<vcg::Point3d> loop = s.PolylinePositions();
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
                         const bool point = L1 < 0.25 * L0 || s.Stats().stopped;
+                        if (oracleOut) {
+                            typedef ValleyLoop<CMeshO> VL;
+                            const double h = md.h;
+                            double ref = -1, cost0 = 0; // one concavity reference: the first band round the snake's loop
+                            VL::FindAt(md.mesh, ownSeed.loop, ownSeed.faces, surf->Energy(), s.LengthScale(), vlp.valley, ref, cost0);
+                            std::vector<int> dist, sideOf;
+                            gs_parts::Rings(md.mesh, p, dist, sideOf);
+                            int rep = -1; // the vertex deepest in the part
+                            for (size_t v = 0; v < dist.size(); ++v)
+                                if (sideOf[v] > 0 && (rep < 0 || dist[v] > dist[rep])) rep = int(v);
+                            double total = 0;
+                            for (const auto &f : md.mesh.face) if (!f.IsD()) total += vcg::DoubleArea(f) / 2;
+                            // the same loop found by several stages is one candidate, named by the first
+                            std::map<std::vector<int>, size_t> seen;
+                            std::vector<Candidate> uniq;
+                            for (const Candidate &c : cands) {
+                                std::vector<int> k = c.loop;
+                                std::sort(k.begin(), k.end());
+                                auto it = seen.find(k);
+                                if (it == seen.end()) seen[k] = uniq.size(), uniq.push_back(c);
+                                else if (uniq[it->second].stage.find(c.stage) == std::string::npos) uniq[it->second].stage += "|" + c.stage;
+                            }
+                            const std::vector<vcg::Point3d> ownPts = gs_parts::ResampleLoop(ownSeed.loop, 0.25 * h);
+                            const std::vector<vcg::Point3d> finPts = gs_parts::ResampleLoop(loop, 0.25 * h);
+                            auto row = [&](size_t ci, const std::string &stage, bool chosen, const std::vector<vcg::Point3d> &pl,
+                                           const gs_parts::Score &ts, const std::string &rest) {
+                                oracle << en << ',' << id << ',' << md.category << ',' << p.index << ',' << (side > 0 ? "inside" : "outside") << ','
+                                       << ring << ',' << int(sc.Success()) << ',' << ci << ',' << stage << ',' << int(chosen) << ','
+                                       << int(ts.Success()) << ',' << ts.capture << ',' << ts.coverage << ','
+                                       << gs_parts::LoopLength(pl) / h << ',' << rest << '\n';
+                            };
+                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,");
+                            bool anyOk = false;
+                            std::vector<char> in;
+                            // salience's width factor (d_part / d_body)^widthExponent, the shape
+                            // diameters read in one region round all the candidates (Choose's
+                            // radius about the longest), h the snake's unit as in Choose
+                            std::unique_ptr<vcg::tri::ShapeDiameter<CMeshO>::Region> sdf;
+                            if (!uniq.empty() && vlp.salience.widthExponent > 0) {
+                                vcg::Point3d c0(0, 0, 0);
+                                double Lmax = 0, far = 0;
+                                size_t nc = 0;
+                                for (const Candidate &c : uniq) {
+                                    Lmax = std::max(Lmax, VL::LengthOf(md.mesh, c.loop));
+                                    for (int v : c.loop) c0 += vcg::Point3d::Construct(md.mesh.vert[v].cP()), ++nc;
+                                }
+                                c0 /= double(nc);
+                                for (const Candidate &c : uniq)
+                                    for (int v : c.loop) far = std::max(far, vcg::Distance(c0, vcg::Point3d::Construct(md.mesh.vert[v].cP())));
+                                const auto &sp = vlp.salience;
+                                sdf.reset(new vcg::tri::ShapeDiameter<CMeshO>::Region(
+                                    md.mesh, uniq[0].loop, c0, far + sp.widthRadius * Lmax + sp.widthReach * s.LengthScale(), sp.sdf));
+                            }
+                            for (size_t ci = 0; ci < uniq.size(); ++ci) {
+                                const std::vector<int> &l = uniq[ci].loop;
+                                std::vector<vcg::Point3d> pl;
+                                for (int v : l) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP()));
+                                const gs_parts::Score ts = gs_parts::Measure(pl, p, h, h);
+                                const std::vector<vcg::Point3d> cp = gs_parts::ResampleLoop(pl, 0.25 * h);
+                                bool chosen = replaced; // the final loop lies on it and it on the final loop
+                                for (const auto &x : pl) chosen = chosen && gs_parts::DistToLoop(x, loop) < 1e-3 * h;
+                                for (const auto &x : finPts) chosen = chosen && gs_parts::DistToLoop(x, pl) < 1e-3 * h;
+                                anyOk = anyOk || ts.Success();
+                                double e, len, c;
+                                VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c);
+                                const double cpl = (e + vlp.valley.lambda * len + vlp.valley.concavityWeight * c) / len;
+                                const double A = SideArea(md.mesh, l, rep, in);
+                                const double width = sdf ? std::pow(sdf->SideRatio(l, [&](int v) { return in[v] == 1; },
+                                                                                    vlp.salience.widthReach * s.LengthScale(),
+                                                                                    vlp.salience.widthSamples),
+                                                                     vlp.salience.widthExponent)
+                                                          : 1.0;
+                                double dOwn = 0, agree = 0;
+                                for (const auto &x : pl) dOwn += gs_parts::DistToLoop(x, ownSeed.loop) / h / pl.size();
+                                for (const auto &x : ownPts) agree += (gs_parts::DistToLoop(x, cp) <= h) / double(ownPts.size());
+                                vcg::Plane3d pln;
+                                vcg::FitPlaneToPointSet(pl, pln);
+                                double rms = 0, turn = 0;
+                                for (size_t k = 0; k < pl.size(); ++k) {
+                                    rms += std::pow(vcg::SignedDistancePlanePoint(pln, pl[k]), 2) / pl.size();
+                                    const vcg::Point3d a = pl[k] - pl[(k + pl.size() - 1) % pl.size()], b = pl[(k + 1) % pl.size()] - pl[k];
+                                    turn += vcg::Angle(a, b) / pl.size();
+                                }
+                                // the energy on the loop and 1-2 edge hops off it on the part's and the body's side
+                                std::map<int, int> hop;
+                                for (int v : l) hop[v] = 0;
+                                std::vector<int> front = l;
+                                double eS[3] = {0, 0, 0}, nS[3] = {0, 0, 0};
+                                for (int v : l) eS[0] += surf->Energy()[v], nS[0] += 1;
+                                for (int d = 1; d <= 2; ++d) {
+                                    std::vector<int> nx;
+                                    for (int v : front)
+                                        for (vcg::face::VFIterator<CFaceO> vfi(&md.mesh.vert[v]); !vfi.End(); ++vfi)
+                                            for (int k = 0; k < 3; ++k) {
+                                                const int w = int(vcg::tri::Index(md.mesh, vfi.F()->V(k)));
+                                                if (hop.count(w)) continue;
+                                                hop[w] = d, nx.push_back(w);
+                                                const int si = in[w] == 1 ? 1 : 2;
+                                                eS[si] += surf->Energy()[w], nS[si] += 1;
+                                            }
+                                    front = nx;
+                                }
+                                char rest[512];
+                                std::snprintf(rest, sizeof rest, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f", cpl,
+                                              e / len, c / len, A / total, A > 0 ? cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
+                                              A > 0 ? width * cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
+                                              dOwn, agree, std::sqrt(rms) / h, turn, eS[0] / nS[0], eS[1] / std::max(1.0, nS[1]),
+                                              eS[2] / std::max(1.0, nS[2]));
+                                row(ci + 1, uniq[ci].stage, chosen, pl, ts, rest);
+                            }
+                            for (const std::string &k : {md.category, std::string("ALL")}) {
+                                Tally &t = oracleTally[en + " " + k];
+                                ++t.n, t.ok += sc.Success(), t.points += !sc.Success() && anyOk;
+                            }
+                            oracle.flush();
+                        }
                         if (std::getenv("GS_PARTS_WHERE")) {
                             // where the loop ends: its samples' signed ring off the boundary
                             // (+ on the part), from the nearest vertex
@@ -442,6 +620,9 @@ int main(int argc, char **argv)
         for (auto &c : e.second)
             std::fprintf(stderr, "%-10s %-10s %6d %7.0f%% %8d\n", e.first.c_str(), c.first.c_str(), c.second.n,
                          100.0 * c.second.ok / std::max(1, c.second.n), c.second.points);
+    for (auto &c : oracleTally)
+        std::fprintf(stderr, "oracle %-14s %6d %8d ok, %d failed with a successful candidate: ceiling %d\n", c.first.c_str(),
+                     c.second.n, c.second.ok, c.second.points, c.second.ok + c.second.points);
     if (people.is_open())
         std::fprintf(stderr, "people     ALL        %6d %7.0f%% (each person's cut against the others')\n", peopleAll.n,
                      100.0 * peopleAll.ok / std::max(1, peopleAll.n));

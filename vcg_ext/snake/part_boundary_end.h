@@ -91,6 +91,7 @@ public:
         if (seeded && seeded->loop.size() >= 3 && par.seededShrink > 0 &&
             (VL::PolyLength(own.loop) < par.seededShrink * VL::PolyLength(seeded->loop) || vl.empty())) {
             double ref2 = -1, cost2 = 0;
+            VL::Record(par.valley, "seeded", {});
             std::vector<int> v2 = FinishFrom(m, seeded->loop, seeded->faces, energy, h, par, ref2, cost2);
             // taken when it is a deeper valley per length (both priced with one concavity
             // reference): a seeded loop far out on a featureless body does not pull a loop
@@ -98,7 +99,7 @@ public:
             const double r = ref >= 0 ? ref : ref2;
             // no band round the seeded loop holds a ring either (it covers a short part's tip):
             // from the seeds' ring towards the body (session 27)
-            if (v2.empty()) v2 = TowardBody(m, *seeded, energy, h, par, r);
+            if (v2.empty()) VL::Record(par.valley, "toward", {}), v2 = TowardBody(m, *seeded, energy, h, par, r);
             if (!v2.empty() &&
                 (vl.empty() || VL::PerLength(m, v2, energy, r, par.valley) < VL::PerLength(m, vl, energy, r, par.valley)))
                 vl = v2;
@@ -116,6 +117,7 @@ public:
     {
         Param par = parIn; // its band narrowed below, for the descent and salience's candidates too
         std::vector<int> vl = VL::FindAt(m, loop, faces, energy, h, par.valley, ref, cost);
+        VL::Record(par.valley, "band", vl);
         const double len0 = VL::PolyLength(loop);
         // a band that covers a short part's tip is no ring round it (its cheapest "loop" circles
         // the tip's middle): narrower bands, down to 1 unit, until one is (issue 33, session 24)
@@ -123,6 +125,7 @@ public:
             par.valley.bandWidth *= kNarrow;
             ref = -1;
             vl = VL::FindAt(m, loop, faces, energy, h, par.valley, ref, cost);
+            VL::Record(par.valley, "band", vl);
         }
         if (vl.size() < 3 || !(VL::LengthOf(m, vl) > 0.5 * len0)) return {};
         vl = VL::Descend(m, vl, cost, energy, h, par.valley, ref, 0.5 * len0);
@@ -153,9 +156,12 @@ public:
             if (narrow) {
                 typename VL::Param pn = par.valley;
                 pn.bandWidth = par.salience.profileBand;
-                return VL::FindAt(m, guide, guideFaces, energy, h, pn, r, c);
+                std::vector<int> cand = VL::FindAt(m, guide, guideFaces, energy, h, pn, r, c);
+                VL::Record(par.valley, "profile", cand);
+                return cand;
             }
             std::vector<int> cand = VL::FindAt(m, guide, guideFaces, energy, h, par.valley, r, c);
+            VL::Record(par.valley, "salience", cand);
             if (cand.size() >= 3) cand = VL::Descend(m, cand, c, energy, h, par.valley, ref, minLen);
             return cand;
         };
@@ -175,6 +181,7 @@ public:
         pn.bandWidth = kHug;
         double r = ref, c = 0;
         const std::vector<int> ring = VL::FindAt(m, seeded.loop, seeded.faces, energy, h, pn, r, c);
+        VL::Record(par.valley, "band", ring);
         if (ring.size() < 3 || !(VL::LengthOf(m, ring) > 0.5 * VL::PolyLength(seeded.loop))) return {};
         double len;
         const double cost = VL::Cost(m, ring, energy, ref, par.valley, len); // priced as the candidates are

@@ -83,7 +83,18 @@ public:
         /// 20 bands 143 (6 loops gained, none lost); accepting by total cost alone 142 (8
         /// gained, 3 lost: bird wing loops slid up the tapering wing, same ground, shorter).
         int iterations = 8;
+        /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
+        /// Run's end finds and the stage that found it ("band", "descent", "salience",
+        /// "profile"); an empty loop marks where the searches from the seeded loop ("seeded")
+        /// and TowardBody ("toward") begin. Empty: nothing is recorded, nothing changes.
+        std::function<void(const char *, const std::vector<int> &)> record;
     };
+
+    /// Passes loop l found at `stage` to par.record, when it is set.
+    static void Record(const Param &par, const char *stage, const std::vector<int> &l)
+    {
+        if (par.record) par.record(stage, l);
+    }
 
     /// An edge loop's cost under FindAt's pricing with concavity reference ref (CostParts weighed
     /// by par: E + lambda length + concavityWeight (1 - c), each summed over length), and its length.
@@ -292,6 +303,7 @@ public:
             }
             double c2 = 0, r = ref;
             const std::vector<int> next = FindAt(m, pl, pf, energy, h, par, r, c2);
+            Record(par, "descent", next);
             // a step must make the loop cheaper per length too (deeper, more concave): by its
             // total cost alone a loop on a part that tapers slides to a shorter ring of the same
             // ground, off the valley at the part's base

@@ -1,0 +1,90 @@
+#!/usr/bin/env python3
+"""The Run's end's choice against every loop it found (issue 33, docs/method.md session 28).
+
+    GS_PARTS_ORACLE=oracle.csv gs_parts --energy part --rings 2,3 --out parts.csv
+    python3 bench/eval/parts_oracle.py oracle.csv
+
+Prints the ceiling of any choice among the recorded edge loops (per category, and the stages
+that found the successful loops on the failed rows), the successes that have a failing loop
+as cheap per length or as salient nearby, and replays selection rules on the recorded loops
+(the choice only: the loops are those the pipeline generates now).
+"""
+import collections
+import csv
+import sys
+
+NUM = ['capture', 'coverage', 'L_h', 'cpl', 'e_pl', 'c_pl', 'area_share', 'sal', 'sal_w', 'd_own_h', 'own_agree',
+       'plane_h', 'turn', 'e_loop', 'e_part', 'e_body']
+
+
+def load(path):
+    rows = collections.OrderedDict()
+    for r in csv.DictReader(open(path)):
+        if r['energy'] != 'part':
+            continue
+        for f in NUM:
+            r[f] = float(r[f]) if r[f] != '' else float('nan')
+        r['success'], r['chosen'] = r['success'] == '1', r['chosen'] == '1'
+        rows.setdefault((r['id'], r['category'], r['part'], r['side'], r['ring']), []).append(r)
+    return rows
+
+
+def name(k):
+    return f'{k[1]} {k[0]} part {k[2]} {k[3]} {k[4]}'
+
+
+def replay(rows, pick, label):
+    """pick(edge loops, chosen) -> the loop taken; prints the total and the rows gained and lost."""
+    ok, plus, minus = 0, [], []
+    for k, v in rows.items():
+        ch = next(c for c in v if c['chosen'])
+        c = pick(v[1:], ch) if ch['stage'] != 'snake' and len(v) > 1 else ch
+        ok += c['success']
+        if c['success'] != ch['success']:
+            (plus if c['success'] else minus).append(k)
+    print(f'{label}: {ok}/{len(rows)} (+{len(plus)} -{len(minus)})' +
+          ''.join(f'\n   {"+" if k in plus else "-"} {name(k)}' for k in plus + minus if len(plus + minus) <= 12))
+
+
+def main():
+    rows = load(sys.argv[1])
+    cat = collections.defaultdict(lambda: [0, 0, 0, 0])  # rows, ok, + an edge loop, + the snake's loop too
+    stages = collections.Counter()
+    for k, v in rows.items():
+        ch = next(c for c in v if c['chosen'])
+        good = [c for c in v[1:] if c['success']]
+        for key in (k[1], 'ALL'):
+            t = cat[key]
+            t[0] += 1
+            t[1] += ch['success']
+            t[2] += not ch['success'] and bool(good)
+            t[3] += not ch['success'] and (bool(good) or v[0]['success'])
+        if not ch['success'] and good:
+            stages.update({s.split('+')[0] for c in good for s in c['stage'].split('|')})
+            b = min(good, key=lambda c: c['cpl'])
+            print(f'{name(k)}: chosen {ch["stage"].split("|")[0]} {ch["capture"]:.2f}/{ch["coverage"]:.2f}, '
+                  f'successful {b["stage"].split("|")[0]}: cost per length x{b["cpl"] / ch["cpl"]:.3f}, '
+                  f'salience x{b["sal"] / ch["sal"]:.3f} (with width x{b["sal_w"] / ch["sal_w"]:.3f}), planarity x{b["plane_h"] / ch["plane_h"]:.2f}')
+    print('category   rows  ok  ceiling  with the snake\'s own loop')
+    for c, t in sorted(cat.items()):
+        print(f'{c:10s} {t[0]:4d} {t[1]:3d} {t[1] + t[2]:6d} {t[1] + t[3]:8d}')
+    print('stages with a successful loop on failed rows:', dict(stages))
+    for tol in (1.0, 1.05, 1.1):
+        n = sum(1 for v in rows.values() for ch in [next(c for c in v if c['chosen'])]
+                if ch['success'] and ch['stage'] != 'snake' and any(
+                    not c['success'] and (c['cpl'] <= tol * ch['cpl'] or 0 < c['sal_w'] <= tol * ch['sal_w']) for c in v[1:]))
+        print(f'successes with a failing loop within {tol}x the chosen one\'s cost per length or salience: {n}')
+    replay(rows, lambda e, ch: ch, 'chosen')
+    replay(rows, lambda e, ch: min(e, key=lambda c: c['cpl']), 'cheapest per length')
+    replay(rows, lambda e, ch: min(e, key=lambda c: c['sal'] if c['sal'] > 0 else 1e9), 'most salient (no width)')
+    replay(rows, lambda e, ch: min(e, key=lambda c: c['sal_w'] if c['sal_w'] > 0 else 1e9), 'most salient (width)')
+    for t, p in ((1.05, 0.5), (1.3, 0.5), (1.3, 0.6), (1.3, 0.7)):
+        def flatter(e, ch, t=t, p=p):
+            cs = [c for c in e if c is not ch and c['cpl'] <= t * ch['cpl'] and c['plane_h'] <= p * ch['plane_h']
+                  and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']]
+            return min(cs, key=lambda c: c['cpl']) if cs else ch
+        replay(rows, flatter, f'flatter x{p}, at most x{t} per length')
+
+
+if __name__ == '__main__':
+    main()
