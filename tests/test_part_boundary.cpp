@@ -1341,3 +1341,82 @@ TEST(PartBoundaryLoop, SettlesOnTheBumpGraded20xWithSlivers)
 {
     RoughSettles({"bump", Bump, BumpRim(), {true, -1, true, 0}, 2.0, 3.5});
 }
+
+// Session 28 exploration (docs/method.md, "Session 28: why graded noisy Runs end at their
+// limit"): the bump graded 20x across its rim with slivers (and noise of 0.4 local edges, at most
+// 3 % of the radius), one Run per operation: the largest move (in the snake's unit and in the
+// moving sample's local edge), samples above the convergence tolerance, mean energy, the
+// oscillation test's figures (net move over 6 and 20 operations, way travelled over 6), the mean
+// offset from the rim and the samples' step trust. Run with --gtest_also_run_disabled_tests;
+// GS_TRACE_STYLE=bump (no noise), GS_TRACE_K=<seeds' offset in h, default -3: outside>,
+// GS_TRACE_ALL=1 (every operation).
+TEST(PartBoundaryRough, DISABLED_TraceGraded)
+{
+    const char *which = std::getenv("GS_TRACE_STYLE"); // "bumpnoise" (default) or "bump"
+    const bool noise = !which || std::string(which) == "bumpnoise";
+    const double kk = std::getenv("GS_TRACE_K") ? std::atof(std::getenv("GS_TRACE_K")) : -3.0;
+    CMeshO m;
+    const double rim = BumpRim();
+    MakeRoughRevolved(m, Bump, rim, RoughStyle{true, -1, true, noise ? 0.4 : 0.0}, 11);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const double h = surf->MeanEdge();
+    Snake s(surf);
+    s.InitFromSeeds(RingSeeds(m, Bump, rim - kk * h / Bump(rim)), true);
+    auto localEdge = [&](int f) {
+        const CFaceO &F = m.face[f];
+        return (vcg::Distance(F.cP(0), F.cP(1)) + vcg::Distance(F.cP(1), F.cP(2)) + vcg::Distance(F.cP(2), F.cP(0))) / 3;
+    };
+    std::vector<P3> prev;
+    for (const auto &x : s.Samples()) prev.push_back(x.p.Pd(m));
+    std::vector<std::vector<P3>> hist;
+    std::vector<double> mm;
+    auto offH = [&](const P3 &x) { return (std::acos(std::max(-1.0, std::min(1.0, x[2] / x.Norm()))) - rim) * Bump(rim) / h; };
+    std::printf("h %.4f unit %.4f samples %zu\n", h, s.LengthScale(), s.Samples().size());
+    for (int op = 0; op < 400; ++op) {
+        s.Step();
+        std::vector<P3> cur;
+        for (const auto &x : s.Samples()) cur.push_back(x.p.Pd(m));
+        double maxLoc = 0, e = 0, lenLo = 1e9, lenHi = 0;
+        int arg = -1, over = 0;
+        std::vector<double> mv(cur.size(), 0);
+        if (cur.size() == prev.size())
+            for (size_t i = 0; i < cur.size(); ++i) {
+                const double le = localEdge(s.Samples()[i].p.face);
+                const double d = (cur[i] - prev[i]).Norm() / le;
+                mv[i] = (cur[i] - prev[i]).Norm() / s.LengthScale();
+                if (mv[i] > 0.02) ++over;
+                lenLo = std::min(lenLo, le), lenHi = std::max(lenHi, le);
+                if (d > maxLoc) maxLoc = d, arg = int(i);
+            }
+        for (const auto &x : s.Samples()) e += surf->EnergyAt(0, x.p) / s.Samples().size();
+        const double L = gs_parts::LoopLength(cur);
+        hist.push_back(cur), mm.push_back(s.Stats().lastMaxMove);
+        double net6 = -1, tr6 = 0, net20 = -1, offMean = 0, offArg = arg >= 0 ? offH(cur[arg]) : 0;
+        if (hist.size() > 6) {
+            net6 = SnakeRunControl<CMeshO>::CurveMove(hist[hist.size() - 7], cur, true) / s.LengthScale();
+            for (size_t j = mm.size() - 6; j < mm.size(); ++j) tr6 += mm[j];
+        }
+        if (hist.size() > 20) net20 = SnakeRunControl<CMeshO>::CurveMove(hist[hist.size() - 21], cur, true) / s.LengthScale();
+        for (const P3 &x : cur) offMean += offH(x) / cur.size();
+        if (std::getenv("GS_TRACE_SAMPLE")) {
+            const int i = std::atoi(std::getenv("GS_TRACE_SAMPLE"));
+            std::printf("  sample %d off %.3f h move %.4f units local edge %.4f E %.3f\n", i, offH(cur[i]), mv[i],
+                        localEdge(s.Samples()[i].p.face), surf->EnergyAt(0, s.Samples()[i].p));
+        }
+        if (op < 40 || op % 20 == 0 || std::getenv("GS_TRACE_ALL"))
+        {
+            double tmean = 0, tmin = 1;
+            for (const auto &x : s.Samples()) tmean += x.trust / s.Samples().size(), tmin = std::min(tmin, x.trust);
+            std::printf("   net6 %.3f travelled6 %.3f net20 %.3f off mean %+.2f h, argmax off %+.2f h trust mean %.3f min %.3f argmax trust %.3f\n", net6, tr6, net20,
+                        offMean, offArg, tmean, tmin, arg >= 0 ? s.Samples()[arg].trust : -1.0);
+        }
+        if (op < 40 || op % 20 == 0 || std::getenv("GS_TRACE_ALL"))
+            std::printf("op %3d lvl %d n %zu maxMove(unit) %.4f maxMove(local,raw) %.4f at %d (local edge %.4f) over0.02 %d "
+                        "E %.4f len %.4f stop %s local edges %.4f-%.4f\n",
+                        op, s.EnergyStage(), cur.size(), s.Stats().lastMaxMove, maxLoc, arg,
+                        arg >= 0 ? localEdge(s.Samples()[arg].p.face) : 0.0, over, e, L, SnakeStopKey(s.Stats().stop),
+                        lenLo, lenHi);
+        prev = cur;
+        if (s.Stats().converged || s.Stats().stopped) break;
+    }
+}
