@@ -1349,7 +1349,8 @@ TEST(PartBoundaryLoop, SettlesOnTheBumpGraded20xWithSlivers)
 // oscillation test's figures (net move over 6 and 20 operations, way travelled over 6), the mean
 // offset from the rim and the samples' step trust. Run with --gtest_also_run_disabled_tests;
 // GS_TRACE_STYLE=bump (no noise), GS_TRACE_K=<seeds' offset in h, default -3: outside>,
-// GS_TRACE_ALL=1 (every operation).
+// GS_TRACE_ALL=1 (every operation), GS_TRACE_NET=1 (lines "NET": the quantiles of the samples'
+// own net moves over 6 operations, in units).
 TEST(PartBoundaryRough, DISABLED_TraceGraded)
 {
     const char *which = std::getenv("GS_TRACE_STYLE"); // "bumpnoise" (default) or "bump"
@@ -1398,6 +1399,28 @@ TEST(PartBoundaryRough, DISABLED_TraceGraded)
         }
         if (hist.size() > 20) net20 = SnakeRunControl<CMeshO>::CurveMove(hist[hist.size() - 21], cur, true) / s.LengthScale();
         for (const P3 &x : cur) offMean += offH(x) / cur.size();
+        if (std::getenv("GS_TRACE_NET") && hist.size() > 6) { // per-sample net move over 6 operations
+            const auto &a = hist[hist.size() - 7];
+            std::vector<double> d;
+            const int n = int(cur.size());
+            for (int i = 0; i < n && int(a.size()) == n; ++i) {
+                double best = (cur[i] - a[i]).Norm();
+                for (int j = i - 2; j <= i + 1; ++j) {
+                    const int j0 = (j + n) % n, j1 = (j + 1 + n) % n;
+                    const P3 dd = a[j1] - a[j0];
+                    const double L2 = dd.SquaredNorm();
+                    const double t = L2 > 0 ? std::max(0.0, std::min(1.0, ((cur[i] - a[j0]) * dd) / L2)) : 0.0;
+                    best = std::min(best, (cur[i] - (a[j0] + dd * t)).Norm());
+                }
+                d.push_back(best / s.LengthScale());
+            }
+            std::sort(d.begin(), d.end());
+            double mean = 0;
+            for (double v : d) mean += v / d.size();
+            if (!d.empty())
+                std::printf("NET op %d mean %.4f median %.4f q75 %.4f q90 %.4f max %.4f\n", op, mean, d[d.size() / 2],
+                            d[d.size() * 3 / 4], d[d.size() * 9 / 10], d.back());
+        }
         if (std::getenv("GS_TRACE_SAMPLE")) {
             const int i = std::atoi(std::getenv("GS_TRACE_SAMPLE"));
             std::printf("  sample %d off %.3f h move %.4f units local edge %.4f E %.3f\n", i, offH(cur[i]), mv[i],
