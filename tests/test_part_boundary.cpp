@@ -16,6 +16,7 @@
 
 #include <part_cases.h>
 #include <revolved_profile.h>
+#include <vcg_ext/snake/loop_bend.h>
 #include <vcg_ext/snake/part_boundary_end.h>
 #include <snake_test_util.h>
 #include <vcg_ext/energy/energy_source.h>
@@ -891,6 +892,61 @@ TEST(PartProfile, BringsALoopDownALimbToWhereTheBodyOpens)
     EXPECT_LT(maxOff(with, 0.0), 1e-6); // every vertex on the limb's last ring
     ASSERT_EQ(without.size(), size_t(kLimbN));
     EXPECT_LT(maxOff(without, 3.0), 1e-6); // the mechanism: salience and the descent keep the dimple
+}
+
+// A loop one ring pair up a limb where people cut at its base (issue 33, session 28; hand 181
+// part 0 and octopus 121 part 2 seeded inside): the energy is 0.5 everywhere but on the limb's
+// ring 2 steps up (0.45, where the loop settled) and on its last ring before the body opens at
+// 45 degrees (0.47). With the concavity and width terms off, the ring up the limb is the cheapest
+// by every price of the Run's end (in total and per length, 1.45 against 1.47: the descent, part
+// salience and the width profile keep it). Across that ring the limb is straight (bend 0); across
+// the base ring the surface bends inwards (the minima rule's direction: about 0.76 h, measured 2
+// units to each side), so the loop round the level loop 3 units towards the body replaces it
+// (PartBoundaryEnd::Param::crossBend). Without the rule the loop stays 2 rings up.
+TEST(PartBoundaryEnd, EndsWhereTheSurfaceBendsInwardsAcrossTheLoopNotUpAStraightLimb)
+{
+    CMeshO m;
+    const std::vector<int> ring = MakeLimbOnBody(m);
+    ASSERT_GE(ring[0], 0);
+    ASSERT_GE(ring[2], 0);
+    for (auto &v : m.vert) v.Q() = v.cP()[2] > 1.7 - 1e-6 ? 1.0 : (v.cP()[2] < -3 + 1e-6 ? 0.0 : 0.5); // the far ends fix the range
+    for (int k = 0; k < kLimbN; ++k) m.vert[ring[2] + k].Q() = 0.45, m.vert[ring[0] + k].Q() = 0.47;
+    auto surf = std::make_shared<Surface>(m, 0); // the energy: the vertices' quality, mapped to [0, 1]
+    ASSERT_NEAR(surf->Energy()[ring[2]], 0.45, 1e-3);
+    ASSERT_NEAR(surf->Energy()[ring[0]], 0.47, 1e-3);
+    std::vector<int> seeds;
+    for (int k = 0; k < kLimbN; k += 3) seeds.push_back(ring[2] + k);
+    PartBoundaryEnd<CMeshO>::Param par;
+    par.valley.concavityWeight = 0;        // the crease at the limb's base would decide alone
+    par.salience.widthExponent = 0; // as would the width across it
+    // on this grid (rings 1.003 units apart) the level loop 2 units down is ring 1, whose band
+    // still holds the loop: steps of 1.5 units put the second level loop on the base ring
+    par.crossStep = 1.5;
+    auto endAt = [&](const PartBoundaryEnd<CMeshO>::Param &p, double &zMin, double &zMax) {
+        Snake s(surf);
+        s.InitFromSeeds(seeds, true);
+        s.EndRun(SnakeStop::Converged); // a Run that converged on the seeded ring
+        EXPECT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, p));
+        zMin = 1e9, zMax = -1e9;
+        for (const P3 &x : s.PolylinePositions()) zMin = std::min(zMin, x[2]), zMax = std::max(zMax, x[2]);
+    };
+    double zMin, zMax;
+    endAt(par, zMin, zMax);
+    std::printf("limb on a body, seeded 2 rings up: the Run ends at z %.3f..%.3f\n", zMin, zMax);
+    EXPECT_LT(std::max(std::fabs(zMin), std::fabs(zMax)), 1e-4); // the limb's base ring
+    // the mechanism: without the bend across, every price keeps the ring up the limb
+    PartBoundaryEnd<CMeshO>::Param off = par;
+    off.crossBend = 0;
+    endAt(off, zMin, zMax);
+    std::printf("  without the bend across: z %.3f..%.3f\n", zMin, zMax);
+    EXPECT_NEAR(zMin, 2 * kLimbStep, 1e-4);
+    EXPECT_NEAR(zMax, 2 * kLimbStep, 1e-4);
+    // the bend itself: 0 across the straight limb, inwards across its base
+    std::vector<int> r0, r2;
+    for (int k = 0; k < kLimbN; ++k) r0.push_back(ring[0] + k), r2.push_back(ring[2] + k);
+    const double h = kLimbStep;
+    EXPECT_NEAR(LoopBend<CMeshO>::Bend(m, r2, h, 2.0), 0.0, 1e-3);
+    EXPECT_GT(LoopBend<CMeshO>::Bend(m, r0, h, 2.0), 0.5);
 }
 
 // The profile's level-set lengths for all levels in one pass (session 27) are ContourLength's at

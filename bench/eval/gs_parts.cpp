@@ -12,6 +12,10 @@
 //   profileBand; --profile-slope 0 turns it off)
 //            [--salience-width E] [--salience-width-reach R] [--salience-width-radius F]
 //            [--salience-width-samples N] [--sdf-rays N]
+//            [--cross-bend F] [--cross-gain G] [--cross-price P] [--cross-steps N] [--cross-step S]
+//            [--cross-dist D] [--cross-dirs 1|2|3]
+//   (PartBoundaryEnd::Param's crossBend ... crossDirs, the bend across the loop at the Run's end,
+//   session 28; --cross-bend 0 turns it off)
 //   (--salience-width E: PartSalience::Param::widthExponent, the shape-diameter ratio's
 //   exponent, 0 = off; the others its widthReach, widthRadius, widthSamples and sdf.rays)
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
@@ -171,6 +175,13 @@ int main(int argc, char **argv)
         else if (a == "--valley-lambda") vlp.valley.lambda = std::stod(next());
         else if (a == "--valley-cscale") vlp.valley.concavityScale = std::stod(next());
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
+        else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
+        else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
+        else if (a == "--cross-steps") vlp.crossSteps = std::stoi(next());
+        else if (a == "--cross-step") vlp.crossStep = std::stod(next());
+        else if (a == "--cross-dist") vlp.crossDist = std::stod(next());
+        else if (a == "--cross-dirs") vlp.crossDirs = std::stoi(next());
+        else if (a == "--cross-gain") vlp.crossGain = std::stod(next());
         else if (a == "--salience") vlp.salience.exponent = std::stod(next());
         else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
         else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());

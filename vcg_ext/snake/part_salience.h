@@ -384,7 +384,6 @@ public:
         }
     }
 
-private:
     /// The boundary of the faces whose vertices are all off the body or nearer than d to the
     /// loop (the level d of the distance into the body), ordered, or empty when it is not one
     /// simple loop. Only faces round the level are visited (VF adjacency).
@@ -435,6 +434,7 @@ private:
         return out.size() == next.size() ? out : std::vector<int>();
     }
 
+private:
     static int index(const MeshType &m, const typename MeshType::VertexType *v) { return int(v - &m.vert[0]); }
 
     /// v's neighbours in the order a pass over the faces by index lists them (each edge of each
