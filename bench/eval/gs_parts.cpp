@@ -43,7 +43,11 @@
 //   record: bands, descent steps, salience's and the profile's candidates, round the snake's
 //   loop, the seeded one and TowardBody's ring), one row each with its stage, whether it was
 //   chosen, capture/coverage, cost per length and salience score (without and with the width term); a
-//   summary on stderr: how many failed loops had a successful candidate (the choice's ceiling).)
+//   summary on stderr: how many failed loops had a successful candidate (the choice's ceiling);
+//   session 29's support columns: times found, mutual captures among the row's loops,
+//   GS_PARTS_SUPPORT=R,S sets the capture's radius in h and share (1,0.8). With GS_PARTS_MODE=1
+//   too, a MODE line per loop: the valley loop searched again from perturbed guides and
+//   settings, whether the loop found most often succeeds, against the chosen one.)
 //   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
 //   criterion if their own cut were scored like a loop against the other people's cuts: the
 //   agreement among people that the loops' figures can be read against.)
@@ -224,7 +228,7 @@ int main(int argc, char **argv)
     if (oracleOut) {
         oracle.open(oracleOut);
         oracle << "energy,id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
-                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body\n";
+                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body,mult,sup,sup_m,sup_soft,sup_own,sup_seed\n";
     }
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
     const auto t0 = std::chrono::steady_clock::now();
@@ -369,6 +373,32 @@ int main(int argc, char **argv)
                                 else if (uniq[it->second].stage.find(c.stage) == std::string::npos) uniq[it->second].stage += "|" + c.stage;
                             }
                             const std::vector<vcg::Point3d> ownPts = gs_parts::ResampleLoop(ownSeed.loop, 0.25 * h);
+                            // support (session 29): how many of the other candidates lie on each one and it on them
+                            // (mutual capture: the share of either's samples within 1 h of the other above 0.8)
+                            std::vector<int> mult(uniq.size(), 0);
+                            for (const Candidate &c : cands) {
+                                std::vector<int> k = c.loop;
+                                std::sort(k.begin(), k.end());
+                                ++mult[seen[k]];
+                            }
+                            std::vector<std::vector<vcg::Point3d>> up;
+                            for (const Candidate &c : uniq) {
+                                std::vector<vcg::Point3d> q;
+                                for (int v : c.loop) q.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP()));
+                                up.push_back(gs_parts::ResampleLoop(q, 0.25 * h));
+                            }
+                            const std::vector<vcg::Point3d> seedPts = gs_parts::ResampleLoop(seeded.loop, 0.25 * h);
+                            double supR = 1.0, supShare = 0.8; // GS_PARTS_SUPPORT=R,SHARE (h, share): the mutual capture's
+                            if (const char *e = std::getenv("GS_PARTS_SUPPORT")) std::sscanf(e, "%lf,%lf", &supR, &supShare);
+                            auto share = [&](const std::vector<vcg::Point3d> &a, const std::vector<vcg::Point3d> &b) {
+                                double n = 0;
+                                for (const auto &x : a) n += gs_parts::DistToLoop(x, b) <= supR * h;
+                                return a.empty() ? 0.0 : n / a.size();
+                            };
+                            std::vector<std::vector<double>> sh(uniq.size(), std::vector<double>(uniq.size(), 1.0));
+                            for (size_t i = 0; i < uniq.size(); ++i)
+                                for (size_t j = 0; j < uniq.size(); ++j)
+                                    if (i != j) sh[i][j] = share(up[i], up[j]);
                             const std::vector<vcg::Point3d> finPts = gs_parts::ResampleLoop(loop, 0.25 * h);
                             auto row = [&](size_t ci, const std::string &stage, bool chosen, const std::vector<vcg::Point3d> &pl,
                                            const gs_parts::Score &ts, const std::string &rest) {
@@ -377,8 +407,9 @@ int main(int argc, char **argv)
                                        << int(ts.Success()) << ',' << ts.capture << ',' << ts.coverage << ','
                                        << gs_parts::LoopLength(pl) / h << ',' << rest << '\n';
                             };
-                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,");
+                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,,,,,,,");
                             bool anyOk = false;
+                            int chosenIdx = -1;
                             std::vector<char> in;
                             // salience's width factor (d_part / d_body)^widthExponent, the shape
                             // diameters read in one region round all the candidates (Choose's
@@ -408,6 +439,7 @@ int main(int argc, char **argv)
                                 bool chosen = replaced; // the final loop lies on it and it on the final loop
                                 for (const auto &x : pl) chosen = chosen && gs_parts::DistToLoop(x, loop) < 1e-3 * h;
                                 for (const auto &x : finPts) chosen = chosen && gs_parts::DistToLoop(x, pl) < 1e-3 * h;
+                                if (chosen) chosenIdx = int(ci);
                                 anyOk = anyOk || ts.Success();
                                 double e, len, c;
                                 VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c);
@@ -448,13 +480,113 @@ int main(int argc, char **argv)
                                             }
                                     front = nx;
                                 }
-                                char rest[512];
-                                std::snprintf(rest, sizeof rest, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f", cpl,
+                                int sup = 0, supM = 0;
+                                double soft = 0;
+                                for (size_t j = 0; j < uniq.size(); ++j) {
+                                    if (j == ci) continue;
+                                    const bool mu = sh[ci][j] > supShare && sh[j][ci] > supShare;
+                                    sup += mu, supM += mu ? mult[j] : 0, soft += std::min(sh[ci][j], sh[j][ci]);
+                                }
+                                const int supOwn = share(up[ci], ownPts) > supShare && share(ownPts, up[ci]) > supShare;
+                                const int supSeed = share(up[ci], seedPts) > supShare && share(seedPts, up[ci]) > supShare;
+                                char rest[640];
+                                std::snprintf(rest, sizeof rest, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d,%d,%.3f,%d,%d", cpl,
                                               e / len, c / len, A / total, A > 0 ? cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
                                               A > 0 ? width * cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
                                               dOwn, agree, std::sqrt(rms) / h, turn, eS[0] / nS[0], eS[1] / std::max(1.0, nS[1]),
-                                              eS[2] / std::max(1.0, nS[2]));
+                                              eS[2] / std::max(1.0, nS[2]), mult[ci], sup, supM, soft, supOwn, supSeed);
                                 row(ci + 1, uniq[ci].stage, chosen, pl, ts, rest);
+                            }
+                            if (std::getenv("GS_PARTS_MODE")) {
+                                // session 29, a diagnostic: the valley loop searched again from perturbed
+                                // starts (the snake's loop, the chosen loop and its level loops 1-2 units
+                                // towards the body and the part; bands and concavity weights perturbed),
+                                // each descended; the loop found most often (ties: the cheapest per length)
+                                typedef PartSalience<CMeshO> PS;
+                                typedef LoopBend<CMeshO> LB;
+                                const double hs = s.LengthScale();
+                                typedef std::pair<std::vector<vcg::Point3d>, std::vector<int>> Guide;
+                                auto guideOf = [&](const std::vector<int> &l) {
+                                    Guide g;
+                                    for (int v : l) {
+                                        const CFaceO *f = md.mesh.vert[v].cVFp();
+                                        if (f) g.first.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP())), g.second.push_back(int(f - &md.mesh.face[0]));
+                                    }
+                                    return g;
+                                };
+                                std::vector<Guide> guides = {{ownSeed.loop, ownSeed.faces}};
+                                if (chosenIdx >= 0) {
+                                    const std::vector<int> &fin = uniq[chosenIdx].loop;
+                                    guides.push_back(guideOf(fin));
+                                    PS::Sides sd(md.mesh, fin);
+                                    const int body = LB::Body(sd);
+                                    for (int dir = 0; dir < 2 && body >= 0; ++dir) {
+                                        auto isSide = [&](int v) {
+                                            const int c = sd.Side(v);
+                                            return dir == 0 ? (c == body || c == -2) : (c >= 0 && c != body);
+                                        };
+                                        std::unordered_map<int, double> dist;
+                                        typedef std::pair<double, int> QE;
+                                        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+                                        for (int v : fin) dist[v] = 0, q.push({0, v});
+                                        while (!q.empty()) {
+                                            const QE e = q.top();
+                                            q.pop();
+                                            if (e.first > dist[e.second] || e.first > 3 * hs) continue;
+                                            PS::ForFaces(md.mesh, e.second, [&](const CFaceO *f, int z) {
+                                                for (int k = 1; k < 3; ++k) {
+                                                    const int b = int(f->cV((z + k) % 3) - &md.mesh.vert[0]);
+                                                    if (!isSide(b)) continue;
+                                                    const double l = vcg::Distance(md.mesh.vert[e.second].cP(), md.mesh.vert[b].cP());
+                                                    const auto it = dist.find(b);
+                                                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
+                                                }
+                                            });
+                                        }
+                                        for (int k = 1; k <= 2; ++k) {
+                                            Guide g = guideOf(PS::LevelLoop(md.mesh, isSide, dist, k * hs));
+                                            if (g.first.size() >= 3) guides.push_back(g);
+                                        }
+                                    }
+                                }
+                                std::map<std::vector<int>, int> count;
+                                std::map<std::vector<int>, std::vector<int>> repr;
+                                int nFound = 0;
+                                const double bws[6] = {1.5, 2, 2.5, 3, 2.5, 2.5}, cws[6] = {1, 1, 1, 1, 0.75, 1.25};
+                                for (const Guide &g : guides)
+                                    for (int pi = 0; pi < 6; ++pi) {
+                                        VL::Param q = vlp.valley;
+                                        q.record = nullptr;
+                                        q.bandWidth = bws[pi] / 2.5 * vlp.valley.bandWidth;
+                                        q.concavityWeight = cws[pi] * vlp.valley.concavityWeight;
+                                        double r = -1, c = 0;
+                                        std::vector<int> l = VL::FindAt(md.mesh, g.first, g.second, surf->Energy(), hs, q, r, c);
+                                        const double gl = VL::PolyLength(g.first);
+                                        if (l.size() < 3 || !(VL::LengthOf(md.mesh, l) > 0.5 * gl)) continue;
+                                        l = VL::Descend(md.mesh, l, c, surf->Energy(), hs, q, r, 0.5 * gl);
+                                        std::vector<int> k = l;
+                                        std::sort(k.begin(), k.end());
+                                        ++count[k], repr[k] = l, ++nFound;
+                                    }
+                                const std::vector<int> *mode = nullptr;
+                                int best = 0, chosenCount = 0;
+                                double bestP = 0;
+                                std::vector<int> chosenKey, modeKey;
+                                if (chosenIdx >= 0) chosenKey = uniq[chosenIdx].loop, std::sort(chosenKey.begin(), chosenKey.end());
+                                for (const auto &kv : count) {
+                                    const double pp = VL::PerLength(md.mesh, repr[kv.first], surf->Energy(), ref, vlp.valley);
+                                    if (kv.first == chosenKey) chosenCount = kv.second;
+                                    if (kv.second > best || (kv.second == best && pp < bestP)) best = kv.second, bestP = pp, mode = &repr[kv.first], modeKey = kv.first;
+                                }
+                                int modeOk = -1;
+                                if (mode) {
+                                    std::vector<vcg::Point3d> pl;
+                                    for (int v : *mode) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP()));
+                                    modeOk = gs_parts::Measure(pl, p, h, h).Success();
+                                }
+                                std::fprintf(stderr, "MODE %d %s %d %s %d chosen_ok=%d mode_ok=%d mode_n=%d chosen_n=%d found=%d distinct=%zu guides=%zu is_chosen=%d\n",
+                                             id, md.category.c_str(), p.index, side > 0 ? "inside" : "outside", ring, int(sc.Success()), modeOk, best,
+                                             chosenCount, nFound, count.size(), guides.size(), int(mode && modeKey == chosenKey));
                             }
                             for (const std::string &k : {md.category, std::string("ALL")}) {
                                 Tally &t = oracleTally[en + " " + k];

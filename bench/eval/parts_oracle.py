@@ -15,6 +15,9 @@ import sys
 
 NUM = ['capture', 'coverage', 'L_h', 'cpl', 'e_pl', 'c_pl', 'area_share', 'sal', 'sal_w', 'd_own_h', 'own_agree',
        'plane_h', 'turn', 'e_loop', 'e_part', 'e_body']
+# session 29's support columns (files recorded since): times found, mutual captures (count, weighted by
+# times found, soft: the sum of min(share either way)), and with the snake's and the seeded loop
+SUPPORT = ['mult', 'sup', 'sup_m', 'sup_soft', 'sup_own', 'sup_seed']
 
 
 def load(path):
@@ -22,8 +25,8 @@ def load(path):
     for r in csv.DictReader(open(path)):
         if r['energy'] != 'part':
             continue
-        for f in NUM:
-            r[f] = float(r[f]) if r[f] != '' else float('nan')
+        for f in NUM + SUPPORT:
+            r[f] = float(r[f]) if r.get(f, '') != '' else float('nan')
         r['success'], r['chosen'] = r['success'] == '1', r['chosen'] == '1'
         rows.setdefault((r['id'], r['category'], r['part'], r['side'], r['ring']), []).append(r)
     return rows
@@ -84,6 +87,22 @@ def main():
                   and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']]
             return min(cs, key=lambda c: c['cpl']) if cs else ch
         replay(rows, flatter, f'flatter x{p}, at most x{t} per length')
+    if not any(c['mult'] == c['mult'] for v in rows.values() for c in v[1:]):
+        return
+    # support (session 29, after Golovinskiy and Funkhouser's randomized cuts: cut where many cuts agree)
+    for lab, f in (('sup', lambda c: c['sup']), ('sup_m', lambda c: c['sup_m']), ('soft', lambda c: c['sup_soft']),
+                   ('sup+own+seed', lambda c: c['sup'] + c['sup_own'] + c['sup_seed']), ('times found', lambda c: c['mult'])):
+        replay(rows, lambda e, ch, f=f: min(e, key=lambda c: (-f(c), c['cpl'])), f'most support ({lab}), ties by cost per length')
+        for t in (1.01, 1.05, 1.1, 1.3):
+            def more(e, ch, f=f, t=t):
+                cs = [c for c in e if c['cpl'] <= t * ch['cpl'] and f(c) > f(ch) and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']]
+                return min(cs, key=lambda c: (-f(c), c['cpl'])) if cs else ch
+            replay(rows, more, f'  more support ({lab}) at most x{t} per length')
+        for t in (1.002, 1.005, 1.01, 1.02):
+            def tie(e, ch, f=f, t=t):
+                cs = [c for c in e if c['cpl'] <= t * ch['cpl'] and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']] + [ch]
+                return max(cs, key=lambda c: (f(c), c is ch, -c['cpl']))
+            replay(rows, tie, f'  near ties (x{t} per length) to the most support ({lab})')
 
 
 if __name__ == '__main__':
