@@ -13,7 +13,7 @@
 //            [--salience-width E] [--salience-width-reach R] [--salience-width-radius F]
 //            [--salience-width-samples N] [--sdf-rays N]
 //            [--cross-bend F] [--cross-gain G] [--cross-price P] [--cross-steps N] [--cross-step S]
-//            [--cross-dist D] [--cross-dirs 1|2|3]
+//            [--cross-dist D] [--cross-dirs 1|2|3] [--cross-dominant 0|1]
 //   (PartBoundaryEnd::Param's crossBend ... crossDirs, the bend across the loop at the Run's end,
 //   session 28; --cross-bend 0 turns it off)
 //   (--salience-width E: PartSalience::Param::widthExponent, the shape-diameter ratio's
@@ -181,6 +181,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
+        else if (a == "--cross-dominant") vlp.crossDominant = std::stoi(next()) != 0;
         else if (a == "--cross-steps") vlp.crossSteps = std::stoi(next());
         else if (a == "--cross-step") vlp.crossStep = std::stod(next());
         else if (a == "--cross-dist") vlp.crossDist = std::stod(next());
@@ -228,7 +229,7 @@ int main(int argc, char **argv)
     if (oracleOut) {
         oracle.open(oracleOut);
         oracle << "energy,id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
-                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body,mult,sup,sup_m,sup_soft,sup_own,sup_seed\n";
+                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body,mult,sup,sup_m,sup_soft,sup_own,sup_seed,bend,xfrom\n";
     }
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
     const auto t0 = std::chrono::steady_clock::now();
@@ -334,12 +335,14 @@ int main(int argc, char **argv)
                         // GS_PARTS_ORACLE: every edge loop the Run's end finds, with the stage that found it
                         std::vector<Candidate> cands;
                         std::string origin = "own", last = "band";
+                        std::vector<int> crossFrom; // the loop Across started from (session 29)
                         const auto ownSeed = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
                         PartBoundaryEnd<CMeshO>::Param run = vlp;
                         if (oracleOut)
                             run.valley.record = [&](const char *st, const std::vector<int> &l) {
                                 const std::string x = st;
                                 if (l.empty() && (x == "seeded" || x == "toward")) return (void)(origin = x);
+                                if (x == "crossfrom") return (void)(crossFrom = l);
                                 if (x != "descent") last = x;
                                 if (l.size() >= 3)
                                     cands.push_back({origin + "/" + (x == "descent" && last != "band" ? last + "+descent" : x), l});
@@ -407,7 +410,7 @@ int main(int argc, char **argv)
                                        << int(ts.Success()) << ',' << ts.capture << ',' << ts.coverage << ','
                                        << gs_parts::LoopLength(pl) / h << ',' << rest << '\n';
                             };
-                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,,,,,,,");
+                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,,,,,,,,,");
                             bool anyOk = false;
                             int chosenIdx = -1;
                             std::vector<char> in;
@@ -489,12 +492,18 @@ int main(int argc, char **argv)
                                 }
                                 const int supOwn = share(up[ci], ownPts) > supShare && share(ownPts, up[ci]) > supShare;
                                 const int supSeed = share(up[ci], seedPts) > supShare && share(seedPts, up[ci]) > supShare;
+                                // session 29: the bend across (LoopBend, crossDist units) and whether Across started from it
+                                bool bok = false;
+                                const double bend = LoopBend<CMeshO>::Bend(md.mesh, l, s.LengthScale(), vlp.crossDist, &bok);
+                                std::vector<int> k1 = l, k2 = crossFrom;
+                                std::sort(k1.begin(), k1.end()), std::sort(k2.begin(), k2.end());
                                 char rest[640];
-                                std::snprintf(rest, sizeof rest, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d,%d,%.3f,%d,%d", cpl,
+                                std::snprintf(rest, sizeof rest, "%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%d,%d,%d,%.3f,%d,%d,%s,%d", cpl,
                                               e / len, c / len, A / total, A > 0 ? cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
                                               A > 0 ? width * cpl * std::pow(len / std::sqrt(A), vlp.salience.exponent) : -1,
                                               dOwn, agree, std::sqrt(rms) / h, turn, eS[0] / nS[0], eS[1] / std::max(1.0, nS[1]),
-                                              eS[2] / std::max(1.0, nS[2]), mult[ci], sup, supM, soft, supOwn, supSeed);
+                                              eS[2] / std::max(1.0, nS[2]), mult[ci], sup, supM, soft, supOwn, supSeed,
+                                              bok ? std::to_string(bend).c_str() : "", int(k1 == k2));
                                 row(ci + 1, uniq[ci].stage, chosen, pl, ts, rest);
                             }
                             if (std::getenv("GS_PARTS_MODE")) {

@@ -18,6 +18,8 @@ NUM = ['capture', 'coverage', 'L_h', 'cpl', 'e_pl', 'c_pl', 'area_share', 'sal',
 # session 29's support columns (files recorded since): times found, mutual captures (count, weighted by
 # times found, soft: the sum of min(share either way)), and with the snake's and the seeded loop
 SUPPORT = ['mult', 'sup', 'sup_m', 'sup_soft', 'sup_own', 'sup_seed']
+# the bend across (LoopBend, crossDist units) and whether Across started from the loop (session 29, helper 3b)
+BEND = ['bend', 'xfrom']
 
 
 def load(path):
@@ -25,7 +27,7 @@ def load(path):
     for r in csv.DictReader(open(path)):
         if r['energy'] != 'part':
             continue
-        for f in NUM + SUPPORT:
+        for f in NUM + SUPPORT + BEND:
             r[f] = float(r[f]) if r.get(f, '') != '' else float('nan')
         r['success'], r['chosen'] = r['success'] == '1', r['chosen'] == '1'
         rows.setdefault((r['id'], r['category'], r['part'], r['side'], r['ring']), []).append(r)
@@ -87,6 +89,8 @@ def main():
                   and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']]
             return min(cs, key=lambda c: c['cpl']) if cs else ch
         replay(rows, flatter, f'flatter x{p}, at most x{t} per length')
+    if any(c['bend'] == c['bend'] for v in rows.values() for c in v[1:]):
+        bend_rules(rows)
     if not any(c['mult'] == c['mult'] for v in rows.values() for c in v[1:]):
         return
     # support (session 29, after Golovinskiy and Funkhouser's randomized cuts: cut where many cuts agree)
@@ -103,6 +107,41 @@ def main():
                 cs = [c for c in e if c['cpl'] <= t * ch['cpl'] and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']] + [ch]
                 return max(cs, key=lambda c: (f(c), c is ch, -c['cpl']))
             replay(rows, tie, f'  near ties (x{t} per length) to the most support ({lab})')
+
+
+def bend_rules(rows):
+    """Session 29: the bend across's own candidates (stage `across`) against the chosen loop."""
+    def across(e, ch):
+        return [c for c in e if c is not ch and 'across' in c['stage'] and c['bend'] == c['bend']
+                and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']]
+    print('failed rows where a loop of the bend across succeeds (bend, cost per length, off the plane against the chosen):')
+    for k, v in rows.items():
+        ch = next(c for c in v if c['chosen'])
+        good = [c for c in v[1:] if 'across' in c['stage'] and c['success']]
+        if ch['success'] or not good:
+            continue
+        print(f'  {name(k)}: chosen bend {ch["bend"]:.3f}; ' + ', '.join(
+            f'{c["bend"]:.3f} x{c["cpl"] / ch["cpl"]:.3f} plane x{c["plane_h"] / ch["plane_h"]:.2f}' for c in good))
+    for q in (1.0, 1.2, 1.5):
+        for t in (1.0, 1.05, 1.1):
+            def more(e, ch, q=q, t=t):
+                cs = [c for c in across(e, ch) if ch['bend'] == ch['bend'] and c['bend'] > max(q * ch['bend'], ch['bend'])
+                      and c['cpl'] <= t * ch['cpl']]
+                return max(cs, key=lambda c: c['bend']) if cs else ch
+            replay(rows, more, f'bends more than x{q} the chosen (no gain in h), at most x{t} per length' +
+                   (' (dominance: crossDominant)' if q == 1.0 and t == 1.0 else ''))
+    for k in (0.25, 0.5, 1.0):
+        def grow(e, ch, k=k):
+            cs = [c for c in across(e, ch) if ch['bend'] == ch['bend'] and c['bend'] > max(1.2 * ch['bend'], ch['bend'] + 0.1)
+                  and c['cpl'] <= ch['cpl'] * (1.05 + k * (c['bend'] - ch['bend']))]
+            return max(cs, key=lambda c: c['bend']) if cs else ch
+        replay(rows, grow, f'price 1.05 + {k} x the bend gained (h)')
+    for p in (0.4, 0.5, 0.6, 0.7):
+        for t in (1.05, 1.1, 1.3):
+            def flat(e, ch, p=p, t=t):
+                cs = [c for c in across(e, ch) if c['plane_h'] <= p * ch['plane_h'] and c['cpl'] <= t * ch['cpl'] and c['bend'] > 0]
+                return min(cs, key=lambda c: c['cpl']) if cs else ch
+            replay(rows, flat, f'flatter x{p} and concave across, at most x{t} per length')
 
 
 if __name__ == '__main__':
