@@ -949,6 +949,46 @@ TEST(PartBoundaryEnd, EndsWhereTheSurfaceBendsInwardsAcrossTheLoopNotUpAStraight
     EXPECT_GT(LoopBend<CMeshO>::Bend(m, r0, h, 2.0), 0.5);
 }
 
+// The same limb where its base ring is as cheap per length as the ring 2 steps up (0.45 both,
+// session 29): the bend across gained (about 0.76 h) falls short of a crossGain of 1 h, so the
+// bend rule keeps the ring up the limb; a loop that bends more and costs no more per length is
+// better by both of the Run's end's counts and needs no gain (Param::crossDominant).
+TEST(PartBoundaryEnd, TakesALoopThatBendsMoreAndCostsNoMorePerLength)
+{
+    CMeshO m;
+    const std::vector<int> ring = MakeLimbOnBody(m);
+    ASSERT_GE(ring[0], 0);
+    ASSERT_GE(ring[2], 0);
+    for (auto &v : m.vert) v.Q() = v.cP()[2] > 1.7 - 1e-6 ? 1.0 : (v.cP()[2] < -3 + 1e-6 ? 0.0 : 0.5);
+    for (int k = 0; k < kLimbN; ++k) m.vert[ring[2] + k].Q() = 0.45, m.vert[ring[0] + k].Q() = 0.45;
+    auto surf = std::make_shared<Surface>(m, 0);
+    std::vector<int> seeds;
+    for (int k = 0; k < kLimbN; k += 3) seeds.push_back(ring[2] + k);
+    PartBoundaryEnd<CMeshO>::Param par;
+    par.valley.concavityWeight = 0;
+    par.salience.widthExponent = 0;
+    par.crossStep = 1.5;
+    par.crossGain = 1.0; // more than the bend gained: the bend rule alone keeps the ring up the limb
+    auto endAt = [&](const PartBoundaryEnd<CMeshO>::Param &p, double &zMin, double &zMax) {
+        Snake s(surf);
+        s.InitFromSeeds(seeds, true);
+        s.EndRun(SnakeStop::Converged);
+        EXPECT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, p));
+        zMin = 1e9, zMax = -1e9;
+        for (const P3 &x : s.PolylinePositions()) zMin = std::min(zMin, x[2]), zMax = std::max(zMax, x[2]);
+    };
+    double zMin, zMax;
+    par.crossDominant = true;
+    endAt(par, zMin, zMax);
+    std::printf("limb on a body, base as cheap as the ring up: the Run ends at z %.3f..%.3f\n", zMin, zMax);
+    EXPECT_LT(std::max(std::fabs(zMin), std::fabs(zMax)), 1e-4); // the limb's base ring
+    par.crossDominant = false; // the mechanism: without it the ring 2 steps up stays
+    endAt(par, zMin, zMax);
+    std::printf("  without crossDominant: z %.3f..%.3f\n", zMin, zMax);
+    EXPECT_NEAR(zMin, 2 * kLimbStep, 1e-4);
+    EXPECT_NEAR(zMax, 2 * kLimbStep, 1e-4);
+}
+
 // The profile's level-set lengths for all levels in one pass (session 27) are ContourLength's at
 // each level, bit for bit (the same terms added in the same order), and on the tube of the limb
 // above the perimeter of its ring polygon: the depth below z = 0.3 as the distance, the levels

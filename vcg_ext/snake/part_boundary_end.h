@@ -72,6 +72,12 @@ public:
         double crossStep = 1.0;
         double crossDist = 2.0;
         int crossDirs = 3; ///< 1: towards the body, 2: towards the part, 3: both (1 alone: the same rows)
+        /// Session 29: after the bend rule, the candidate that bends most among those that bend
+        /// more than the loop kept and cost no more per length replaces it, whatever the gain
+        /// (crossBend and crossGain pay for crossPrice's allowance; a loop better on both counts
+        /// needs none; no threshold). On bench/eval/gs_parts (--energy part --rings 2,3) against
+        /// 167/220: 168 (+1 -0: hand 181 part 3 inside 3; 10 rows change loop). false: off.
+        bool crossDominant = true;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
     };
@@ -230,6 +236,7 @@ public:
         typedef LoopBend<MeshType> LB;
         bool ok = false;
         const double b0 = LB::Bend(m, vl, h, par.crossDist, &ok);
+        VL::Record(par.valley, "crossfrom", vl); // the loop the bend starts from (bench/eval's oracle)
         if (!ok) return vl;
         if (ref < 0) {
             double c = 0;
@@ -243,7 +250,8 @@ public:
         const int body = LB::Body(s);
         if (body < 0) return vl;
         std::vector<int> best = vl;
-        double bestBend = b0;
+        double bestBend = b0, bestP = p0;
+        std::vector<std::pair<std::vector<int>, std::pair<double, double>>> seen; // candidate, (bend, cost per length)
         for (int dir = 0; dir < 2; ++dir) {
             if (!(par.crossDirs & (1 << dir))) continue;
             auto isSide = [&](int v) {
@@ -285,8 +293,16 @@ public:
                 const double L = VL::LengthOf(m, cand);
                 if (!(L > 0.5 * L0) || L > par.salience.growth * L0 || !(c / L <= par.crossPrice * p0)) continue;
                 const double b = LB::Bend(m, cand, h, par.crossDist, &ok);
-                if (ok && b > par.crossBend * bestBend && b > bestBend + par.crossGain) best = cand, bestBend = b;
+                if (ok) seen.push_back({cand, {b, c / L}});
+                if (ok && b > par.crossBend * bestBend && b > bestBend + par.crossGain) best = cand, bestBend = b, bestP = c / L;
             }
+        }
+        // Param::crossDominant: the one that bends most among those better on both counts
+        if (par.crossDominant) {
+            const double b1 = bestBend, p1 = bestP;
+            for (const auto &x : seen)
+                if (x.second.first > b1 && x.second.second <= p1 && x.second.first > bestBend)
+                    best = x.first, bestBend = x.second.first;
         }
         return best;
     }
