@@ -295,6 +295,9 @@ public:
     double LengthScale() const { return st.unit; }
     const SnakeStats &Stats() const { return stats; }
     bool Converged() const { return stats.converged; }
+    /// The run control's parameters (SnakeRunControl::Param: the stall test, session 29); not
+    /// saved, not undone.
+    typename SnakeRunControl<MeshType>::Param &RunParam() { return op.RunParam(); }
     /// The level of the energy pyramid the snake slithers on: the coarsest while capturing,
     /// one finer each time its samples sit in wells of the current one, 0 (precise) to settle.
     int EnergyStage() const { return op.Level(); }

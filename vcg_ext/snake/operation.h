@@ -77,6 +77,9 @@ public:
         projection.ClearCache();
     }
 
+    /// The run control's parameters (SnakeRunControl::Param: the stall test).
+    typename RunControl::Param &RunParam() { return run.GetParam(); }
+
     /// The level of the energy pyramid the next operation slithers on (SnakeRunControl::Level).
     int Level() const { return run.Level(); }
     const RunState &GetRunState() const { return run.Get(); }

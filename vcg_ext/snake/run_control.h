@@ -35,16 +35,37 @@ public:
         vcg::Point3d runCentre{0, 0, 0};          ///< closed snakes: centroid of the samples at the run's start
         std::deque<double> moves, travels;
         std::deque<Positions> positions;
+        std::deque<double> energies; ///< level 0: the samples' mean energy after each of the last operations (stall test)
 
         size_t Bytes() const
         {
-            size_t b = sizeof(*this) + (moves.size() + travels.size()) * sizeof(double);
+            size_t b = sizeof(*this) + (moves.size() + travels.size() + energies.size()) * sizeof(double);
             for (const auto &q : positions) b += q.capacity() * sizeof(vcg::Point3d);
             return b;
         }
     };
 
+    /// The stall test (session 29, docs/method.md "Session 29"): on a noisy fine mesh level 0
+    /// is a field of noise dips about one local edge apart, and every operation a different
+    /// handful of samples hops to a neighbouring dip; the convergence and oscillation tests
+    /// (updateConvergence) are maxima over the samples, so they never fire although the loop as
+    /// a whole hardly moves, and the Run ends at its limit. The curve as a whole has stalled when, on level 0, the samples' mean net
+    /// move over the last 2 x window operations is below `meanMove` x the convergence
+    /// tolerance (the hops are a few samples' moves: the mean of a curve that goes somewhere is
+    /// its move) and the mean energy on the curve no longer falls (fell by less than `fall`
+    /// over those operations: a loop still drifting down the noise goes on). The Run then ends
+    /// as converged: the curve moves no more than one that passed the worst-sample test.
+    struct Param
+    {
+        bool stall = true;     ///< the stall test on (off: the worst-sample tests alone, as before session 29)
+        double meanMove = 1.0; ///< mean net move per sample over 2 x window operations, x convergenceTol
+        double fall = 0.002;   ///< the mean energy (in [0, 1]) fell by less than this over 2 x window operations
+    };
+
     explicit SnakeRunControl(const Surface *s) : surf(s) {}
+
+    Param &GetParam() { return param; }
+    const Param &GetParam() const { return param; }
 
     const State &Get() const { return state; }
     void Set(const State &s) { state = s; }
@@ -121,9 +142,21 @@ public:
     /// along the curve does not change the curve, so it does not count.
     static double CurveMove(const Positions &a, const Positions &b, bool closed)
     {
-        const int n = int(a.size());
-        if (int(b.size()) != n) return 1e9;
+        const std::vector<double> d = SampleMoves(a, b, closed);
+        if (d.size() != a.size() || int(b.size()) != int(a.size())) return 1e9;
         double worst = 0;
+        for (double v : d) worst = std::max(worst, v);
+        return worst;
+    }
+
+    /// CurveMove for each sample of b: its distance to the old curve a near it (empty if the
+    /// sample counts differ).
+    static std::vector<double> SampleMoves(const Positions &a, const Positions &b, bool closed)
+    {
+        const int n = int(a.size());
+        std::vector<double> out;
+        if (int(b.size()) != n) return out;
+        out.reserve(n);
         for (int i = 0; i < n; ++i) {
             double best = (b[i] - a[i]).Norm();
             for (int j = i - 2; j <= i + 1; ++j) {
@@ -135,9 +168,9 @@ public:
                 const double t = L2 > 0 ? std::max(0.0, std::min(1.0, ((b[i] - a[j0]) * d) / L2)) : 0.0;
                 best = std::min(best, (b[i] - (a[j0] + d * t)).Norm());
             }
-            worst = std::max(worst, best);
+            out.push_back(best);
         }
-        return worst;
+        return out;
     }
 
     /// Length of the sample polygon.
@@ -150,6 +183,7 @@ public:
 
 private:
     const Surface *surf;
+    Param param;
     State state;
     // inWells' probe order, a cost heuristic and not the run's state: per sample, the side whose
     // probe found no well last time (1: ahead across, 2: behind), 0 if none
@@ -261,8 +295,9 @@ private:
             const double travelled = std::accumulate(state.travels.begin(), state.travels.end(), 0.0);
             oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
         }
-        stats.converged = still || oscillating;
         const int level = Level();
+        const bool stall = level == 0 && stalled(st, tol, W); // every level-0 operation: its energy window stays aligned
+        stats.converged = still || oscillating || stall;
         if (level == 0) return;
         // On a coarse level the snake only has to reach its wells: it steps down to the next
         // finer level as soon as its samples sit in them and it moves by less than 0.3 units per
@@ -292,6 +327,27 @@ private:
         state.moves.clear();
         state.travels.clear();
         state.positions.clear();
+        state.energies.clear();
+    }
+
+    /// The stall test (Param): called on level 0 after state.positions took this operation's
+    /// positions.
+    bool stalled(const SnakeCurve &st, double tol, int W)
+    {
+        if (!param.stall || st.samples.empty()) return false;
+        double e = 0;
+        for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
+        e /= double(st.samples.size());
+        state.energies.push_back(e);
+        while (int(state.energies.size()) > 2 * W + 1) state.energies.pop_front();
+        if (int(state.positions.size()) != 2 * W + 1 || int(state.energies.size()) != 2 * W + 1) return false;
+        const std::vector<double> d = SampleMoves(state.positions.front(), state.positions.back(), st.closed);
+        if (d.empty()) return false;
+        double mean = 0;
+        for (double v : d) mean += v;
+        mean /= double(d.size()) * st.unit;
+        const double fell = state.energies.front() - e;
+        return mean < param.meanMove * tol && fell < param.fall;
     }
 
     /// A closed snake that shrinks where no feature holds it would end as a point and report
