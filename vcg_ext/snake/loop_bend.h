@@ -54,12 +54,20 @@ public:
     /// about 0 on a ring up a limb of even width, negative on a convex ridge.
     static double Bend(const MeshType &m, const std::vector<int> &vl, double h, double d, bool *ok = nullptr)
     {
-        typedef PartSalience<MeshType> PS;
         if (ok) *ok = false;
         if (vl.size() < 3) return 0;
-        typename PS::Sides s(m, vl);
-        const int body = Body(s);
-        if (body < 0) return 0;
+        typename PartSalience<MeshType>::Sides s(m, vl);
+        return Bend(m, vl, s, Body(s), h, d, ok);
+    }
+
+    /// Bend with vl's sides s already flooded until the body is known (body = Body(s)): a
+    /// caller that reads the sides too floods them once.
+    static double Bend(const MeshType &m, const std::vector<int> &vl, typename PartSalience<MeshType>::Sides &s, int body,
+                       double h, double d, bool *ok = nullptr)
+    {
+        typedef PartSalience<MeshType> PS;
+        if (ok) *ok = false;
+        if (vl.size() < 3 || body < 0) return 0;
         std::unordered_map<int, double> dist;
         std::unordered_map<int, int> src;
         typedef std::pair<double, int> QE;

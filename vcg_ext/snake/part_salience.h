@@ -256,27 +256,7 @@ public:
             const int c = s0.Side(v);
             return c != -1 && (c == -2 || c == body);
         };
-        std::unordered_map<int, double> dist;
-        typedef std::pair<double, int> QE;
-        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
-        for (int v : loop) dist[v] = 0, q.push({0, v});
-        double edge = 0; // the longest edge out of a vertex nearer than reach
-        while (!q.empty()) {
-            const QE e = q.top();
-            q.pop();
-            if (e.first > dist[e.second]) continue;
-            if (e.first > reach + edge) break;
-            ForFaces(m, e.second, [&](const FaceType *f, int z) {
-                for (int k = 1; k < 3; ++k) {
-                    const int b = index(m, f->cV((z + k) % 3));
-                    if (!isBody(b)) continue;
-                    const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
-                    if (e.first < reach) edge = std::max(edge, l);
-                    const auto it = dist.find(b);
-                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
-                }
-            });
-        }
+        const std::unordered_map<int, double> dist = DistanceFrom(m, loop, isBody, reach);
         std::vector<int> nb;
         for (int k = 1; k <= par.steps; ++k) {
             // the guide: the edge loop at distance d into the body where it is one loop (session
@@ -299,11 +279,7 @@ public:
                     }
                     if (gv.empty() || gv.back() != cur) gv.push_back(cur);
                 }
-            for (int v : gv) {
-                guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-                const FaceType *f = m.vert[v].cVFp();
-                if (f) guideFaces.push_back(int(f - &m.face[0]));
-            }
+            Guide(m, gv, guide, guideFaces);
             if (guide.size() < 3) break;
             double gL = 0;
             for (size_t i = 0; i < guide.size(); ++i) gL += vcg::Distance(guide[i], guide[(i + 1) % guide.size()]);
@@ -333,11 +309,7 @@ public:
         if (dj > 0) {
             std::vector<vcg::Point3d> guide;
             std::vector<int> guideFaces;
-            for (int v : LevelLoop(m, isBody, dist, dj)) {
-                guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-                const FaceType *f = m.vert[v].cVFp();
-                if (f) guideFaces.push_back(int(f - &m.face[0]));
-            }
+            Guide(m, LevelLoop(m, isBody, dist, dj), guide, guideFaces);
             double c = 0, A = 0;
             std::vector<int> cand;
             if (guide.size() >= 3) cand = find(guide, guideFaces, c, true);
@@ -362,6 +334,48 @@ public:
         A = sc.area[sc.Side(rep)];
         while (!(s0.known > A / mp) && s0.Step()) {}
         return A < mp * s0.known;
+    }
+
+    /// The edge distance from `loop` (vertex indices) over the vertices onSide(v) holds, settled
+    /// for every vertex nearer than `reach` and its neighbours (one edge beyond): the level
+    /// loops (LevelLoop) up to `reach` read it, and its cost follows them, not the mesh.
+    template <class OnSide>
+    static std::unordered_map<int, double> DistanceFrom(const MeshType &m, const std::vector<int> &loop, OnSide onSide,
+                                                        double reach)
+    {
+        std::unordered_map<int, double> dist;
+        typedef std::pair<double, int> QE;
+        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+        for (int v : loop) dist[v] = 0, q.push({0, v});
+        double edge = 0; // the longest edge out of a vertex nearer than reach
+        while (!q.empty()) {
+            const QE e = q.top();
+            q.pop();
+            if (e.first > dist[e.second]) continue;
+            if (e.first > reach + edge) break;
+            ForFaces(m, e.second, [&](const FaceType *f, int z) {
+                for (int k = 1; k < 3; ++k) {
+                    const int b = index(m, f->cV((z + k) % 3));
+                    if (!onSide(b)) continue;
+                    const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
+                    if (e.first < reach) edge = std::max(edge, l);
+                    const auto it = dist.find(b);
+                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
+                }
+            });
+        }
+        return dist;
+    }
+
+    /// A loop of vertex indices as a guide polyline for ValleyLoop::FindAt (appended to pts),
+    /// with a face of each vertex (appended to faces).
+    static void Guide(const MeshType &m, const std::vector<int> &l, std::vector<vcg::Point3d> &pts, std::vector<int> &faces)
+    {
+        for (int v : l) {
+            pts.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+            const FaceType *f = m.vert[v].cVFp();
+            if (f) faces.push_back(int(f - &m.face[0]));
+        }
     }
 
     /// The length of a loop of vertex indices.
