@@ -33,6 +33,7 @@ public:
     static int Body(typename PartSalience<MeshType>::Sides &s)
     {
         for (;;) {
+            if (s.OneSide()) return -1; // known before the flood ends
             if (s.growing == 1 && !s.ended.empty()) {
                 double M = 0;
                 for (int c : s.ended) M = std::max(M, s.area[c]);
