@@ -701,6 +701,60 @@ TEST(PartSalience, SidesFloodOnlyAsFarAsThePart)
     EXPECT_EQ(s.ended.size(), 2u);
 }
 
+// A candidate loop that leaves the first loop's part on its larger side (part salience's 1/3
+// test, PartSalience::PartArea): a loop round the far end of a sphere (a band, -0.93 < z <=
+// -0.90) with the first loop's part (the cap z > 0.93, rep its pole) beyond it. That side is no
+// part; once the far cap has ended and the side left growing is past half of the rest (maxPart
+// 1/3), nothing it still adds can make it one (session 29): it is not flooded to the pole, the
+// whole sphere, and the answer is the full flood's. The first loop itself: its cap, true. A
+// loop that cuts nothing off (an arc) is known as such once the floods round it meet
+// (Sides::OneSide), not after flooding the sphere.
+TEST(PartSalience, PartAreaStopsWhereTheLargerSideIsNoPart)
+{
+    CMeshO m;
+    gs_test::MakeIcosphere(m, 6);
+    m.vert.EnableVFAdjacency();
+    m.face.EnableVFAdjacency();
+    vcg::tri::UpdateTopology<CMeshO>::VertexFace(m);
+    typedef vcg::tri::PartSalience<CMeshO> PS;
+    auto z = [&](int v) { return double(m.vert[v].cP()[2]); };
+    auto band = [&](double lo, double hi) {
+        std::vector<int> l;
+        for (int v = 0; v < int(m.vert.size()); ++v)
+            if (z(v) > lo && z(v) <= hi) l.push_back(v);
+        return l;
+    };
+    const std::vector<int> top = band(0.90, 0.93), bottom = band(-0.93, -0.90);
+    int rep = 0;
+    for (int v = 0; v < int(m.vert.size()); ++v)
+        if (z(v) > z(rep)) rep = v;
+    const double mp = 1.0 / 3;
+    PS::Sides s0(m, top), sc(m, bottom);
+    double A = -1;
+    EXPECT_FALSE(PS::PartArea(sc, rep, s0, mp, A));
+    std::printf("far loop: flooded %zu of %zu vertices\n", sc.visited, m.vert.size());
+    EXPECT_LT(sc.visited, m.vert.size() / 4);
+    // every side flooded to its end: the same answer
+    PS::Sides full(m, bottom), s0Full(m, top);
+    while (full.Step()) {}
+    while (s0Full.Step()) {}
+    ASSERT_TRUE(full.Ended(full.Side(rep)));
+    EXPECT_FALSE(full.area[full.Side(rep)] < mp * s0Full.known);
+    PS::Sides own(m, top);
+    EXPECT_TRUE(PS::PartArea(own, rep, s0, mp, A));
+    EXPECT_NEAR(A / (4 * M_PI), 0.035, 0.003);
+    // half the band (x > 0), an arc: it cuts nothing off, known once the floods round it meet
+    std::vector<int> arc;
+    for (int v : top)
+        if (m.vert[v].cP()[0] > 0) arc.push_back(v);
+    PS::Sides a(m, arc);
+    while (!a.OneSide() && a.Step()) {}
+    EXPECT_TRUE(a.OneSide());
+    EXPECT_LT(a.visited, m.vert.size() / 4);
+    while (a.Step()) {}
+    EXPECT_EQ(a.ended.size(), 1u);
+}
+
 // A short part whose top lies within the valley loop's band (2.5 length units) of its base: a low
 // bump 14 edges round (a fourleg's stubby leg, an ant's foot). The band round a loop on its rim
 // covers the top and is no ring: its cheapest "loop" circles the top's middle (6.4 edges long

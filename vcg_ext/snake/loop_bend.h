@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <vcg_ext/snake/part_salience.h>
+#include <vcg_ext/surface/angle_weighted_normals.h>
 
 namespace vcg {
 namespace tri {
@@ -32,6 +33,7 @@ public:
     static int Body(typename PartSalience<MeshType>::Sides &s)
     {
         for (;;) {
+            if (s.OneSide()) return -1; // known before the flood ends
             if (s.growing == 1 && !s.ended.empty()) {
                 double M = 0;
                 for (int c : s.ended) M = std::max(M, s.area[c]);
@@ -49,17 +51,26 @@ public:
     /// The bend across the loop at distance d h (the minima rule's sign of the curvature
     /// across it): per loop vertex v, the centroids cP, cB of the vertices at edge distance
     /// (d - h/2, d + h/2] on the part's and the body's side whose nearest loop vertex is v,
-    /// and ((cP + cB) / 2 - v) . n_v, n_v the area-weighted outward normal, in h; the median
-    /// over the loop's vertices that have both. Positive: concave across the loop (a valley),
-    /// about 0 on a ring up a limb of even width, negative on a convex ridge.
+    /// and ((cP + cB) / 2 - v) . n_v, n_v the angle-weighted outward normal (the energies',
+    /// angle_weighted_normals.h), in h; the median over the loop's vertices that have both.
+    /// Positive: concave across the loop (a valley), about 0 on a ring up a limb of even width,
+    /// negative on a convex ridge.
     static double Bend(const MeshType &m, const std::vector<int> &vl, double h, double d, bool *ok = nullptr)
+    {
+        if (ok) *ok = false;
+        if (vl.size() < 3) return 0;
+        typename PartSalience<MeshType>::Sides s(m, vl);
+        return Bend(m, vl, s, Body(s), h, d, ok);
+    }
+
+    /// Bend with vl's sides s already flooded until the body is known (body = Body(s)): a
+    /// caller that reads the sides too floods them once.
+    static double Bend(const MeshType &m, const std::vector<int> &vl, typename PartSalience<MeshType>::Sides &s, int body,
+                       double h, double d, bool *ok = nullptr)
     {
         typedef PartSalience<MeshType> PS;
         if (ok) *ok = false;
-        if (vl.size() < 3) return 0;
-        typename PS::Sides s(m, vl);
-        const int body = Body(s);
-        if (body < 0) return 0;
+        if (vl.size() < 3 || body < 0) return 0;
         std::unordered_map<int, double> dist;
         std::unordered_map<int, int> src;
         typedef std::pair<double, int> QE;
@@ -93,10 +104,8 @@ public:
         std::vector<double> bend;
         for (size_t i = 0; i < vl.size(); ++i) {
             if (!np[i] || !nb[i]) continue;
-            vcg::Point3d n(0, 0, 0);
-            PS::ForFaces(m, vl[i], [&](const FaceType *f, int) { n += vcg::Point3d::Construct(vcg::TriangleNormal(*f)); });
+            const vcg::Point3d n = AngleWeightedNormals<MeshType>::At(m, m.vert[vl[i]]);
             if (!(n.Norm() > 0)) continue;
-            n.Normalize();
             const vcg::Point3d mid = (cp[i] / double(np[i]) + cb[i] / double(nb[i])) * 0.5;
             bend.push_back(((mid - vcg::Point3d::Construct(m.vert[vl[i]].cP())) * n) / h);
         }

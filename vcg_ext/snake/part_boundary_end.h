@@ -13,8 +13,6 @@
 // band, its descent) is ValleyLoop's; this class is the choice of where to search and which
 // loop to keep.
 
-#include <functional>
-#include <queue>
 #include <unordered_map>
 #include <vector>
 
@@ -234,21 +232,21 @@ public:
     {
         typedef PartSalience<MeshType> PS;
         typedef LoopBend<MeshType> LB;
+        if (vl.size() < 3) return vl;
+        typename PS::Sides s(m, vl); // flooded once: for vl's bend and for the level loops
+        const int body = LB::Body(s);
         bool ok = false;
-        const double b0 = LB::Bend(m, vl, h, par.crossDist, &ok);
+        const double b0 = LB::Bend(m, vl, s, body, h, par.crossDist, &ok);
         VL::Record(par.valley, "crossfrom", vl); // the loop the bend starts from (bench/eval's oracle)
-        if (!ok) return vl;
+        if (!ok) return vl; // body < 0 too: the loop cuts nothing off
         if (ref < 0) {
             double c = 0;
             std::vector<vcg::Point3d> pl;
             std::vector<int> pf;
-            Guide(m, vl, pl, pf);
+            PS::Guide(m, vl, pl, pf);
             VL::FindAt(m, pl, pf, energy, h, par.valley, ref, c);
         }
         const double L0 = VL::LengthOf(m, vl), p0 = VL::PerLength(m, vl, energy, ref, par.valley);
-        typename PS::Sides s(m, vl);
-        const int body = LB::Body(s);
-        if (body < 0) return vl;
         std::vector<int> best = vl;
         double bestBend = b0, bestP = p0;
         std::vector<std::pair<std::vector<int>, std::pair<double, double>>> seen; // candidate, (bend, cost per length)
@@ -258,31 +256,14 @@ public:
                 const int c = s.Side(v);
                 return dir == 0 ? (c == body || c == -2) : (c >= 0 && c != body);
             };
-            const double reach = (par.crossSteps * par.crossStep + 1) * h;
-            std::unordered_map<int, double> dist;
-            typedef std::pair<double, int> QE;
-            std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
-            for (int v : vl) dist[v] = 0, q.push({0, v});
-            while (!q.empty()) {
-                const QE e = q.top();
-                q.pop();
-                if (e.first > dist[e.second] || e.first > reach) continue;
-                PS::ForFaces(m, e.second, [&](const FaceType *f, int z) {
-                    for (int k = 1; k < 3; ++k) {
-                        const int b = int(f->cV((z + k) % 3) - &m.vert[0]);
-                        if (!isSide(b)) continue;
-                        const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
-                        const auto it = dist.find(b);
-                        if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
-                    }
-                });
-            }
+            // the edge distance as far as the level loops below read it (as salience's guides)
+            const std::unordered_map<int, double> dist = PS::DistanceFrom(m, vl, isSide, par.crossSteps * par.crossStep * h);
             // the cheapest loop round each level loop (a narrow band, not descended: the
             // descent would slide it back), taken when it bends more across, cheap enough
             for (int k = 1; k <= par.crossSteps; ++k) {
                 std::vector<vcg::Point3d> guide;
                 std::vector<int> gf;
-                Guide(m, PS::LevelLoop(m, isSide, dist, k * par.crossStep * h), guide, gf);
+                PS::Guide(m, PS::LevelLoop(m, isSide, dist, k * par.crossStep * h), guide, gf);
                 if (guide.size() < 3) continue;
                 typename VL::Param pn = par.valley;
                 pn.bandWidth = par.salience.profileBand;
@@ -308,16 +289,6 @@ public:
     }
 
 private:
-    /// A loop of vertex indices as a guide polyline for VL::FindAt, with a face of each vertex.
-    static void Guide(const MeshType &m, const std::vector<int> &l, std::vector<vcg::Point3d> &pts, std::vector<int> &faces)
-    {
-        for (int v : l) {
-            pts.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-            const FaceType *f = m.vert[v].cVFp();
-            if (f) faces.push_back(int(f - &m.face[0]));
-        }
-    }
-
     /// Band narrowing factor when a band is no ring (2.5 -> 1.5 units with the default band).
     static constexpr double kNarrow = 0.6;
     /// Half-width of the band that holds the edge ring along a seeded loop (TowardBody), units.

@@ -100,6 +100,12 @@ public:
         Sides(const MeshType &m, const std::vector<int> &loop) : m(m)
         {
             for (int v : loop) label[v] = -1;
+            for (int v : loop) // the faces no side holds (each counted from its least vertex)
+                ForFaces(m, v, [&](const FaceType *f, int) {
+                    const int a = index(m, f->cV(0)), b = index(m, f->cV(1)), c = index(m, f->cV(2));
+                    if (v == std::min(a, std::min(b, c)) && OnLoop(a) && OnLoop(b) && OnLoop(c))
+                        loopArea += vcg::DoubleArea(*f) / 2;
+                });
             // each vertex beside the loop starts a flood of its own; floods that meet join
             for (int v : loop)
                 ForFaces(m, v, [&](const FaceType *f, int z) {
@@ -157,6 +163,10 @@ public:
             return it != label.end() && it->second < 0;
         }
         bool Ended(int side) const { return side >= 0 && pending[side] == 0; }
+        /// Every flood joined into one still growing: the loop's neighbours are all one side, the
+        /// loop cuts nothing off (each side holds a neighbour: its flood ends or joins). Known
+        /// once the floods round the loop meet, not when the mesh is flooded.
+        bool OneSide() const { return growing == 1 && ended.empty(); }
         /// The one side still growing (growing == 1).
         int GrowingSide() { return Root(label[queue.front()]); }
 
@@ -165,6 +175,7 @@ public:
         std::vector<double> area;  ///< by side: the area flooded so far
         std::vector<int> last;     ///< by side: the vertex flooded last (the farthest from the loop)
         double known = 0;          ///< the area flooded so far, all sides
+        double loopArea = 0;       ///< the area of the faces whose vertices are all on the loop
         size_t visited = 0;        ///< vertices flooded
 
     private:
@@ -200,6 +211,7 @@ public:
             for (int c : s0.ended) S += s0.area[c], M = std::max(M, s0.area[c]);
         };
         for (;;) {
+            if (s0.OneSide()) return loop; // the loop cuts nothing off, known before the flood ends
             if (s0.growing == 1 && !s0.ended.empty()) {
                 double S, M;
                 sum(S, M);
@@ -256,27 +268,7 @@ public:
             const int c = s0.Side(v);
             return c != -1 && (c == -2 || c == body);
         };
-        std::unordered_map<int, double> dist;
-        typedef std::pair<double, int> QE;
-        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
-        for (int v : loop) dist[v] = 0, q.push({0, v});
-        double edge = 0; // the longest edge out of a vertex nearer than reach
-        while (!q.empty()) {
-            const QE e = q.top();
-            q.pop();
-            if (e.first > dist[e.second]) continue;
-            if (e.first > reach + edge) break;
-            ForFaces(m, e.second, [&](const FaceType *f, int z) {
-                for (int k = 1; k < 3; ++k) {
-                    const int b = index(m, f->cV((z + k) % 3));
-                    if (!isBody(b)) continue;
-                    const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
-                    if (e.first < reach) edge = std::max(edge, l);
-                    const auto it = dist.find(b);
-                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
-                }
-            });
-        }
+        const std::unordered_map<int, double> dist = DistanceFrom(m, loop, isBody, reach);
         std::vector<int> nb;
         for (int k = 1; k <= par.steps; ++k) {
             // the guide: the edge loop at distance d into the body where it is one loop (session
@@ -299,11 +291,7 @@ public:
                     }
                     if (gv.empty() || gv.back() != cur) gv.push_back(cur);
                 }
-            for (int v : gv) {
-                guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-                const FaceType *f = m.vert[v].cVFp();
-                if (f) guideFaces.push_back(int(f - &m.face[0]));
-            }
+            Guide(m, gv, guide, guideFaces);
             if (guide.size() < 3) break;
             double gL = 0;
             for (size_t i = 0; i < guide.size(); ++i) gL += vcg::Distance(guide[i], guide[(i + 1) % guide.size()]);
@@ -333,11 +321,7 @@ public:
         if (dj > 0) {
             std::vector<vcg::Point3d> guide;
             std::vector<int> guideFaces;
-            for (int v : LevelLoop(m, isBody, dist, dj)) {
-                guide.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
-                const FaceType *f = m.vert[v].cVFp();
-                if (f) guideFaces.push_back(int(f - &m.face[0]));
-            }
+            Guide(m, LevelLoop(m, isBody, dist, dj), guide, guideFaces);
             double c = 0, A = 0;
             std::vector<int> cand;
             if (guide.size() >= 3) cand = find(guide, guideFaces, c, true);
@@ -357,11 +341,65 @@ public:
     static bool PartArea(Sides &sc, int rep, Sides &s0, double mp, double &A)
     {
         if (sc.OnLoop(rep)) return false;
-        while (!sc.Ended(sc.Side(rep)) && sc.Step()) {}
+        while (!sc.Ended(sc.Side(rep))) {
+            // one side left growing, rep on no ended side: rep ends on that side (the piece of
+            // the mesh the loop lies on is then that side, the ended ones and the loop's own
+            // faces) or on no side; either way, once that side passes mp of the piece whatever
+            // it still adds, it is no part: the body of a loop round the body's far end is not
+            // flooded to its end (session 29, the cost follows the part). The margin keeps the
+            // answer the full flood's, rounding included.
+            if (mp < 1 && sc.growing == 1) {
+                const double a = sc.area[sc.GrowingSide()], rest = sc.known - a + sc.loopArea;
+                if ((1 - mp) * a > mp * rest + 1e-9 * (a + rest)) return false;
+            }
+            if (!sc.Step()) break;
+        }
         if (!sc.Ended(sc.Side(rep)) || (sc.growing == 0 && sc.ended.size() < 2)) return false;
         A = sc.area[sc.Side(rep)];
         while (!(s0.known > A / mp) && s0.Step()) {}
         return A < mp * s0.known;
+    }
+
+    /// The edge distance from `loop` (vertex indices) over the vertices onSide(v) holds, settled
+    /// for every vertex nearer than `reach` and its neighbours (one edge beyond): the level
+    /// loops (LevelLoop) up to `reach` read it, and its cost follows them, not the mesh.
+    template <class OnSide>
+    static std::unordered_map<int, double> DistanceFrom(const MeshType &m, const std::vector<int> &loop, OnSide onSide,
+                                                        double reach)
+    {
+        std::unordered_map<int, double> dist;
+        typedef std::pair<double, int> QE;
+        std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
+        for (int v : loop) dist[v] = 0, q.push({0, v});
+        double edge = 0; // the longest edge out of a vertex nearer than reach
+        while (!q.empty()) {
+            const QE e = q.top();
+            q.pop();
+            if (e.first > dist[e.second]) continue;
+            if (e.first > reach + edge) break;
+            ForFaces(m, e.second, [&](const FaceType *f, int z) {
+                for (int k = 1; k < 3; ++k) {
+                    const int b = index(m, f->cV((z + k) % 3));
+                    if (!onSide(b)) continue;
+                    const double l = vcg::Distance(m.vert[e.second].cP(), m.vert[b].cP());
+                    if (e.first < reach) edge = std::max(edge, l);
+                    const auto it = dist.find(b);
+                    if (it == dist.end() || e.first + l < it->second) dist[b] = e.first + l, q.push({e.first + l, b});
+                }
+            });
+        }
+        return dist;
+    }
+
+    /// A loop of vertex indices as a guide polyline for ValleyLoop::FindAt (appended to pts),
+    /// with a face of each vertex (appended to faces).
+    static void Guide(const MeshType &m, const std::vector<int> &l, std::vector<vcg::Point3d> &pts, std::vector<int> &faces)
+    {
+        for (int v : l) {
+            pts.push_back(vcg::Point3d::Construct(m.vert[v].cP()));
+            const FaceType *f = m.vert[v].cVFp();
+            if (f) faces.push_back(int(f - &m.face[0]));
+        }
     }
 
     /// The length of a loop of vertex indices.

@@ -38,26 +38,11 @@ public:
         std::vector<vcg::Point3d> acc(nv, vcg::Point3d(0, 0, 0));
         for (size_t fi = 0; fi < nf; ++fi) {
             const FaceType &f = m.face[fi];
-            if (f.IsD()) continue;
-            const vcg::Point3d p0 = vcg::Point3d::Construct(f.cV(0)->cP());
-            const vcg::Point3d p1 = vcg::Point3d::Construct(f.cV(1)->cP());
-            const vcg::Point3d p2 = vcg::Point3d::Construct(f.cV(2)->cP());
-            const vcg::Point3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
-            const double l0 = e0.SquaredNorm(), l1 = e1.SquaredNorm(), l2 = e2.SquaredNorm();
-            const vcg::Point3d cr = e0 ^ (p2 - p0);
-            const double area2 = cr.Norm();
-            const double maxE2 = std::max(l0, std::max(l1, l2));
-            // Same test as MeshValidation::IsDegenerate (zero-area or repeated-vertex faces).
-            if (!(maxE2 > 0) || !(area2 > MV::DegenerateRatio() * maxE2)) continue;
-            const vcg::Point3d n = cr / area2;
+            vcg::Point3d n;
+            double a[3];
+            if (f.IsD() || !Corners(f, n, a)) continue;
             fn[fi] = vcg::Point3f::Construct(n);
-            const double s0 = std::sqrt(l0), s1 = std::sqrt(l1), s2 = std::sqrt(l2);
-            const double a0 = FastAcos(Clamp1(-(e0 * e2) / (s0 * s2)));
-            const double a1 = FastAcos(Clamp1(-(e0 * e1) / (s0 * s1)));
-            const double a2 = FastAcos(Clamp1(-(e1 * e2) / (s1 * s2)));
-            acc[MV::VIndex(m, f.cV(0))] += n * a0;
-            acc[MV::VIndex(m, f.cV(1))] += n * a1;
-            acc[MV::VIndex(m, f.cV(2))] += n * a2;
+            for (int k = 0; k < 3; ++k) acc[MV::VIndex(m, f.cV(k))] += n * a[k];
         }
         for (size_t i = 0; i < nv; ++i) {
             VertexType &v = m.vert[i];
@@ -70,7 +55,46 @@ public:
                 if (!m.face[fi].IsD()) m.face[fi].N() = FaceType::NormalType::Construct(fn[fi]);
     }
 
+    /// The angle-weighted unit normal at vertex v alone, as Update computes it (up to the order
+    /// of the sum), from the live faces round v (VF adjacency), without writing the mesh: for a
+    /// const mesh read at a few vertices, so the cost follows them, not the mesh. Zero where
+    /// every face round v is degenerate.
+    static vcg::Point3d At(const MeshType &m, const VertexType &v)
+    {
+        vcg::Point3d acc(0, 0, 0);
+        for (const FaceType *f = v.cVFp(), *next = nullptr; f; f = next) {
+            const int z = (f->cV(0) == &v) ? 0 : (f->cV(1) == &v ? 1 : 2);
+            next = f->cVFp(z);
+            vcg::Point3d n;
+            double a[3];
+            if (!f->IsD() && Corners(*f, n, a)) acc += n * a[z];
+        }
+        const double len = acc.Norm();
+        return len > 0 ? acc / len : vcg::Point3d(0, 0, 0);
+    }
+
 private:
+    /// Face f's unit normal n and its angles a[k] at its vertices k; false for a degenerate face.
+    static bool Corners(const FaceType &f, vcg::Point3d &n, double a[3])
+    {
+        const vcg::Point3d p0 = vcg::Point3d::Construct(f.cV(0)->cP());
+        const vcg::Point3d p1 = vcg::Point3d::Construct(f.cV(1)->cP());
+        const vcg::Point3d p2 = vcg::Point3d::Construct(f.cV(2)->cP());
+        const vcg::Point3d e0 = p1 - p0, e1 = p2 - p1, e2 = p0 - p2;
+        const double l0 = e0.SquaredNorm(), l1 = e1.SquaredNorm(), l2 = e2.SquaredNorm();
+        const vcg::Point3d cr = e0 ^ (p2 - p0);
+        const double area2 = cr.Norm();
+        const double maxE2 = std::max(l0, std::max(l1, l2));
+        // Same test as MeshValidation::IsDegenerate (zero-area or repeated-vertex faces).
+        if (!(maxE2 > 0) || !(area2 > MV::DegenerateRatio() * maxE2)) return false;
+        n = cr / area2;
+        const double s0 = std::sqrt(l0), s1 = std::sqrt(l1), s2 = std::sqrt(l2);
+        a[0] = FastAcos(Clamp1(-(e0 * e2) / (s0 * s2)));
+        a[1] = FastAcos(Clamp1(-(e0 * e1) / (s0 * s1)));
+        a[2] = FastAcos(Clamp1(-(e1 * e2) / (s1 * s2)));
+        return true;
+    }
+
     /// acos with |error| <= 2e-8 rad (Abramowitz & Stegun 4.4.46); libm's acos was the
     /// bottleneck of the normal pass and the angle weights need nowhere near full precision.
     static double FastAcos(double x)
