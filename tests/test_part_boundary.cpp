@@ -25,6 +25,7 @@
 #include <vcg/complex/algorithms/create/marching_cubes.h>
 #include <vcg/complex/algorithms/create/mc_trivial_walker.h>
 #include <vcg/complex/algorithms/refine.h>
+#include <vcg/complex/algorithms/create/platonic.h>
 
 #ifndef GS_SEGMENTATION_DIR
 #define GS_SEGMENTATION_DIR GS_DATA_DIR "/../../shared/data/segmentation"
@@ -367,6 +368,86 @@ TEST(PartBoundaryBenchmark, TeddyPartsCapturedByThePartBoundaryEnergyOnly)
             EXPECT_EQ(points, 0);
         } else {
             EXPECT_LE(ok, cases / 4);
+        }
+    }
+}
+
+// The tessellation variants (part_variants.h, gs_parts --variant, session 29): red-green splits
+// leave the mesh closed and consistently oriented (every directed edge once, its twin present:
+// no T-junction), keep its area, and the labels' boundary is the same curve (the same length).
+namespace {
+double LabelBoundaryLength(const CMeshO &m, const std::vector<int> &lab, size_t &edges)
+{
+    std::map<std::pair<int, int>, int> face; // directed edge -> its face
+    for (size_t f = 0; f < m.face.size(); ++f)
+        for (int k = 0; k < 3; ++k)
+            face[{int(vcg::tri::Index(m, m.face[f].cV(k))), int(vcg::tri::Index(m, m.face[f].cV((k + 1) % 3)))}] = int(f);
+    double L = 0;
+    edges = 0;
+    for (const auto &e : face) {
+        if (e.first.first > e.first.second) continue;
+        auto twin = face.find({e.first.second, e.first.first});
+        if (twin == face.end()) return -1; // open or T-junction
+        ++edges;
+        if (lab[e.second] != lab[twin->second])
+            L += vcg::Distance(m.vert[e.first.first].cP(), m.vert[e.first.second].cP());
+    }
+    return face.size() == 2 * edges ? L : -1; // -1: an edge twice in one direction
+}
+} // namespace
+
+TEST(PartVariants, SplitsStayConformingAndKeepTheLabelsBoundary)
+{
+    CMeshO m;
+    vcg::tri::Octahedron(m);
+    std::vector<std::vector<int>> segs(1);
+    for (const auto &f : m.face) segs[0].push_back(vcg::Barycenter(f)[2] > 0);
+    size_t edges = 0;
+    const double L0 = LabelBoundaryLength(m, segs[0], edges); // the equator, 4 sqrt(2)
+    ASSERT_NEAR(L0, 4 * std::sqrt(2.0), 1e-6);
+    gs_parts::SplitFaces(m, std::vector<char>(m.face.size(), 1), segs); // 1-to-4
+    ASSERT_EQ(m.face.size(), 32u);
+    // then some faces only: their neighbours split in 2 or 3 (both kinds occur)
+    std::vector<char> mark(m.face.size(), 0);
+    for (size_t f = 0; f < m.face.size(); ++f) mark[f] = vcg::Barycenter(m.face[f])[0] < -0.2;
+    const size_t marked = std::count(mark.begin(), mark.end(), 1), before = m.face.size();
+    gs_parts::SplitFaces(m, mark, segs);
+    EXPECT_GT(m.face.size(), before + 3 * marked); // the green splits added faces too
+    ASSERT_EQ(segs[0].size(), m.face.size());
+    double area = 0;
+    for (const auto &f : m.face) area += vcg::DoubleArea(f) / 2;
+    EXPECT_NEAR(area, 4 * std::sqrt(3.0), 1e-5); // the octahedron's, 8 faces of sqrt(3)/2
+    EXPECT_NEAR(LabelBoundaryLength(m, segs[0], edges), L0, 1e-5);
+    EXPECT_EQ(3 * m.face.size(), 2 * edges);
+    // graded, as gs_parts runs it: the same area and boundary, conforming
+    ASSERT_TRUE(gs_parts::ApplyVariant(m, segs, "graded"));
+    EXPECT_NEAR(LabelBoundaryLength(m, segs[0], edges), L0, 1e-5);
+    EXPECT_FALSE(gs_parts::ApplyVariant(m, segs, "unknown"));
+}
+
+// On the benchmark (teddy 161): every part and every person's cut is found again on the refined
+// and graded meshes, the same curve (the same length); refine halves h; noise moves the cuts by
+// at most 0.2 h along the normal, so their length changes little.
+TEST(PartVariants, TeddyCutsCarriedOverTheVariants)
+{
+    gs_parts::Model md;
+    ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 161, md)) << GS_SEGMENTATION_DIR;
+    ASSERT_GE(md.parts.size(), 5u);
+    EXPECT_EQ(md.h0, md.h);
+    for (const char *v : {"refine", "graded", "noise"}) {
+        gs_parts::Model mv;
+        ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 161, mv, v)) << v;
+        EXPECT_NEAR(mv.h0, md.h, 1e-9 * md.h) << v;
+        ASSERT_EQ(mv.parts.size(), md.parts.size()) << v;
+        if (std::string(v) == "refine") EXPECT_NEAR(mv.h / md.h, 0.5, 0.01);
+        if (std::string(v) == "graded") EXPECT_LT(mv.h / md.h, 0.5);
+        const double tol = std::string(v) == "noise" ? 0.05 : 1e-6; // relative
+        for (size_t i = 0; i < md.parts.size(); ++i) {
+            ASSERT_EQ(mv.parts[i].cuts.size(), md.parts[i].cuts.size()) << v << " part " << i;
+            for (size_t c = 0; c < md.parts[i].cuts.size(); ++c) {
+                const double L = gs_parts::LoopLength(md.parts[i].cuts[c]);
+                EXPECT_NEAR(gs_parts::LoopLength(mv.parts[i].cuts[c]), L, tol * L) << v << " part " << i << " cut " << c;
+            }
         }
     }
 }
