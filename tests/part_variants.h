@@ -18,6 +18,7 @@
 // A split face's children keep its label in every segmentation, and a split edge's midpoint lies
 // on it: a person's cut is the same curve on the refined mesh (the same length).
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
