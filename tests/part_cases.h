@@ -27,6 +27,7 @@
 #include <vector>
 
 #include <common/ml_mesh_type.h>
+#include <part_variants.h>
 #include <snake_test_util.h>
 #include <wrap/io_trimesh/import_off.h>
 #include <vcg/complex/algorithms/update/topology.h>
@@ -64,6 +65,7 @@ struct Model
     std::string category;
     CMeshO mesh;
     double h = 1; ///< mean edge length
+    double h0 = 1; ///< the mean edge length before the tessellation variant (LoadModel; = h without one)
     std::vector<std::vector<int>> segs;
     std::vector<Part> parts;
 };
@@ -148,8 +150,10 @@ inline double IoU(const std::vector<char> &a, const std::vector<char> &b, const 
     return u > 0 ? i / u : 0;
 }
 
-/// Loads model `id` and derives its parts. False if the files are missing or disagree.
-inline bool LoadModel(const std::string &dir, int id, Model &md)
+/// Loads model `id` and derives its parts. False if the files are missing or disagree, or the
+/// variant is unknown. `variant`: a tessellation variant of the mesh, its labels carried over
+/// (part_variants.h; "" = the mesh as it is).
+inline bool LoadModel(const std::string &dir, int id, Model &md, const std::string &variant = "")
 {
     md.id = id;
     md.category = Category(id);
@@ -168,6 +172,8 @@ inline bool LoadModel(const std::string &dir, int id, Model &md)
         md.segs.push_back(lab);
     }
     if (md.segs.empty()) return false;
+    const double h0 = MeanEdgeLength(m);
+    if (!ApplyVariant(m, md.segs, variant)) return false;
     m.vert.EnableVFAdjacency();
     m.face.EnableVFAdjacency();
     m.face.EnableFFAdjacency();
@@ -190,6 +196,7 @@ inline bool LoadModel(const std::string &dir, int id, Model &md)
         total += area[f];
     }
     md.h = el / (3.0 * m.face.size());
+    md.h0 = variant.empty() || variant == "none" ? md.h : h0;
 
     // every person's label regions (once)
     std::vector<std::vector<std::vector<char>>> regions;

@@ -6,7 +6,7 @@
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
-//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--out FILE.csv]
+//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--valley-crings K] [--out FILE.csv]
 //            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B]
 //   (the width profile's PartProfile::Param slope, minTube and PartSalience::Param profilePrice,
 //   profileBand; --profile-slope 0 turns it off)
@@ -22,7 +22,7 @@
 //   host ends a converged part-boundary loop on, snake/part_boundary_end.h and valley_loop.h;
 //   --valley-concavity W: ValleyLoop::Param::concavityWeight, 0 = by energy and length alone, as
 //   before session 22; --valley-band, --valley-lambda, --valley-cscale: its bandWidth, lambda
-//   and concavityScale)
+//   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -51,6 +51,12 @@
 //   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
 //   criterion if their own cut were scored like a loop against the other people's cuts: the
 //   agreement among people that the loops' figures can be read against.)
+//   (--variant NAME: the meshes re-tessellated, the people's labels carried to the new faces and
+//   the cuts built from them as on the original (tests/part_variants.h, session 29): refine (every
+//   face split 1-to-4, h halves), graded (the half below the box's centre in x split twice, red-green:
+//   edge lengths vary ~4x), noise (vertices moved along the normal by uniform +-0.2 h); default
+//   none. --seeded-shrink S: PartBoundaryEnd::Param::seededShrink, 0 = no seeded search nor
+//   TowardBody; --no-toward-body: the seeded search without TowardBody.)
 //   (--rings 0: seeds on the representative person's cut itself, once per part: whether the
 //   energy and the Run's end hold a loop that starts where people cut, the ceiling for seeds off it.)
 //
@@ -148,7 +154,7 @@ double SideArea(CMeshO &m, const std::vector<int> &l, int rep, std::vector<char>
 
 int main(int argc, char **argv)
 {
-    std::string data = GS_SEGMENTATION_DIR, out = "parts.csv", peopleOut;
+    std::string data = GS_SEGMENTATION_DIR, out = "parts.csv", peopleOut, variant;
     std::vector<int> ids = {3, 84, 121, 161, 181, 221, 241, 281, 381};
     std::vector<std::string> energies = {"normal", "part"};
     std::vector<int> rings = {2, 3};
@@ -168,6 +174,9 @@ int main(int argc, char **argv)
         else if (a == "--balloon") balloon = std::stod(next());
         else if (a == "--out") out = next();
         else if (a == "--people") peopleOut = next();
+        else if (a == "--variant") variant = next();
+        else if (a == "--seeded-shrink") vlp.seededShrink = std::stod(next());
+        else if (a == "--no-toward-body") vlp.towardBody = false;
         else if (a == "--alpha") alpha = std::stod(next());
         else if (a == "--beta") beta = std::stod(next());
         else if (a == "--ext") ext = std::stod(next());
@@ -178,6 +187,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-band") vlp.valley.bandWidth = std::stod(next());
         else if (a == "--valley-lambda") vlp.valley.lambda = std::stod(next());
         else if (a == "--valley-cscale") vlp.valley.concavityScale = std::stod(next());
+        else if (a == "--valley-crings") vlp.valley.concavityRings = std::stoi(next());
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
@@ -216,7 +226,8 @@ int main(int argc, char **argv)
 
     std::ofstream csv(out);
     csv << "energy,id,category,part,area,agree,people,side,ring,seeds,h,start_len,final_len,len_ratio,capture,"
-           "coverage,mean_dist_h,success,converged,stopped,ops,seconds\n";
+           "coverage,mean_dist_h,success,converged,stopped,ops,seconds"
+        << (variant.empty() ? "" : ",h0,capture_h0,coverage_h0,success_h0") << "\n";
     std::ofstream people;
     if (!peopleOut.empty()) {
         people.open(peopleOut);
@@ -235,8 +246,8 @@ int main(int argc, char **argv)
     const auto t0 = std::chrono::steady_clock::now();
     for (int id : ids) {
         gs_parts::Model md;
-        if (!gs_parts::LoadModel(data, id, md)) {
-            std::fprintf(stderr, "model %d: cannot load\n", id);
+        if (!gs_parts::LoadModel(data, id, md, variant)) {
+            std::fprintf(stderr, "model %d: cannot load (variant '%s')\n", id, variant.c_str());
             continue;
         }
         std::fprintf(stderr, "model %d (%s): %zu faces, %zu people, %zu parts\n", id, md.category.c_str(),
@@ -445,7 +456,7 @@ int main(int argc, char **argv)
                                 if (chosen) chosenIdx = int(ci);
                                 anyOk = anyOk || ts.Success();
                                 double e, len, c;
-                                VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c);
+                                VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings);
                                 const double cpl = (e + vlp.valley.lambda * len + vlp.valley.concavityWeight * c) / len;
                                 const double A = SideArea(md.mesh, l, rep, in);
                                 const double width = sdf ? std::pow(sdf->SideRatio(l, [&](int v) { return in[v] == 1; },
@@ -638,7 +649,7 @@ int main(int argc, char **argv)
                             const std::vector<int> vl = ValleyLoop<CMeshO>::FindAt(md.mesh, loop, faces, surf->Energy(), s.LengthScale(), vlp.valley, ref, cost);
                             auto print = [&](const char *name, const std::vector<int> &l) {
                                 double e, len, c;
-                                ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c);
+                                ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings);
                                 const double tot = ValleyLoop<CMeshO>::Cost(md.mesh, l, surf->Energy(), ref, vlp.valley, len);
                                 std::fprintf(stderr, " %s L=%.1f E=%.1f C=%.1f tot=%.1f perL=%.3f |", name, len / md.h, e / md.h,
                                              c / md.h, tot / md.h, tot / len);
@@ -757,12 +768,22 @@ int main(int argc, char **argv)
                         for (Tally *x : {&t, &all}) ++x->n, x->ok += sc.Success(), x->points += point;
                         char row[512];
                         std::snprintf(row, sizeof row,
-                                      "%s,%d,%s,%d,%.4f,%d,%d,%s,%d,%zu,%.6g,%.6g,%.6g,%.4f,%.4f,%.4f,%.3f,%d,%d,%d,%d,%.3f\n",
+                                      "%s,%d,%s,%d,%.4f,%d,%d,%s,%d,%zu,%.6g,%.6g,%.6g,%.4f,%.4f,%.4f,%.3f,%d,%d,%d,%d,%.3f",
                                       en.c_str(), id, md.category.c_str(), p.index, p.area, p.agree, p.people,
                                       side > 0 ? "inside" : "outside", ring, seeds.size(), md.h, L0, L1, L1 / L0,
                                       sc.capture, sc.coverage, sc.meanDist, int(sc.Success()),
                                       int(s.Stats().converged), int(s.Stats().stopped), s.Stats().operations, sec);
                         csv << row;
+                        if (!variant.empty()) {
+                            // the same cut in space: the tolerance in the original mesh's h (the
+                            // benchmark's 1 h of a refined mesh is a stricter test in space)
+                            const gs_parts::Score s0 = gs_parts::Measure(loop, p, md.h0, md.h0);
+                            Tally &t0 = tally[en + "@h0"]["ALL"];
+                            ++t0.n, t0.ok += s0.Success();
+                            std::snprintf(row, sizeof row, "%.6g,%.4f,%.4f,%d", md.h0, s0.capture, s0.coverage, int(s0.Success()));
+                            csv << ',' << row;
+                        }
+                        csv << '\n';
                         csv.flush();
                     }
         }

@@ -50,6 +50,9 @@ public:
         /// when no band round the loop holds a ring, and when none round the seeded loop does
         /// either, from the seeds' ring towards the body (TowardBody): 161 -> 164/220 (+3 -0).
         double seededShrink = 0.5;
+        /// TowardBody when no band round the seeded loop holds a ring either (session 27); false
+        /// only to measure it (gs_parts --no-toward-body).
+        bool towardBody = true;
         /// The bend across the loop (session 28, LoopBend::Bend, measured crossDist units to
         /// each side): the minima rule's direction. The cheapest loops round the level loops
         /// crossStep, 2 crossStep, ... (crossSteps of them) units towards the body and towards
@@ -128,7 +131,8 @@ public:
             const double r = ref >= 0 ? ref : ref2;
             // no band round the seeded loop holds a ring either (it covers a short part's tip):
             // from the seeds' ring towards the body (session 27)
-            if (v2.empty()) VL::Record(par.valley, "toward", {}), v2 = TowardBody(m, *seeded, energy, h, par, r);
+            if (v2.empty() && par.towardBody)
+                VL::Record(par.valley, "toward", {}), v2 = TowardBody(m, *seeded, energy, h, par, r);
             if (!v2.empty() &&
                 (vl.empty() || VL::PerLength(m, v2, energy, r, par.valley) < VL::PerLength(m, vl, energy, r, par.valley)))
                 vl = v2;
