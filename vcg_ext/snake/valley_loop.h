@@ -394,10 +394,6 @@ public:
     };
 
 private:
-    /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
-    /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
-    /// the edge has one face. (Not vcg::face::DihedralAngleRad: that one is in the mesh's
-    /// scalar, float for CMeshO, and needs FF adjacency.)
     /// ConcaveAngle where the surface is concave across the edge at a scale as well: with
     /// rings > 0, 0 unless f0's and f1's normals, each averaged by area over the faces within
     /// `rings` rings (sharing a vertex, repeatedly), turn towards each other across the edge
@@ -433,6 +429,10 @@ private:
         return n;
     }
 
+    /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
+    /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
+    /// the edge has one face. (Not vcg::face::DihedralAngleRad: that one is in the mesh's
+    /// scalar, float for CMeshO, and needs FF adjacency.)
     static double ConcaveAngle(const FaceType *f0, const FaceType *f1)
     {
         if (!f0 || !f1) return 0;
