@@ -220,6 +220,10 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    if (!(variant.empty() || variant == "none" || variant == "refine" || variant == "graded" || variant == "noise")) {
+        std::fprintf(stderr, "unknown --variant %s (refine, graded, noise or none)\n", variant.c_str());
+        return 2;
+    }
     const std::map<std::string, FeatureEnergyType> types = {
         {"normal", FeatureEnergyType::NormalVariation}, {"curvature", FeatureEnergyType::CurvatureNorm},
         {"quadric", FeatureEnergyType::QuadricError}, {"part", FeatureEnergyType::PartBoundary}};
