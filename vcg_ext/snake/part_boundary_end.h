@@ -14,6 +14,7 @@
 // loop to keep.
 
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <vcg/complex/complex.h>
@@ -251,9 +252,10 @@ public:
             VL::FindAt(m, pl, pf, energy, h, par.valley, ref, c);
         }
         const double L0 = VL::LengthOf(m, vl), p0 = VL::PerLength(m, vl, energy, ref, par.valley);
-        std::vector<int> best = vl;
+        std::vector<std::vector<int>> cands;       // the candidates whose bend was measured
+        std::vector<std::pair<double, double>> bp; // theirs: (bend, cost per length)
+        int best = -1;                             // in cands; -1: vl
         double bestBend = b0, bestP = p0;
-        std::vector<std::pair<std::vector<int>, std::pair<double, double>>> seen; // candidate, (bend, cost per length)
         for (int dir = 0; dir < 2; ++dir) {
             if (!(par.crossDirs & (1 << dir))) continue;
             auto isSide = [&](int v) {
@@ -272,24 +274,26 @@ public:
                 typename VL::Param pn = par.valley;
                 pn.bandWidth = par.salience.profileBand;
                 double r = ref, c = 0;
-                const std::vector<int> cand = VL::FindAt(m, guide, gf, energy, h, pn, r, c);
+                std::vector<int> cand = VL::FindAt(m, guide, gf, energy, h, pn, r, c);
                 VL::Record(par.valley, "across", cand);
                 if (cand.size() < 3) continue;
                 const double L = VL::LengthOf(m, cand);
                 if (!(L > 0.5 * L0) || L > par.salience.growth * L0 || !(c / L <= par.crossPrice * p0)) continue;
                 const double b = LB::Bend(m, cand, h, par.crossDist, &ok);
-                if (ok) seen.push_back({cand, {b, c / L}});
-                if (ok && b > par.crossBend * bestBend && b > bestBend + par.crossGain) best = cand, bestBend = b, bestP = c / L;
+                if (!ok) continue;
+                cands.push_back(std::move(cand));
+                bp.push_back({b, c / L});
+                if (b > par.crossBend * bestBend && b > bestBend + par.crossGain) best = int(cands.size()) - 1, bestBend = b, bestP = c / L;
             }
         }
         // Param::crossDominant: the one that bends most among those better on both counts
+        // (bestBend only grows: bending more than it is bending more than the loop kept)
         if (par.crossDominant) {
-            const double b1 = bestBend, p1 = bestP;
-            for (const auto &x : seen)
-                if (x.second.first > b1 && x.second.second <= p1 && x.second.first > bestBend)
-                    best = x.first, bestBend = x.second.first;
+            const double p1 = bestP;
+            for (size_t i = 0; i < cands.size(); ++i)
+                if (bp[i].second <= p1 && bp[i].first > bestBend) best = int(i), bestBend = bp[i].first;
         }
-        return best;
+        return best < 0 ? vl : std::move(cands[best]);
     }
 
 private:
