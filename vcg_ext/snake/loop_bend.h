@@ -104,7 +104,7 @@ public:
         std::vector<double> bend;
         for (size_t i = 0; i < vl.size(); ++i) {
             if (!np[i] || !nb[i]) continue;
-            const vcg::Point3d n = AngleWeightedNormals<MeshType>::At(m, m.vert[vl[i]]);
+            const vcg::Point3d n = AngleWeightedNormals<MeshType>::At(m.vert[vl[i]]);
             if (!(n.Norm() > 0)) continue;
             const vcg::Point3d mid = (cp[i] / double(np[i]) + cb[i] / double(nb[i])) * 0.5;
             bend.push_back(((mid - vcg::Point3d::Construct(m.vert[vl[i]].cP())) * n) / h);

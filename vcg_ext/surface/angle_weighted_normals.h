@@ -56,10 +56,10 @@ public:
     }
 
     /// The angle-weighted unit normal at vertex v alone, as Update computes it (up to the order
-    /// of the sum), from the live faces round v (VF adjacency), without writing the mesh: for a
-    /// const mesh read at a few vertices, so the cost follows them, not the mesh. Zero where
-    /// every face round v is degenerate.
-    static vcg::Point3d At(const MeshType &m, const VertexType &v)
+    /// of the sum), from the live faces round v (VF adjacency, so no mesh is needed), without
+    /// writing anything: for a const mesh read at a few vertices, so the cost follows them, not
+    /// the mesh. Zero where every face round v is degenerate.
+    static vcg::Point3d At(const VertexType &v)
     {
         vcg::Point3d acc(0, 0, 0);
         for (const FaceType *f = v.cVFp(), *next = nullptr; f; f = next) {
