@@ -15,6 +15,13 @@
 // BM_Ratio/samples/closed   both methods to convergence in one iteration: speedup = time of
 //     3D update + projection / time of the embedding method, measured in the same run.
 //
+// BM_StallTest/closed/stall  the stall test's cost (SnakeRunControl::Param::stall, session 29):
+//     a 100-sample snake on bunny00 operated (untimed) until it slithers on level 0 and the
+//     test's window (2 x convergenceWindow + 1 operations) is full, then `Iterations` level-0
+//     operations timed with the test on (1) or off (0); the operations are the same either way
+//     (the test only ends a Run). Time = CPU ms per operation (other processes share the
+//     cores); ops_before_level0: the untimed operations on the coarse levels.
+//
 // method 0 = local embedding (the paper), 1 = 3D update + projection; mesh 0 = bunny00, 1 = 1.2M
 // faces; closed 1 = loop, 0 = open snake from 5 seeds. Run with --benchmark_repetitions=5 and read
 // the medians (scripts/eval.sh does).
@@ -133,6 +140,31 @@ void BM_Ratio(benchmark::State &state)
     state.counters["speedup"] = tEmb > 0 ? tProj / tEmb : 0;
 }
 
+// BM_StallTest's timed operation, a function of its own so that callgrind counts it alone:
+// valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*StallTimedStep*'
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+double StallTimedStep(Snake &s)
+{
+    return s.Step();
+}
+
+// The stall test on or off over the same level-0 operations (see the top of the file).
+void BM_StallTest(benchmark::State &state)
+{
+    Scene &sc = GetScene(0);
+    auto s = gs_test::MakeSnakeCurve(sc.mesh, sc.surf, 100, SnakeMethod::LocalEmbedding, state.range(0) != 0);
+    s->RunParam().stall = state.range(1) != 0;
+    int before = 0;
+    while (s->EnergyStage() > 0 && before < 3000) s->Step(), ++before;
+    for (int k = 0; k < 2 * s->Params().convergenceWindow + 1; ++k) s->Step();
+    if (s->EnergyStage() != 0) state.SkipWithError("the snake did not reach level 0");
+    for (auto _ : state) benchmark::DoNotOptimize(StallTimedStep(*s));
+    state.counters["samples"] = s->SampleCount();
+    state.counters["ops_before_level0"] = before;
+}
+
 } // namespace
 
 // args: samples, method (0 embedding, 1 projection), mesh (0 bunny00, 1 1.2M faces), closed
@@ -148,6 +180,10 @@ BENCHMARK(BM_Convergence)
     ->Args({100, 0, 0, 0})->Args({100, 1, 0, 0})
     ->Args({100, 0, 1, 1})->Args({300, 0, 1, 1})
     ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_StallTest)
+    ->ArgNames({"closed", "stall"})
+    ->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})
+    ->Unit(benchmark::kMillisecond)->Iterations(100)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_Ratio)
     ->ArgNames({"samples", "closed"})
     ->Args({100, 1})->Args({300, 1})->Args({100, 0})
