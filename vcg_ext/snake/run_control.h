@@ -142,8 +142,13 @@ public:
     /// along the curve does not change the curve, so it does not count.
     static double CurveMove(const Positions &a, const Positions &b, bool closed)
     {
-        const std::vector<double> d = SampleMoves(a, b, closed);
-        if (d.size() != a.size() || int(b.size()) != int(a.size())) return 1e9;
+        return WorstMove(SampleMoves(a, b, closed), a.size(), b.size());
+    }
+
+    /// CurveMove from SampleMoves(a, b) already measured (d), a and b holding na and nb samples.
+    static double WorstMove(const std::vector<double> &d, size_t na, size_t nb)
+    {
+        if (d.size() != na || nb != na) return 1e9;
         double worst = 0;
         for (double v : d) worst = std::max(worst, v);
         return worst;
@@ -288,15 +293,18 @@ private:
         state.positions.push_back(pos);
         while (int(state.positions.size()) > 2 * W + 1) state.positions.pop_front();
         bool oscillating = false;
+        std::vector<double> netMoves; // each sample's net move over the window: the stall test reads them too
         if (int(state.positions.size()) == 2 * W + 1) {
             // net displacement of the curve over the window against the way travelled: a curve
             // that only jitters in place (a sample bouncing at a corner) has gone nowhere
-            const double net = CurveMove(state.positions.front(), state.positions.back(), st.closed) / st.unit;
+            const Positions &a = state.positions.front(), &b = state.positions.back();
+            netMoves = SampleMoves(a, b, st.closed);
+            const double net = WorstMove(netMoves, a.size(), b.size()) / st.unit;
             const double travelled = std::accumulate(state.travels.begin(), state.travels.end(), 0.0);
             oscillating = net < 2 * tol || (net < 5 * tol && net < 0.25 * travelled);
         }
         const int level = Level();
-        const bool stall = level == 0 && stalled(st, tol, W); // every level-0 operation: its energy window stays aligned
+        const bool stall = level == 0 && stalled(st, tol, W, netMoves); // every level-0 operation: its energy window stays aligned
         stats.converged = still || oscillating || stall;
         if (level == 0) return;
         // On a coarse level the snake only has to reach its wells: it steps down to the next
@@ -331,8 +339,10 @@ private:
     }
 
     /// The stall test (Param): called on level 0 after state.positions took this operation's
-    /// positions.
-    bool stalled(const SnakeCurve &st, double tol, int W)
+    /// positions; d: SampleMoves from the window's first positions to its last, as the
+    /// oscillation test measured them (empty until the window is full). Measuring them again
+    /// here was 80 % of the test's cost (bench_geometric_snake BM_StallTest, session 30).
+    bool stalled(const SnakeCurve &st, double tol, int W, const std::vector<double> &d)
     {
         if (!param.stall || st.samples.empty()) return false;
         double e = 0;
@@ -341,7 +351,6 @@ private:
         state.energies.push_back(e);
         while (int(state.energies.size()) > 2 * W + 1) state.energies.pop_front();
         if (int(state.positions.size()) != 2 * W + 1 || int(state.energies.size()) != 2 * W + 1) return false;
-        const std::vector<double> d = SampleMoves(state.positions.front(), state.positions.back(), st.closed);
         if (d.empty()) return false;
         double mean = 0;
         for (double v : d) mean += v;
@@ -361,11 +370,11 @@ private:
         if (state.runLength < 0) state.runLength = std::max(L, state.lastLength);
         const bool shrinking = state.lastLength > 0 && L < state.lastLength - 1e-6 * st.unit;
         state.lastLength = L;
-        double e = 0;
-        for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
-        e /= double(st.samples.size());
         const bool tiny = L < 2 * st.unit;
         if (!(tiny || ((shrinking || stats.converged) && L < 0.25 * state.runLength))) return;
+        double e = 0; // for the message alone (it was read after every operation)
+        for (const auto &s : st.samples) e += surf->EnergyAt(0, s.p);
+        e /= double(st.samples.size());
         char msg[300];
         std::snprintf(msg, sizeof msg,
                       "the closed snake is collapsing where no feature holds it (length %.3g, %.0f %% of its length "
