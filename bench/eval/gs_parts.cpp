@@ -35,7 +35,8 @@
 //   in h), and where the best-covered person's uncovered cut vertices lie: edge hops from the
 //   loop, + on the part's side, with their energy against the loop's. GS_PARTS_STAGES=1: per
 //   loop, its length, capture and coverage after each stage of the Run's end: the snake's own
-//   loop, the first band's valley loop, the descent over bands, part salience. GS_PARTS_SEEDED=1:
+//   loop, the first band's valley loop, the descent over bands, part salience, the bend across,
+//   the seeded search with TowardBody (final, the row's loop). GS_PARTS_SEEDED=1:
 //   per loop, the stop, the seeded and the final length, and the valley loop (FinishFrom) found
 //   round the loop where the Run ended and round the seeded loop, with capture/coverage and
 //   cost per length, or "none" when no band holds a ring. GS_PARTS_CHAIN=1: per loop, the loops
@@ -51,6 +52,13 @@
 //   GS_PARTS_SUPPORT=R,S sets the capture's radius in h and share (1,0.8). With GS_PARTS_MODE=1
 //   too, a MODE line per loop: the valley loop searched again from perturbed guides and
 //   settings, whether the loop found most often succeeds, against the chosen one.)
+//   (Session 30, noise: with GS_PARTS_DIAG=1 a CONCAVITY line per mesh, the part energy's share of
+//   concave vertices and its reference c_ref (their median concavity) with quartiles;
+//   GS_PARTS_CLEAN_ENERGY=1 with --variant noise: the energy computed on the original mesh and
+//   read on the noisy one's vertices (noise moves vertices only), what noise costs through the
+//   energy against the geometry; GS_PARTS_CLEAN_LOOP=1 with --variant noise: a CLEANLOOP line per
+//   row, the loop found on the original mesh from the same seeds, snapped to its vertex loop and
+//   scored on the original and on the noisy vertices: what noise costs through the criterion alone.)
 //   (--people FILE.csv: per part, how many of the people who cut it off would pass the success
 //   criterion if their own cut were scored like a loop against the other people's cuts: the
 //   agreement among people that the loops' figures can be read against.)
@@ -272,8 +280,43 @@ int main(int argc, char **argv)
                 return 2;
             }
             FeatureEnergy<CMeshO>::Compute(md.mesh, ty->second, smoothing);
+            if (std::getenv("GS_PARTS_CLEAN_ENERGY") && variant == "noise") {
+                // session 30: the energy computed on the original mesh, on the noisy one's vertices
+                // (noise moves vertices only): what noise costs through the energy against the geometry
+                gs_parts::Model clean;
+                if (gs_parts::LoadModel(data, id, clean, "") && clean.mesh.vert.size() == md.mesh.vert.size()) {
+                    FeatureEnergy<CMeshO>::Compute(clean.mesh, ty->second, smoothing);
+                    for (size_t i = 0; i < md.mesh.vert.size(); ++i) md.mesh.vert[i].Q() = clean.mesh.vert[i].cQ();
+                } else
+                    std::fprintf(stderr, "model %d: no clean energy\n", id);
+            }
             auto surf = std::make_shared<Surface>(
                 md.mesh, capture >= 0 ? capture : SnakeEnergySource<CMeshO>::CaptureSmoothingFor(false, ty->second));
+            // GS_PARTS_CLEAN_LOOP=1 with --variant noise (session 30): each row's loop found on the original
+            // mesh from the same seed vertices, then read on the noisy vertices and scored there against
+            // the noisy cuts: what the noise costs through the criterion alone (a loop that does not move)
+            std::unique_ptr<gs_parts::Model> cleanMd;
+            std::shared_ptr<Surface> cleanSurf;
+            if (std::getenv("GS_PARTS_CLEAN_LOOP") && variant == "noise" && valleyLoop) {
+                cleanMd.reset(new gs_parts::Model);
+                if (gs_parts::LoadModel(data, id, *cleanMd, "") && cleanMd->mesh.vert.size() == md.mesh.vert.size()) {
+                    FeatureEnergy<CMeshO>::Compute(cleanMd->mesh, ty->second, smoothing);
+                    cleanSurf = std::make_shared<Surface>(
+                        cleanMd->mesh, capture >= 0 ? capture : SnakeEnergySource<CMeshO>::CaptureSmoothingFor(false, ty->second));
+                }
+            }
+            if (std::getenv("GS_PARTS_DIAG") && ty->second == FeatureEnergyType::PartBoundary) {
+                // the part energy's concavity field (session 30, noise): the share of concave vertices,
+                // the reference (median of the concave ones) and the mean energy on the people's cuts
+                const std::vector<double> cv = PartBoundaryEnergy<CMeshO>::Concavity(md.mesh, 1.0 + 1.0 * std::max(0, smoothing));
+                std::vector<double> pos;
+                for (size_t v = 0; v < cv.size(); ++v)
+                    if (!md.mesh.vert[v].IsD() && cv[v] > 0) pos.push_back(cv[v]);
+                std::sort(pos.begin(), pos.end());
+                auto q = [&](double f) { return pos.empty() ? 0.0 : pos[size_t(f * (pos.size() - 1))]; };
+                std::fprintf(stderr, "CONCAVITY %d: concave %.3f of %zu, c_ref %.4f, q25 %.4f q75 %.4f q90 %.4f\n", id,
+                             double(pos.size()) / md.mesh.vn, size_t(md.mesh.vn), q(0.5), q(0.25), q(0.75), q(0.9));
+            }
             if (std::getenv("GS_PARTS_DIAG"))
                 for (const gs_parts::Part &p : md.parts) {
                     std::vector<int> dist, side;
@@ -311,21 +354,59 @@ int main(int argc, char **argv)
                             // capture/coverage after each stage of the Run's end: the snake's own loop,
                             // the first band's valley loop, the descent, part salience
                             std::fprintf(stderr, "STAGES %d %d %s %d |", id, p.index, side > 0 ? "in" : "out", ring);
-                            for (int st = 0; st < 4; ++st) {
+                            // (session 30: the bend across split from salience, and the seeded search with
+                            // TowardBody last: "final" is the row's loop)
+                            for (int st = 0; st < 6; ++st) {
                                 Snake t(surf, sp); // not copyable: the same Run again (deterministic)
                                 t.InitFromSeeds(seeds, true);
                                 t.Run(maxOps);
                                 PartBoundaryEnd<CMeshO>::Param q = vlp;
                                 if (st < 3) q.salience.exponent = 0;
                                 if (st < 2) q.valley.iterations = 1;
-                                if (st > 0) PartBoundaryEnd<CMeshO>::FinishRun(t, ty->second, false, q);
+                                if (st < 4) q.crossBend = 0;
+                                if (st > 0) PartBoundaryEnd<CMeshO>::FinishRun(t, ty->second, false, q, st == 5 ? &seeded : nullptr);
                                 const std::vector<vcg::Point3d> tl = t.PolylinePositions();
-                                const gs_parts::Score ts = gs_parts::Measure(tl, p, md.h, md.h);
-                                static const char *names[] = {"snake", "band", "descent", "salience"};
-                                std::fprintf(stderr, " %s L=%.1fh %.2f/%.2f |", names[st], gs_parts::LoopLength(tl) / md.h,
-                                             ts.capture, ts.coverage);
+                                // in the original mesh's h on a variant (success_h0), as the row
+                                const double hs = md.h0 > 0 ? md.h0 : md.h;
+                                const gs_parts::Score ts = gs_parts::Measure(tl, p, hs, hs);
+                                static const char *names[] = {"snake", "band", "descent", "salience", "bend", "final"};
+                                std::fprintf(stderr, " %s L=%.1fh %.2f/%.2f %d |", names[st], gs_parts::LoopLength(tl) / md.h,
+                                             ts.capture, ts.coverage, int(ts.Success()));
                             }
                             std::fprintf(stderr, "\n");
+                        }
+                        if (cleanSurf) {
+                            const gs_parts::Part *pc = nullptr;
+                            for (const gs_parts::Part &x : cleanMd->parts)
+                                if (x.inside == p.inside) pc = &x;
+                            Snake t(cleanSurf, sp);
+                            t.InitFromSeeds(seeds, true);
+                            const auto sc0 = PartBoundaryEnd<CMeshO>::Seeded::Of(t);
+                            t.Run(maxOps);
+                            PartBoundaryEnd<CMeshO>::FinishRun(t, ty->second, false, vlp, &sc0);
+                            // the loop's samples (along its edges) snapped to the nearest vertex: its vertex loop
+                            std::vector<vcg::Point3d> cl, nl;
+                            int last = -1;
+                            for (const vcg::Point3d &x : t.PolylinePositions()) {
+                                int best = -1;
+                                double bd = 0;
+                                for (size_t i = 0; i < cleanMd->mesh.vert.size(); ++i) {
+                                    const double d = vcg::SquaredDistance(x, vcg::Point3d::Construct(cleanMd->mesh.vert[i].cP()));
+                                    if (best < 0 || d < bd) best = int(i), bd = d;
+                                }
+                                if (best == last) continue;
+                                last = best;
+                                cl.push_back(vcg::Point3d::Construct(cleanMd->mesh.vert[best].cP()));
+                                nl.push_back(vcg::Point3d::Construct(md.mesh.vert[best].cP()));
+                            }
+                            if (pc && cl.size() >= 3) {
+                                const gs_parts::Score a = gs_parts::Measure(cl, *pc, cleanMd->h, cleanMd->h);
+                                const gs_parts::Score b = gs_parts::Measure(nl, p, md.h0, md.h0);
+                                std::fprintf(stderr, "CLEANLOOP %d %d %s %d clean %d %.2f/%.2f noisy %d %.2f/%.2f\n", id, p.index,
+                                             side > 0 ? "in" : "out", ring, int(a.Success()), a.capture, a.coverage, int(b.Success()),
+                                             b.capture, b.coverage);
+                            } else
+                                std::fprintf(stderr, "CLEANLOOP %d %d %s %d none pc=%d %zu/%zu\n", id, p.index, side > 0 ? "in" : "out", ring, pc ? 1 : 0, nl.size(), cl.size());
                         }
                         if (std::getenv("GS_PARTS_SEEDED") && valleyLoop) {
                             // the seeded search: the valley loop round the loop the Run started from,
