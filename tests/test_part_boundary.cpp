@@ -570,6 +570,46 @@ TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
     EXPECT_FALSE(PartBoundaryEnd<CMeshO>::FinishRun(t, FeatureEnergyType::PartBoundary, false));
 }
 
+// FinishRun records the loop after each of its stages (ValleyLoop::Param::record, session 31: what
+// bench/eval/gs_parts GS_PARTS_CHAIN prints instead of replaying the rule), in its order, the last
+// the Run's loop, and recording changes nothing.
+TEST(ValleyLoop, RecordsTheLoopAfterEachStageOfTheRunsEnd)
+{
+    CMeshO m;
+    MakeRevolved(m, Waist, 0.0);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const double h = surf->MeanEdge();
+    const std::vector<int> seeds = RingSeeds(m, Waist, M_PI / 2 + 3 * h / Waist(M_PI / 2));
+    Snake s(surf), t(surf), u(surf);
+    for (Snake *x : {&s, &t, &u}) {
+        x->InitFromSeeds(seeds, true);
+        x->Run(400);
+    }
+    ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
+    PartBoundaryEnd<CMeshO>::Param par;
+    std::vector<std::pair<std::string, std::vector<int>>> rec;
+    par.valley.record = [&](const char *st, const std::vector<int> &l) {
+        if (std::string(st).compare(0, 4, "end:") == 0) rec.push_back({st, l});
+    };
+    ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par));
+    ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(t, FeatureEnergyType::PartBoundary, false));
+    ASSERT_EQ(rec.size(), 4u);
+    const char *order[] = {"end:descent", "end:salience", "end:seeded", "end:bend"};
+    for (size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(rec[i].first, order[i]);
+        EXPECT_GE(rec[i].second.size(), 3u) << order[i];
+    }
+    // the last record is the Run's loop, and the Run's loop is the one FinishRun gives unrecorded
+    u.SetClosedVertexLoop(rec.back().second);
+    const std::vector<P3> a = s.PolylinePositions(), b = t.PolylinePositions(), c = u.PolylinePositions();
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_EQ(a.size(), c.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_LT((a[i] - b[i]).Norm(), 1e-12 * h);
+        EXPECT_LT((a[i] - c[i]).Norm(), 1e-12 * h);
+    }
+}
+
 namespace {
 
 // A tube with a waist at z = 0 (radius 1 - 0.3 exp(-(z/0.35)^2), z in [-1, 1.2], open ends)

@@ -41,8 +41,8 @@
 //   round the loop where the Run ended and round the seeded loop, with capture/coverage and
 //   cost per length, or "none" when no band holds a ring. GS_PARTS_CHAIN=1: per loop, the loops
 //   FinishRun makes in its order -- the snake's own, after the band and descent, after salience,
-//   after the seeded search, after the bend (final) -- with success, length, cost per length,
-//   bend and the salience score without the width factor.)
+//   after the seeded search, after the bend (final), as FinishRun records them -- with success,
+//   length, cost per length, bend and the salience score without the width factor.)
 //   (GS_PARTS_ORACLE=FILE.csv: per loop, every edge loop the Run's end found (ValleyLoop::Param::
 //   record: bands, descent steps, salience's and the profile's candidates, round the snake's
 //   loop, the seeded one and TowardBody's ring), one row each with its stage, whether it was
@@ -437,9 +437,19 @@ int main(int argc, char **argv)
                         std::vector<int> crossFrom; // the loop Across started from (session 29)
                         const auto ownSeed = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
                         PartBoundaryEnd<CMeshO>::Param run = vlp;
-                        if (oracleOut)
+                        // GS_PARTS_CHAIN: the loop after each of FinishRun's stages, as it records them
+                        // ("end:...", the first of each: "end:descent" round the snake's loop)
+                        const bool chainOn = std::getenv("GS_PARTS_CHAIN") && valleyLoop;
+                        std::vector<std::pair<std::string, std::vector<int>>> chain;
+                        if (oracleOut || chainOn)
                             run.valley.record = [&](const char *st, const std::vector<int> &l) {
                                 const std::string x = st;
+                                if (x.compare(0, 4, "end:") == 0) {
+                                    for (const auto &c : chain)
+                                        if (c.first == x) return;
+                                    return chain.push_back({x, l});
+                                }
+                                if (!oracleOut) return;
                                 if (l.empty() && (x == "seeded" || x == "toward")) return (void)(origin = x);
                                 if (x == "crossfrom") return (void)(crossFrom = l);
                                 if (x != "descent") last = x;
@@ -452,41 +462,26 @@ int main(int argc, char **argv)
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
                         const bool point = L1 < 0.25 * L0 || s.Stats().stopped;
-                        if (std::getenv("GS_PARTS_CHAIN") && valleyLoop) {
-                            // session 30: the loops FinishRun makes, in its order (the same public steps
-                            // again on the same Run): the snake's own loop, the valley loop after the band
-                            // and the descent (salience off), after salience, after the seeded search
-                            // (TowardBody included), after the bend across (final); each with success,
-                            // length, cost per length (FinishRun's concavity reference), bend across and
-                            // the salience score without the width factor (cpl x (L / sqrt(A_part))^exponent)
+                        if (chainOn) {
+                            // session 30: the loops FinishRun makes, in its order: the snake's own loop,
+                            // the valley loop after the band and the descent (salience off), after salience,
+                            // after the seeded search (TowardBody included), after the bend across (final);
+                            // each with success, length, cost per length (FinishRun's concavity reference),
+                            // bend across and the salience score without the width factor
+                            // (cpl x (L / sqrt(A_part))^exponent). Session 31: as FinishRun recorded them
+                            // (ValleyLoop::Param::record), not replayed here
                             typedef PartBoundaryEnd<CMeshO> End;
                             typedef ValleyLoop<CMeshO> VL;
-                            Snake t(surf, sp); // not copyable: the same Run again (deterministic)
-                            t.InitFromSeeds(seeds, true);
-                            t.Run(maxOps);
-                            const auto own = End::Seeded::Of(t);
-                            const double hs = t.LengthScale();
-                            std::vector<std::pair<const char *, std::vector<int>>> chain;
-                            double ref = -1, cost = 0, refD = -1, costD = 0;
-                            if (t.Stats().stop == SnakeStop::Converged) {
+                            const auto &own = ownSeed;
+                            const double hs = s.LengthScale();
+                            // the concavity reference FinishRun priced with: its band round the snake's loop
+                            // (FinishFrom's, which the descent and salience do not change)
+                            double ref = -1, cost = 0;
+                            if (!chain.empty()) {
                                 End::Param nd = vlp;
                                 nd.salience.exponent = 0;
-                                chain.push_back({"descent", End::FinishFrom(md.mesh, own.loop, own.faces, surf->Energy(), hs, nd, refD, costD)});
-                                std::vector<int> vl = End::FinishFrom(md.mesh, own.loop, own.faces, surf->Energy(), hs, vlp, ref, cost);
-                                chain.push_back({"salience", vl});
-                                if (seeded.loop.size() >= 3 && vlp.seededShrink > 0 &&
-                                    (VL::PolyLength(own.loop) < vlp.seededShrink * VL::PolyLength(seeded.loop) || vl.empty())) {
-                                    double ref2 = -1, cost2 = 0;
-                                    std::vector<int> v2 = End::FinishFrom(md.mesh, seeded.loop, seeded.faces, surf->Energy(), hs, vlp, ref2, cost2);
-                                    const double r = ref >= 0 ? ref : ref2;
-                                    if (v2.empty() && vlp.towardBody) v2 = End::TowardBody(md.mesh, seeded, surf->Energy(), hs, vlp, r);
-                                    if (!v2.empty() && (vl.empty() || VL::PerLength(md.mesh, v2, surf->Energy(), r, vlp.valley) <
-                                                                          VL::PerLength(md.mesh, vl, surf->Energy(), r, vlp.valley)))
-                                        vl = v2;
-                                }
-                                chain.push_back({"seeded", vl});
-                                if (!vl.empty() && vlp.crossBend > 0) vl = End::Across(md.mesh, vl, surf->Energy(), hs, vlp, ref >= 0 ? ref : -1);
-                                chain.push_back({"final", vl});
+                                nd.valley.iterations = 1;
+                                End::FinishFrom(md.mesh, own.loop, own.faces, surf->Energy(), hs, nd, ref, cost);
                             }
                             std::vector<int> dist, sideOf;
                             gs_parts::Rings(md.mesh, p, dist, sideOf);
@@ -498,8 +493,10 @@ int main(int argc, char **argv)
                                          int(sc.Success()), int(so.Success()), gs_parts::LoopLength(own.loop) / md.h);
                             std::vector<char> in;
                             for (const auto &c : chain) {
+                                const char *name = c.first.c_str() + 4; // without "end:"
+                                if (name == std::string("bend")) name = "final";
                                 if (c.second.size() < 3) {
-                                    std::fprintf(stderr, " | %s none", c.first);
+                                    std::fprintf(stderr, " | %s none", name);
                                     continue;
                                 }
                                 std::vector<vcg::Point3d> pl;
@@ -509,7 +506,7 @@ int main(int argc, char **argv)
                                 const double cpl = VL::PerLength(md.mesh, c.second, surf->Energy(), ref, vlp.valley);
                                 bool bok = false;
                                 const double bend = LoopBend<CMeshO>::Bend(md.mesh, c.second, hs, vlp.crossDist, &bok);
-                                std::fprintf(stderr, " | %s %d L=%.1fh cpl=%.4f bend=%s sal=%.4f", c.first, int(ts.Success()), L / md.h, cpl,
+                                std::fprintf(stderr, " | %s %d L=%.1fh cpl=%.4f bend=%s sal=%.4f", name, int(ts.Success()), L / md.h, cpl,
                                              bok ? std::to_string(bend).c_str() : "-",
                                              A > 0 ? cpl * std::pow(L / std::sqrt(A), vlp.salience.exponent) : -1.0);
                             }

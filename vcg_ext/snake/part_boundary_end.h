@@ -117,6 +117,7 @@ public:
         const Seeded own = Seeded::Of(s); // the loop where the Run ended
         double ref = -1, cost = 0;
         std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);
+        VL::Record(par.valley, "end:salience", vl);
         // a loop that converged at less than seededShrink of the length it was seeded with may
         // have slid past the valley onto the part (issue 33, session 25), and one round which no
         // band holds a ring has shrunk towards a short part's tip (session 27): the valley loop
@@ -138,10 +139,12 @@ public:
                 (vl.empty() || VL::PerLength(m, v2, energy, r, par.valley) < VL::PerLength(m, vl, energy, r, par.valley)))
                 vl = v2;
         }
-        if (vl.empty()) return false;
+        VL::Record(par.valley, "end:seeded", vl);
         // the user's seeds may lie on either side of the boundary: the loop's neighbours towards
         // the body and the part, by the bend across (session 28)
-        if (par.crossBend > 0) vl = Across(m, vl, energy, h, par, ref >= 0 ? ref : -1);
+        if (!vl.empty() && par.crossBend > 0) vl = Across(m, vl, energy, h, par, ref >= 0 ? ref : -1);
+        VL::Record(par.valley, "end:bend", vl);
+        if (vl.empty()) return false;
         s.SetClosedVertexLoop(vl);
         return true;
     }
@@ -164,9 +167,12 @@ public:
             vl = VL::FindAt(m, loop, faces, energy, h, par.valley, ref, cost);
             VL::Record(par.valley, "band", vl);
         }
-        if (vl.size() < 3 || !(VL::LengthOf(m, vl) > 0.5 * len0)) return {};
-        vl = VL::Descend(m, vl, cost, energy, h, par.valley, ref, 0.5 * len0);
-        if (par.salience.exponent > 0) {
+        if (vl.size() < 3 || !(VL::LengthOf(m, vl) > 0.5 * len0))
+            vl.clear();
+        else
+            vl = VL::Descend(m, vl, cost, energy, h, par.valley, ref, 0.5 * len0);
+        VL::Record(par.valley, "end:descent", vl);
+        if (!vl.empty() && par.salience.exponent > 0) {
             // candidates round the same part, each found and descended like this loop, but only
             // those mostly beyond the band the descent searched: within it its choice stands
             std::vector<vcg::Point3d> pl;

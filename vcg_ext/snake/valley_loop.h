@@ -101,7 +101,10 @@ public:
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
         /// Run's end finds and the stage that found it ("band", "descent", "salience",
         /// "profile"); an empty loop marks where the searches from the seeded loop ("seeded")
-        /// and TowardBody ("toward") begin. Empty: nothing is recorded, nothing changes.
+        /// and TowardBody ("toward") begin. PartBoundaryEnd's stages record their loop (empty:
+        /// none) as "end:descent" (each FinishFrom: the band and the descent, salience off),
+        /// "end:salience", "end:seeded" (the seeded search and TowardBody) and "end:bend" (the
+        /// Run's loop) (GS_PARTS_CHAIN). Empty: nothing is recorded, nothing changes.
         std::function<void(const char *, const std::vector<int> &)> record;
     };
 
