@@ -92,7 +92,9 @@
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/snake/geometric_snake.h>
 #include <vcg_ext/snake/part_boundary_end.h>
+#include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/fitting3.h>
+#include <vcg/space/index/grid_static_ptr.h>
 
 using namespace vcg::tri;
 typedef GeometricSnake<CMeshO> Snake;
@@ -297,12 +299,15 @@ int main(int argc, char **argv)
             // the noisy cuts: what the noise costs through the criterion alone (a loop that does not move)
             std::unique_ptr<gs_parts::Model> cleanMd;
             std::shared_ptr<Surface> cleanSurf;
+            std::unique_ptr<vcg::GridStaticPtr<CVertexO, Scalarm>> cleanGrid; // for the loop's vertex loop
             if (std::getenv("GS_PARTS_CLEAN_LOOP") && variant == "noise" && valleyLoop) {
                 cleanMd.reset(new gs_parts::Model);
                 if (gs_parts::LoadModel(data, id, *cleanMd, "") && cleanMd->mesh.vert.size() == md.mesh.vert.size()) {
                     FeatureEnergy<CMeshO>::Compute(cleanMd->mesh, ty->second, smoothing);
                     cleanSurf = std::make_shared<Surface>(
                         cleanMd->mesh, capture >= 0 ? capture : SnakeEnergySource<CMeshO>::CaptureSmoothingFor(false, ty->second));
+                    cleanGrid.reset(new vcg::GridStaticPtr<CVertexO, Scalarm>);
+                    cleanGrid->Set(cleanMd->mesh.vert.begin(), cleanMd->mesh.vert.end());
                 }
             }
             if (std::getenv("GS_PARTS_DIAG") && ty->second == FeatureEnergyType::PartBoundary) {
@@ -386,14 +391,15 @@ int main(int argc, char **argv)
                             PartBoundaryEnd<CMeshO>::FinishRun(t, ty->second, false, vlp, &sc0);
                             // the loop's samples (along its edges) snapped to the nearest vertex: its vertex loop
                             std::vector<vcg::Point3d> cl, nl;
+                            // (vcglib's uniform grid over the clean mesh's vertices, session 31; the loop's
+                            // samples lie on it, so its box's diagonal bounds the search)
                             int last = -1;
                             for (const vcg::Point3d &x : t.PolylinePositions()) {
-                                int best = -1;
-                                double bd = 0;
-                                for (size_t i = 0; i < cleanMd->mesh.vert.size(); ++i) {
-                                    const double d = vcg::SquaredDistance(x, vcg::Point3d::Construct(cleanMd->mesh.vert[i].cP()));
-                                    if (best < 0 || d < bd) best = int(i), bd = d;
-                                }
+                                Scalarm dist = 0;
+                                const CVertexO *v = vcg::tri::GetClosestVertex(cleanMd->mesh, *cleanGrid, Point3m::Construct(x),
+                                                                               Scalarm(cleanGrid->bbox.Diag()), dist);
+                                if (!v) continue;
+                                const int best = int(vcg::tri::Index(cleanMd->mesh, v));
                                 if (best == last) continue;
                                 last = best;
                                 cl.push_back(vcg::Point3d::Construct(cleanMd->mesh.vert[best].cP()));
