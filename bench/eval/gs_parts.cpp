@@ -6,7 +6,7 @@
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
-//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--valley-crings K] [--out FILE.csv]
+//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--valley-crings K] [--valley-flat K] [--out FILE.csv]
 //            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B]
 //   (the width profile's PartProfile::Param slope, minTube and PartSalience::Param profilePrice,
 //   profileBand; --profile-slope 0 turns it off)
@@ -22,7 +22,8 @@
 //   host ends a converged part-boundary loop on, snake/part_boundary_end.h and valley_loop.h;
 //   --valley-concavity W: ValleyLoop::Param::concavityWeight, 0 = by energy and length alone, as
 //   before session 22; --valley-band, --valley-lambda, --valley-cscale: its bandWidth, lambda
-//   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone)
+//   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone;
+//   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -201,6 +202,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-lambda") vlp.valley.lambda = std::stod(next());
         else if (a == "--valley-cscale") vlp.valley.concavityScale = std::stod(next());
         else if (a == "--valley-crings") vlp.valley.concavityRings = std::stoi(next());
+        else if (a == "--valley-flat") vlp.valley.flatTolerance = std::stod(next());
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
@@ -610,7 +612,7 @@ int main(int argc, char **argv)
                                 if (chosen) chosenIdx = int(ci);
                                 anyOk = anyOk || ts.Success();
                                 double e, len, c;
-                                VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings);
+                                VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings, vlp.valley.flatTolerance);
                                 const double cpl = (e + vlp.valley.lambda * len + vlp.valley.concavityWeight * c) / len;
                                 const double A = SideArea(md.mesh, l, rep, in);
                                 const double width = sdf ? std::pow(sdf->SideRatio(l, [&](int v) { return in[v] == 1; },
@@ -803,7 +805,7 @@ int main(int argc, char **argv)
                             const std::vector<int> vl = ValleyLoop<CMeshO>::FindAt(md.mesh, loop, faces, surf->Energy(), s.LengthScale(), vlp.valley, ref, cost);
                             auto print = [&](const char *name, const std::vector<int> &l) {
                                 double e, len, c;
-                                ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings);
+                                ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings, vlp.valley.flatTolerance);
                                 const double tot = ValleyLoop<CMeshO>::Cost(md.mesh, l, surf->Energy(), ref, vlp.valley, len);
                                 std::fprintf(stderr, " %s L=%.1f E=%.1f C=%.1f tot=%.1f perL=%.3f |", name, len / md.h, e / md.h,
                                              c / md.h, tot / md.h, tot / len);
