@@ -612,7 +612,7 @@ int main(int argc, char **argv)
                                 if (chosen) chosenIdx = int(ci);
                                 anyOk = anyOk || ts.Success();
                                 double e, len, c;
-                                VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings, vlp.valley.flatTolerance);
+                                VL::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley);
                                 const double cpl = (e + vlp.valley.lambda * len + vlp.valley.concavityWeight * c) / len;
                                 const double A = SideArea(md.mesh, l, rep, in);
                                 const double width = sdf ? std::pow(sdf->SideRatio(l, [&](int v) { return in[v] == 1; },
@@ -805,7 +805,7 @@ int main(int argc, char **argv)
                             const std::vector<int> vl = ValleyLoop<CMeshO>::FindAt(md.mesh, loop, faces, surf->Energy(), s.LengthScale(), vlp.valley, ref, cost);
                             auto print = [&](const char *name, const std::vector<int> &l) {
                                 double e, len, c;
-                                ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley.concavityRings, vlp.valley.flatTolerance);
+                                ValleyLoop<CMeshO>::CostParts(md.mesh, l, surf->Energy(), ref, e, len, c, vlp.valley);
                                 const double tot = ValleyLoop<CMeshO>::Cost(md.mesh, l, surf->Energy(), ref, vlp.valley, len);
                                 std::fprintf(stderr, " %s L=%.1f E=%.1f C=%.1f tot=%.1f perL=%.3f |", name, len / md.h, e / md.h,
                                              c / md.h, tot / md.h, tot / len);

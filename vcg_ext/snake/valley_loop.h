@@ -133,7 +133,7 @@ public:
                        double &len)
     {
         double e, c;
-        CostParts(m, l, energy, ref, e, len, c, par.concavityRings, par.flatTolerance);
+        CostParts(m, l, energy, ref, e, len, c, par);
         return e + par.lambda * len + par.concavityWeight * c;
     }
 
@@ -347,12 +347,12 @@ public:
 
     static double LengthOf(const MeshType &m, const std::vector<int> &l) { return PartSalience<MeshType>::Length(m, l); }
 
-    /// The parts of an edge loop's cost under FindAt's pricing with concavity reference ref:
-    /// sum len * E, sum len, sum len * (1 - c) (weights not applied: Cost weighs them; the
-    /// diagnostics of gs_parts print them apart).
+    /// The parts of an edge loop's cost under FindAt's pricing with concavity reference ref
+    /// (par's concavityRings and flatTolerance): sum len * E, sum len, sum len * (1 - c)
+    /// (weights not applied: Cost weighs them; the diagnostics of gs_parts print them apart).
     template <class EnergyVector>
     static void CostParts(const MeshType &m, const std::vector<int> &vl, const EnergyVector &energy, double ref,
-                          double &eSum, double &lSum, double &cSum, int rings = 0, double flat = 0)
+                          double &eSum, double &lSum, double &cSum, const Param &par = Param())
     {
         eSum = lSum = cSum = 0;
         for (size_t i = 0; i < vl.size(); ++i) {
@@ -363,7 +363,7 @@ public:
                 if (f->cV(0) == vb || f->cV(1) == vb || f->cV(2) == vb) (f0 ? f1 : f0) = f;
             });
             const double len = vcg::Distance(va->cP(), vb->cP());
-            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, f0, f1, rings, flat) / ref) : 0.0;
+            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, f0, f1, par.concavityRings, par.flatTolerance) / ref) : 0.0;
             eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
             lSum += len;
             cSum += len * (1 - c);
@@ -449,7 +449,7 @@ private:
     /// the edge has one face, or when the apex lies within `flat` times the scalar's rounding of
     /// f0's plane (Param::flatTolerance). (Not vcg::face::DihedralAngleRad: that one is in the
     /// mesh's scalar, float for CMeshO, and needs FF adjacency.)
-    static double ConcaveAngle(const FaceType *f0, const FaceType *f1, double flat = 0)
+    static double ConcaveAngle(const FaceType *f0, const FaceType *f1, double flat)
     {
         if (!f0 || !f1) return 0;
         vcg::Point3d n0 = vcg::Point3d::Construct(vcg::TriangleNormal(*f0));
