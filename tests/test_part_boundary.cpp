@@ -572,7 +572,8 @@ TEST(ValleyLoop, EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun)
 
 // FinishRun records the loop after each of its stages (ValleyLoop::Param::record, session 31: what
 // bench/eval/gs_parts GS_PARTS_CHAIN prints instead of replaying the rule), in its order, the last
-// the Run's loop, and recording changes nothing.
+// the Run's loop, and its concavity reference (Param::recordReference, session 32); recording
+// changes nothing.
 TEST(ValleyLoop, RecordsTheLoopAfterEachStageOfTheRunsEnd)
 {
     CMeshO m;
@@ -591,8 +592,19 @@ TEST(ValleyLoop, RecordsTheLoopAfterEachStageOfTheRunsEnd)
     par.valley.record = [&](const char *st, const std::vector<int> &l) {
         if (std::string(st).compare(0, 4, "end:") == 0) rec.push_back({st, l});
     };
+    // session 32: the concavity reference it priced with, recorded too: FinishFrom's round the
+    // snake's loop (what GS_PARTS_CHAIN searched again for before)
+    double ref = -1, ref2 = -1, cost2 = 0;
+    int refCalls = 0;
+    par.recordReference = [&](double r) { ref = r, ++refCalls; };
+    const auto own = PartBoundaryEnd<CMeshO>::Seeded::Of(s);
+    PartBoundaryEnd<CMeshO>::FinishFrom(m, own.loop, own.faces, surf->Energy(), s.LengthScale(), PartBoundaryEnd<CMeshO>::Param(),
+                                        ref2, cost2);
     ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par));
     ASSERT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(t, FeatureEnergyType::PartBoundary, false));
+    EXPECT_EQ(refCalls, 1);
+    EXPECT_GT(ref, 0);
+    EXPECT_EQ(ref, ref2);
     ASSERT_EQ(rec.size(), 4u);
     const char *order[] = {"end:descent", "end:salience", "end:seeded", "end:bend"};
     for (size_t i = 0; i < 4; ++i) {

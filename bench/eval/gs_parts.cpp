@@ -449,6 +449,8 @@ int main(int argc, char **argv)
                         // ("end:...", the first of each: "end:descent" round the snake's loop)
                         const bool chainOn = std::getenv("GS_PARTS_CHAIN") && valleyLoop;
                         std::vector<std::pair<std::string, std::vector<int>>> chain;
+                        double chainRef = -1; // the concavity reference FinishRun priced with (session 32)
+                        if (chainOn) run.recordReference = [&](double r) { chainRef = r; };
                         if (oracleOut || chainOn)
                             run.valley.record = [&](const char *st, const std::vector<int> &l) {
                                 const std::string x = st;
@@ -478,19 +480,12 @@ int main(int argc, char **argv)
                             // bend across and the salience score without the width factor
                             // (cpl x (L / sqrt(A_part))^exponent). Session 31: as FinishRun recorded them
                             // (ValleyLoop::Param::record), not replayed here
-                            typedef PartBoundaryEnd<CMeshO> End;
                             typedef ValleyLoop<CMeshO> VL;
                             const auto &own = ownSeed;
                             const double hs = s.LengthScale();
-                            // the concavity reference FinishRun priced with: its band round the snake's loop
-                            // (FinishFrom's, which the descent and salience do not change)
-                            double ref = -1, cost = 0;
-                            if (!chain.empty()) {
-                                End::Param nd = vlp;
-                                nd.salience.exponent = 0;
-                                nd.valley.iterations = 1;
-                                End::FinishFrom(md.mesh, own.loop, own.faces, surf->Energy(), hs, nd, ref, cost);
-                            }
+                            // the concavity reference FinishRun priced with (its band round the snake's
+                            // loop), as it recorded it (session 32: no second search here)
+                            const double ref = chainRef;
                             std::vector<int> dist, sideOf;
                             gs_parts::Rings(md.mesh, p, dist, sideOf);
                             int rep = -1; // the vertex deepest in the part

@@ -13,6 +13,7 @@
 // band, its descent) is ValleyLoop's; this class is the choice of where to search and which
 // loop to keep.
 
+#include <functional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -82,6 +83,11 @@ public:
         bool crossDominant = true;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
+        /// Diagnostics (bench/eval/gs_parts GS_PARTS_CHAIN, session 32): called once per FinishRun
+        /// that gets past its checks with the concavity reference its loops are priced with
+        /// (FinishFrom's round the snake's loop, its last band's; the descent and salience do not
+        /// change it), next to valley.record's loops. Empty: nothing is recorded, nothing changes.
+        std::function<void(double)> recordReference;
     };
 
     /// The loop a Run started from (its polyline and its samples' faces), kept by the host
@@ -117,6 +123,7 @@ public:
         const Seeded own = Seeded::Of(s); // the loop where the Run ended
         double ref = -1, cost = 0;
         std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);
+        if (par.recordReference) par.recordReference(ref);
         VL::Record(par.valley, "end:salience", vl);
         // a loop that converged at less than seededShrink of the length it was seeded with may
         // have slid past the valley onto the part (issue 33, session 25), and one round which no
