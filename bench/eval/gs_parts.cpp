@@ -43,10 +43,11 @@
 //   cost per length, or "none" when no band holds a ring. GS_PARTS_CHAIN=1: per loop, the loops
 //   FinishRun makes in its order -- the snake's own, after the band and descent, after salience,
 //   after the seeded search, after the bend (final), as FinishRun records them -- with success,
-//   length, cost per length, bend and the salience score without the width factor.)
+//   length, cost per length (with the concavity reference FinishRun recorded), bend and the
+//   salience score without the width factor.)
 //   (GS_PARTS_ORACLE=FILE.csv: per loop, every edge loop the Run's end found (ValleyLoop::Param::
-//   record: bands, descent steps, salience's and the profile's candidates, round the snake's
-//   loop, the seeded one and TowardBody's ring), one row each with its stage, whether it was
+//   record: bands, descent steps, salience's, the profile's and the bend's candidates, round the
+//   snake's loop, the seeded one and TowardBody's ring), one row each with its stage, whether it was
 //   chosen, capture/coverage, cost per length and salience score (without and with the width term); a
 //   summary on stderr: how many failed loops had a successful candidate (the choice's ceiling);
 //   session 29's support columns: times found, mutual captures among the row's loops,
@@ -137,6 +138,26 @@ struct Candidate
     std::string stage;
     std::vector<int> loop;
 };
+
+/// The vertex deepest in the part: the most rings off the representative person's cut on
+/// the part's side (the first such; -1 when none).
+int DeepestVertex(CMeshO &m, const gs_parts::Part &p)
+{
+    std::vector<int> dist, side;
+    gs_parts::Rings(m, p, dist, side);
+    int rep = -1;
+    for (size_t v = 0; v < dist.size(); ++v)
+        if (side[v] > 0 && (rep < 0 || dist[v] > dist[rep])) rep = int(v);
+    return rep;
+}
+
+/// The part with one person's cut alone: a loop measured against that person.
+gs_parts::Part OnePerson(const gs_parts::Part &p, const std::vector<vcg::Point3d> &cut)
+{
+    gs_parts::Part q = p;
+    q.cuts = {cut};
+    return q;
+}
 
 /// The area of the side of edge loop l that holds vertex rep (0 when rep is on l): the part's
 /// side, as PartSalience::Choose reads it (the whole mesh flooded; a diagnostic).
@@ -427,8 +448,7 @@ int main(int argc, char **argv)
                             const std::vector<int> v2 = End::FinishFrom(md.mesh, seeded.loop, seeded.faces, surf->Energy(), s.LengthScale(), vlp, r2, c2);
                             auto show = [&](const char *name, const std::vector<int> &v) {
                                 if (v.size() < 3) return (void)std::fprintf(stderr, " %s none |", name);
-                                std::vector<vcg::Point3d> pl;
-                                for (int x : v) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[x].cP()));
+                                const std::vector<vcg::Point3d> pl = gs_parts::Positions(md.mesh, v);
                                 const gs_parts::Score ts = gs_parts::Measure(pl, p, md.h, md.h);
                                 std::fprintf(stderr, " %s L=%.1fh %.2f/%.2f perL=%.3f |", name, VL::LengthOf(md.mesh, v) / md.h,
                                              ts.capture, ts.coverage, VL::PerLength(md.mesh, v, surf->Energy(), r1 >= 0 ? r1 : r2, vlp.valley));
@@ -486,11 +506,7 @@ int main(int argc, char **argv)
                             // the concavity reference FinishRun priced with (its band round the snake's
                             // loop), as it recorded it (session 32: no second search here)
                             const double ref = chainRef;
-                            std::vector<int> dist, sideOf;
-                            gs_parts::Rings(md.mesh, p, dist, sideOf);
-                            int rep = -1; // the vertex deepest in the part
-                            for (size_t v = 0; v < dist.size(); ++v)
-                                if (sideOf[v] > 0 && (rep < 0 || dist[v] > dist[rep])) rep = int(v);
+                            const int rep = DeepestVertex(md.mesh, p);
                             const gs_parts::Score so = gs_parts::Measure(own.loop, p, md.h, md.h);
                             std::fprintf(stderr, "CHAIN %d %d %s %d row=%d | snake %d L=%.1fh", id, p.index, side > 0 ? "in" : "out", ring,
                                          int(sc.Success()), int(so.Success()), gs_parts::LoopLength(own.loop) / md.h);
@@ -502,8 +518,7 @@ int main(int argc, char **argv)
                                     std::fprintf(stderr, " | %s none", name);
                                     continue;
                                 }
-                                std::vector<vcg::Point3d> pl;
-                                for (int v : c.second) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP()));
+                                const std::vector<vcg::Point3d> pl = gs_parts::Positions(md.mesh, c.second);
                                 const gs_parts::Score ts = gs_parts::Measure(pl, p, md.h, md.h);
                                 const double L = VL::LengthOf(md.mesh, c.second), A = SideArea(md.mesh, c.second, rep, in);
                                 const double cpl = VL::PerLength(md.mesh, c.second, surf->Energy(), ref, vlp.valley);
@@ -520,11 +535,7 @@ int main(int argc, char **argv)
                             const double h = md.h;
                             double ref = -1, cost0 = 0; // one concavity reference: the first band round the snake's loop
                             VL::FindAt(md.mesh, ownSeed.loop, ownSeed.faces, surf->Energy(), s.LengthScale(), vlp.valley, ref, cost0);
-                            std::vector<int> dist, sideOf;
-                            gs_parts::Rings(md.mesh, p, dist, sideOf);
-                            int rep = -1; // the vertex deepest in the part
-                            for (size_t v = 0; v < dist.size(); ++v)
-                                if (sideOf[v] > 0 && (rep < 0 || dist[v] > dist[rep])) rep = int(v);
+                            const int rep = DeepestVertex(md.mesh, p);
                             double total = 0;
                             for (const auto &f : md.mesh.face) if (!f.IsD()) total += vcg::DoubleArea(f) / 2;
                             // the same loop found by several stages is one candidate, named by the first
@@ -548,8 +559,7 @@ int main(int argc, char **argv)
                             }
                             std::vector<std::vector<vcg::Point3d>> up;
                             for (const Candidate &c : uniq) {
-                                std::vector<vcg::Point3d> q;
-                                for (int v : c.loop) q.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP()));
+                                const std::vector<vcg::Point3d> q = gs_parts::Positions(md.mesh, c.loop);
                                 up.push_back(gs_parts::ResampleLoop(q, 0.25 * h));
                             }
                             const std::vector<vcg::Point3d> seedPts = gs_parts::ResampleLoop(seeded.loop, 0.25 * h);
@@ -597,8 +607,7 @@ int main(int argc, char **argv)
                             }
                             for (size_t ci = 0; ci < uniq.size(); ++ci) {
                                 const std::vector<int> &l = uniq[ci].loop;
-                                std::vector<vcg::Point3d> pl;
-                                for (int v : l) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP()));
+                                const std::vector<vcg::Point3d> pl = gs_parts::Positions(md.mesh, l);
                                 const gs_parts::Score ts = gs_parts::Measure(pl, p, h, h);
                                 const std::vector<vcg::Point3d> cp = gs_parts::ResampleLoop(pl, 0.25 * h);
                                 bool chosen = replaced; // the final loop lies on it and it on the final loop
@@ -751,8 +760,7 @@ int main(int argc, char **argv)
                                 }
                                 int modeOk = -1;
                                 if (mode) {
-                                    std::vector<vcg::Point3d> pl;
-                                    for (int v : *mode) pl.push_back(vcg::Point3d::Construct(md.mesh.vert[v].cP()));
+                                    const std::vector<vcg::Point3d> pl = gs_parts::Positions(md.mesh, *mode);
                                     modeOk = gs_parts::Measure(pl, p, h, h).Success();
                                 }
                                 std::fprintf(stderr, "MODE %d %s %d %s %d chosen_ok=%d mode_ok=%d mode_n=%d chosen_n=%d found=%d distinct=%zu guides=%zu is_chosen=%d\n",
@@ -813,9 +821,7 @@ int main(int argc, char **argv)
                                     const int bv = gs_test::NearestVertex(md.mesh, x);
                                     cl.push_back(int(bv));
                                 }
-                                gs_parts::Part q = p;
-                                q.cuts = {p.cuts[ci]};
-                                const gs_parts::Score sq = gs_parts::Measure(loop, q, md.h, md.h);
+                                const gs_parts::Score sq = gs_parts::Measure(loop, OnePerson(p, p.cuts[ci]), md.h, md.h);
                                 char nm[32];
                                 std::snprintf(nm, sizeof nm, "p%zu(%.2f/%.2f)", ci, sq.capture, sq.coverage);
                                 print(nm, cl);
@@ -859,9 +865,7 @@ int main(int argc, char **argv)
                                 size_t best = 0;
                                 double bc = -1;
                                 for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
-                                    gs_parts::Part q = p;
-                                    q.cuts = {p.cuts[ci]};
-                                    const double c = gs_parts::Measure(loop, q, md.h, md.h).coverage;
+                                    const double c = gs_parts::Measure(loop, OnePerson(p, p.cuts[ci]), md.h, md.h).coverage;
                                     if (c > bc) bc = c, best = ci;
                                 }
                                 const std::vector<vcg::Point3d> lp = gs_parts::ResampleLoop(loop, 0.25 * md.h);
@@ -883,11 +887,7 @@ int main(int argc, char **argv)
                         if (std::getenv("GS_PARTS_JOINT")) {
                             // the strict reading: one person whose cut both holds the loop and is covered by it
                             bool joint = false;
-                            for (const auto &c : p.cuts) {
-                                gs_parts::Part q = p;
-                                q.cuts = {c};
-                                joint = joint || gs_parts::Measure(loop, q, md.h, md.h).Success();
-                            }
+                            for (const auto &c : p.cuts) joint = joint || gs_parts::Measure(loop, OnePerson(p, c), md.h, md.h).Success();
                             std::fprintf(stderr, "JOINT %d %d %d %d\n", id, p.index, int(sc.Success()), int(joint));
                         }
                         if (std::getenv("GS_PARTS_GAPS") && !sc.Success()) {

@@ -9,9 +9,10 @@
 // while it is no ring round a short part's tip, descended over bands and chosen by part
 // salience (part_salience.h); when the loop shrank far, or no band round it holds a ring, also
 // round the loop the Run started from (Seeded), and when no band round that one holds a ring
-// either, from the seeds' ring towards the body (TowardBody). The search itself (its cost, its
-// band, its descent) is ValleyLoop's; this class is the choice of where to search and which
-// loop to keep.
+// either, from the seeds' ring towards the body (TowardBody); last, the loop kept gives way to
+// a neighbour towards the body or the part that the surface bends across more (Across,
+// loop_bend.h, session 28). The search itself (its cost, its band, its descent) is ValleyLoop's;
+// this class is the choice of where to search and which loop to keep.
 
 #include <functional>
 #include <unordered_map>

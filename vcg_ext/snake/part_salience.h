@@ -7,8 +7,9 @@
 // settles where its own energy balances, which can be a few rings up the limb when the limb's
 // ground is about as low as its base. Loops moved towards the body (the larger side) compete with
 // the loop by cost per length x (L / sqrt(A))^exponent, L the loop's length, A the area of the
-// part's side. Beyond the paper (Lee & Lee 2002 has no part boundaries); used by ValleyLoop at the
-// end of a part-boundary Run (docs/method.md, "Part salience").
+// part's side. Beyond the paper (Lee & Lee 2002 has no part boundaries); used by PartBoundaryEnd at
+// the end of a part-boundary Run (part_boundary_end.h; docs/method.md, "Session 23, later: part
+// salience").
 
 #include <algorithm>
 #include <cmath>
@@ -293,9 +294,7 @@ public:
                 }
             Guide(m, gv, guide, guideFaces);
             if (guide.size() < 3) break;
-            double gL = 0;
-            for (size_t i = 0; i < guide.size(); ++i) gL += vcg::Distance(guide[i], guide[(i + 1) % guide.size()]);
-            if (gL > 1.5 * par.growth * L0) break; // the body widens: farther guides only get longer
+            if (PolyLength(guide) > 1.5 * par.growth * L0) break; // the body widens: farther guides only get longer
             double c = 0;
             const std::vector<int> cand = find(guide, guideFaces, c, false);
             if (cand.size() < 3) continue;
@@ -400,6 +399,14 @@ public:
             const FaceType *f = m.vert[v].cVFp();
             if (f) faces.push_back(int(f - &m.face[0]));
         }
+    }
+
+    /// The length of a closed polyline.
+    static double PolyLength(const std::vector<vcg::Point3d> &loop)
+    {
+        double len = 0;
+        for (size_t i = 0; i < loop.size(); ++i) len += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
+        return len;
     }
 
     /// The length of a loop of vertex indices.

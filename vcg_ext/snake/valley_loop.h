@@ -112,8 +112,9 @@ public:
         int iterations = 8;
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
         /// Run's end finds and the stage that found it ("band", "descent", "salience",
-        /// "profile"); an empty loop marks where the searches from the seeded loop ("seeded")
-        /// and TowardBody ("toward") begin. PartBoundaryEnd's stages record their loop (empty:
+        /// "profile", "across": the bend's candidates); an empty loop marks where the searches
+        /// from the seeded loop ("seeded") and TowardBody ("toward") begin, and "crossfrom" is
+        /// the loop the bend across starts from. PartBoundaryEnd's stages record their loop (empty:
         /// none) as "end:descent" (each FinishFrom: the band and the descent, salience off),
         /// "end:salience", "end:seeded" (the seeded search and TowardBody) and "end:bend" (the
         /// Run's loop) (GS_PARTS_CHAIN). Empty: nothing is recorded, nothing changes.
@@ -146,12 +147,7 @@ public:
         return cost / len;
     }
 
-    static double PolyLength(const std::vector<vcg::Point3d> &loop)
-    {
-        double len = 0;
-        for (size_t i = 0; i < loop.size(); ++i) len += vcg::Distance(loop[i], loop[(i + 1) % loop.size()]);
-        return len;
-    }
+    static double PolyLength(const std::vector<vcg::Point3d> &loop) { return PartSalience<MeshType>::PolyLength(loop); }
 
     /// Vertex indices of the cheapest edge loop round `loop` (closed polyline), or empty when
     /// the band holds none (e.g. it is not a ring). The band grows from `seedFaces` (the faces
