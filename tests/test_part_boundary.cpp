@@ -276,6 +276,106 @@ TEST(PartBoundaryEnergy, OrientationIndependent)
     for (size_t i = 0; i < e.size(); i += 11) EXPECT_NEAR(e[i], f[i], 1e-6);
 }
 
+namespace {
+
+/// An inner corner: a floor and a wall (each 40 edges across, 40 along y; edge 0.05) joined by
+/// a concave fillet of radius rho = 30 edges / (pi / 2), a quarter circle 30 edges long, as a
+/// grid along the profile's arc length (two triangles a cell); turned to a generic direction
+/// and moved off the origin (so that float rounding of the coordinates tips the planes' fits
+/// either way, as on a CAD mesh), faces towards the corner's open side, away from the origin
+/// (OutwardSign). `ax[3]`: the corner's axes (floor along x, up z); `c`: the fillet's start.
+double MakeFilletedCorner(CMeshO &m, bool split, P3 ax[3], P3 &c)
+{
+    const int nf = 40, na = 30, ny = 40;
+    const double h = 0.05, rho = na * h / (M_PI / 2);
+    vcg::Matrix44d rot;
+    rot.SetRotateRad(0.7, P3(1, 2, 3).Normalize());
+    for (int k = 0; k < 3; ++k) ax[k] = rot * P3(k == 0, k == 1, k == 2);
+    c = rot * P3(-0.3 - rho, 0.4, 0.6); // the origin lies on the solid's side
+    const int ns = nf + na + nf;
+    vcg::tri::Allocator<CMeshO>::AddVertices(m, (ns + 1) * (ny + 1));
+    for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= ns; ++i) {
+            double x, z;
+            if (i <= nf) x = (i - nf) * h, z = 0; // floor
+            else if (i <= nf + na) {
+                const double t = (i - nf) * h / rho; // fillet, centre (0, rho)
+                x = rho * std::sin(t), z = rho - rho * std::cos(t);
+            } else x = rho, z = rho + (i - nf - na) * h; // wall
+            const P3 q = ax[0] * x + ax[1] * ((j - ny / 2) * h) + ax[2] * z;
+            m.vert[j * (ns + 1) + i].P() = Point3m::Construct(q + c);
+        }
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < ns; ++i) {
+            const int v00 = j * (ns + 1) + i, v10 = v00 + 1, v01 = v00 + ns + 1, v11 = v01 + 1;
+            vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[v00], &m.vert[v10], &m.vert[v11]);
+            vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[v00], &m.vert[v11], &m.vert[v01]);
+        }
+    if (split) {
+        std::vector<std::vector<int>> segs;
+        gs_parts::ApplyVariant(m, segs, "refine"); // coplanar children, midpoints rounded to float
+    }
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    return rho;
+}
+
+} // namespace
+
+// The energy's reference does not depend on the mesh's precision (session 32): an inner corner
+// with a concave fillet (a valley between two planes, as on a CAD part), meshed and with every
+// face split 1-to-4 (gs_parts --variant refine), gives the same reference per edge length (the
+// concavity is made dimensionless by the median edge, which halves) and the same energy on the
+// fillet. Float rounding of the turned corner's coordinates tips the planes' fits either way:
+// without the flat tolerance (0) most plane vertices count as concave at ~1e-6-1e-4 and the
+// reference, their median with the fillet's, falls to rounding's level and differs 4x between
+// the two (as on the CAD-like benchmark meshes 327, 333, 341, 342).
+TEST(PartBoundaryEnergy, SameReferenceOnAFilletedCornerWhenEveryFaceIsSplit1To4)
+{
+    PartBoundaryEnergy<CMeshO>::Param par, off;
+    par.flatTolerance = 16; // as ValleyLoop's (left off by default: see Param)
+    off.flatTolerance = 0;
+    double ref[2][2], perH[2][2], valley[2][2], flatShare[2][2];
+    for (int split : {0, 1}) {
+        CMeshO m;
+        P3 ax[3], o;
+        const double rho = MakeFilletedCorner(m, split != 0, ax, o);
+        const double h = gs_parts::MeanEdgeLength(m);
+        for (int k : {0, 1}) {
+            const PartBoundaryEnergy<CMeshO>::Param &q = k ? off : par;
+            const std::vector<double> c = PartBoundaryEnergy<CMeshO>::Concavity(m, q.radius + 2 * q.radiusPerStep, q);
+            const std::vector<double> e = PartBoundaryEnergy<CMeshO>::VertexValues(m, 2, q);
+            std::vector<double> pos;
+            double ev = 0;
+            int nv = 0, nf = 0, nfc = 0;
+            for (size_t i = 0; i < m.vert.size(); ++i) {
+                if (c[i] > 0) pos.push_back(c[i]);
+                const P3 d = P3::Construct(m.vert[i].cP()) - o;
+                const double x = d * ax[0], z = d * ax[2];
+                if (x > 0 && z < rho && std::fabs(std::atan2(x, rho - z) - M_PI / 4) < M_PI / 12) ev += e[i], ++nv; // the fillet's middle third
+                if (x < -0.5 || z > rho + 0.5) nfc += c[i] > 0, ++nf; // the planes, off the fillet
+            }
+            ASSERT_FALSE(pos.empty());
+            std::nth_element(pos.begin(), pos.begin() + pos.size() / 2, pos.end());
+            ref[split][k] = pos[pos.size() / 2];
+            perH[split][k] = ref[split][k] / h;
+            valley[split][k] = ev / nv;
+            flatShare[split][k] = double(nfc) / nf;
+        }
+    }
+    for (int k : {0, 1})
+        std::printf("filleted corner, flatTolerance %s: c_ref %.4g / %.4g (per h %.4g / %.4g), energy on the fillet %.3f / "
+                    "%.3f, flat vertices concave %.3f / %.3f (meshed / split 1-to-4)\n",
+                    k ? "0" : "16", ref[0][k], ref[1][k], perH[0][k], perH[1][k], valley[0][k], valley[1][k],
+                    flatShare[0][k], flatShare[1][k]);
+    EXPECT_NEAR(perH[1][0] / perH[0][0], 1.0, 0.1);
+    EXPECT_NEAR(valley[1][0] / valley[0][0], 1.0, 0.1);
+    EXPECT_LT(valley[0][0], 0.5); // the fillet is a well
+    EXPECT_EQ(flatShare[0][0], 0.0);
+    EXPECT_EQ(flatShare[1][0], 0.0);
+    // the mechanism: without the tolerance rounding's "concave" flat vertices
+    EXPECT_GT(flatShare[1][1], 0.1);
+}
+
 // Closed snakes seeded 3 edge lengths above or below the waist end on it with the part-boundary
 // energy, all around (no point, no stub), with and without noise of 3 % of the radius
 // (about half an edge length).

@@ -6,7 +6,7 @@
 //   gs_parts [--data DIR] [--ids 181,3] [--energy normal,part] [--rings 2,3] [--seeds 8]
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
-//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--valley-crings K] [--valley-flat K] [--out FILE.csv]
+//            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--valley-crings K] [--valley-flat K] [--part-flat K] [--out FILE.csv]
 //            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B]
 //   (the width profile's PartProfile::Param slope, minTube and PartSalience::Param profilePrice,
 //   profileBand; --profile-slope 0 turns it off)
@@ -23,7 +23,9 @@
 //   --valley-concavity W: ValleyLoop::Param::concavityWeight, 0 = by energy and length alone, as
 //   before session 22; --valley-band, --valley-lambda, --valley-cscale: its bandWidth, lambda
 //   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone;
-//   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off)
+//   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off;
+//   --part-flat K: PartBoundaryEnergy::Param::flatTolerance, a vertex flat where its concavity is
+//   within K times the curvature the coordinates' rounding can give its fit, 0 = off, session 32)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -197,6 +199,8 @@ int main(int argc, char **argv)
     double balloon = 0, alpha = -1, beta = -1, ext = -1;
     bool valleyLoop = true;
     PartBoundaryEnd<CMeshO>::Param vlp;
+    PartBoundaryEnergy<CMeshO>::Param partPar; // --part-flat
+    double partFlat = -1;
     int smoothing = 2, capture = -1; // -1: the tool's choice for the energy
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -224,6 +228,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-cscale") vlp.valley.concavityScale = std::stod(next());
         else if (a == "--valley-crings") vlp.valley.concavityRings = std::stoi(next());
         else if (a == "--valley-flat") vlp.valley.flatTolerance = std::stod(next());
+        else if (a == "--part-flat") partPar.flatTolerance = partFlat = std::stod(next());
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
@@ -305,6 +310,12 @@ int main(int argc, char **argv)
                 return 2;
             }
             FeatureEnergy<CMeshO>::Compute(md.mesh, ty->second, smoothing);
+            if (ty->second == FeatureEnergyType::PartBoundary && partFlat >= 0) {
+                // --part-flat K: the energy again with its flatTolerance set (FeatureEnergy uses the default)
+                const std::vector<double> e = PartBoundaryEnergy<CMeshO>::VertexValues(md.mesh, smoothing, partPar);
+                for (size_t i = 0; i < md.mesh.vert.size(); ++i)
+                    if (!md.mesh.vert[i].IsD()) md.mesh.vert[i].Q() = Scalarm(e[i]);
+            }
             if (std::getenv("GS_PARTS_CLEAN_ENERGY") && variant == "noise") {
                 // session 30: the energy computed on the original mesh, on the noisy one's vertices
                 // (noise moves vertices only): what noise costs through the energy against the geometry
@@ -336,7 +347,7 @@ int main(int argc, char **argv)
             if (std::getenv("GS_PARTS_DIAG") && ty->second == FeatureEnergyType::PartBoundary) {
                 // the part energy's concavity field (session 30, noise): the share of concave vertices,
                 // the reference (median of the concave ones) and the mean energy on the people's cuts
-                const std::vector<double> cv = PartBoundaryEnergy<CMeshO>::Concavity(md.mesh, 1.0 + 1.0 * std::max(0, smoothing));
+                const std::vector<double> cv = PartBoundaryEnergy<CMeshO>::Concavity(md.mesh, 1.0 + 1.0 * std::max(0, smoothing), partPar);
                 std::vector<double> pos;
                 for (size_t v = 0; v < cv.size(); ++v)
                     if (!md.mesh.vert[v].IsD() && cv[v] > 0) pos.push_back(cv[v]);
@@ -344,6 +355,17 @@ int main(int argc, char **argv)
                 auto q = [&](double f) { return pos.empty() ? 0.0 : pos[size_t(f * (pos.size() - 1))]; };
                 std::fprintf(stderr, "CONCAVITY %d: concave %.3f of %zu, c_ref %.4f, q25 %.4f q75 %.4f q90 %.4f\n", id,
                              double(pos.size()) / md.mesh.vn, size_t(md.mesh.vn), q(0.5), q(0.25), q(0.75), q(0.9));
+                // session 32: what the flat tolerance takes away (vertices concave without it, flat with it)
+                PartBoundaryEnergy<CMeshO>::Param noFloor = partPar;
+                noFloor.flatTolerance = 0;
+                const std::vector<double> cv0 = PartBoundaryEnergy<CMeshO>::Concavity(md.mesh, 1.0 + 1.0 * std::max(0, smoothing), noFloor);
+                std::vector<double> zeroed;
+                for (size_t v = 0; v < cv.size(); ++v)
+                    if (!md.mesh.vert[v].IsD() && cv0[v] > 0 && !(cv[v] > 0)) zeroed.push_back(cv0[v]);
+                std::sort(zeroed.begin(), zeroed.end());
+                std::fprintf(stderr, "FLAT %d: %zu vertices flat by the tolerance (%.3f), their concavity median %.2g max %.2g (c_ref %.4f)\n",
+                             id, zeroed.size(), double(zeroed.size()) / md.mesh.vn, zeroed.empty() ? 0.0 : zeroed[zeroed.size() / 2],
+                             zeroed.empty() ? 0.0 : zeroed.back(), q(0.5));
             }
             if (std::getenv("GS_PARTS_DIAG"))
                 for (const gs_parts::Part &p : md.parts) {
