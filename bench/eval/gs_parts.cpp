@@ -23,7 +23,9 @@
 //   --valley-concavity W: ValleyLoop::Param::concavityWeight, 0 = by energy and length alone, as
 //   before session 22; --valley-band, --valley-lambda, --valley-cscale: its bandWidth, lambda
 //   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone;
-//   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off)
+//   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off;
+//   --valley-cfilter K, --valley-cfilter-cos C, --valley-cfilter-gate 0|1: creaseFilterIterations, creaseFilterCos,
+//   creaseFilterGate, session 31)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -203,6 +205,9 @@ int main(int argc, char **argv)
         else if (a == "--valley-cscale") vlp.valley.concavityScale = std::stod(next());
         else if (a == "--valley-crings") vlp.valley.concavityRings = std::stoi(next());
         else if (a == "--valley-flat") vlp.valley.flatTolerance = std::stod(next());
+        else if (a == "--valley-cfilter") vlp.valley.creaseFilterIterations = std::stoi(next());
+        else if (a == "--valley-cfilter-cos") vlp.valley.creaseFilterCos = std::stod(next());
+        else if (a == "--valley-cfilter-gate") vlp.valley.creaseFilterGate = std::stoi(next()) != 0;
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());

@@ -100,6 +100,18 @@ public:
         /// 161 / 167 (+11 -5), noise 102 / 102 (no flat edges); 256 the same rows as 16 on the
         /// refined hand, ant and armadillo. 0: the sign of the apex's height alone, as before.
         double flatTolerance = 16;
+        /// Feature-preserving filter of the face normals the crease term reads (session 31):
+        /// `creaseFilterIterations` passes of vcglib's Smooth::FaceNormalAngleThreshold rule
+        /// over the band's faces (each normal replaced by the sum of its vertex-adjacent faces'
+        /// normals within the threshold angle, cosine `creaseFilterCos`, weighed (cos -
+        /// creaseFilterCos)^2), so that noise on a flank is smoothed but a crease sharper than
+        /// the threshold is not averaged across; the edge's angle and its sign ((n1 - n0) .
+        /// (b1 - b0) < 0) are read from the filtered normals. 0: the raw normals, as before.
+        int creaseFilterIterations = 0;
+        double creaseFilterCos = 0.866;
+        /// With the filter on: only the sign is read from the filtered normals, the angle is
+        /// the edge's raw one-ring one (as concavityRings gates it with area-averaged normals).
+        bool creaseFilterGate = false;
         /// Bands searched in turn (the first round the snake, each next one round the previous
         /// band's loop) while the loop gets cheaper in total and per length: a descent in loop
         /// space that reaches a deeper valley farther than one band from where the snake
@@ -236,8 +248,12 @@ public:
         }
         std::unordered_map<long long, double> bend; // concave dihedral angle, 0 when convex or flat
         std::vector<double> concave;
+        std::vector<const FaceType *> bandFaces;
+        if (par.creaseFilterIterations > 0)
+            for (int fi : faces) bandFaces.push_back(&m.face[fi]);
+        const FaceNormals fn = FilteredNormals(m, bandFaces, par);
         for (const auto &ef : edgeFaces) {
-            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance);
+            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilterGate);
             bend[ef.first] = x;
             if (x > 0) concave.push_back(x);
         }
@@ -355,15 +371,26 @@ public:
                           double &eSum, double &lSum, double &cSum, const Param &par = Param())
     {
         eSum = lSum = cSum = 0;
+        std::vector<std::pair<const FaceType *, const FaceType *>> ef(vl.size(), {nullptr, nullptr});
+        std::vector<const FaceType *> own;
         for (size_t i = 0; i < vl.size(); ++i) {
             const int a = vl[i], b = vl[(i + 1) % vl.size()];
-            const VertexType *va = &m.vert[a], *vb = &m.vert[b];
+            const VertexType *vb = &m.vert[b];
             const FaceType *f0 = nullptr, *f1 = nullptr;
             PartSalience<MeshType>::ForFaces(m, a, [&](const FaceType *f, int) {
                 if (f->cV(0) == vb || f->cV(1) == vb || f->cV(2) == vb) (f0 ? f1 : f0) = f;
             });
+            ef[i] = {f0, f1};
+            if (par.creaseFilterIterations > 0)
+                for (const FaceType *f : {f0, f1})
+                    if (f) own.push_back(f);
+        }
+        const FaceNormals fn = FilteredNormals(m, own, par);
+        for (size_t i = 0; i < vl.size(); ++i) {
+            const int a = vl[i], b = vl[(i + 1) % vl.size()];
+            const VertexType *va = &m.vert[a], *vb = &m.vert[b];
             const double len = vcg::Distance(va->cP(), vb->cP());
-            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, f0, f1, par.concavityRings, par.flatTolerance) / ref) : 0.0;
+            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilterGate) / ref) : 0.0;
             eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
             lSum += len;
             cSum += len * (1 - c);
@@ -408,7 +435,82 @@ public:
         }
     };
 
+    /// Unit face normals by face (creaseFilter* of Param); empty: the faces' own.
+    typedef std::unordered_map<const FaceType *, vcg::Point3d> FaceNormals;
+
+    /// The normals of `faces` after par.creaseFilterIterations passes of the thresholded
+    /// filter (vcglib's Smooth::FaceNormalAngleThreshold, which writes the normals of the
+    /// whole mesh: here the mesh is const and the cost must follow the band). The passes run
+    /// over the faces within as many rings of `faces` (vertex-adjacent), so a face of `faces`
+    /// gets the value a pass over the whole mesh would give it, whatever set it comes with.
+    static FaceNormals FilteredNormals(const MeshType &m, const std::vector<const FaceType *> &faces, const Param &par)
+    {
+        FaceNormals out;
+        const int iters = par.creaseFilterIterations;
+        if (iters <= 0 || faces.empty()) return out;
+        std::unordered_map<const FaceType *, int> id;
+        std::vector<const FaceType *> all, front;
+        for (const FaceType *f : faces)
+            if (id.emplace(f, int(all.size())).second) all.push_back(f), front.push_back(f);
+        auto around = [&](const FaceType *g, const std::function<void(const FaceType *)> &fn) {
+            for (int k = 0; k < 3; ++k)
+                PartSalience<MeshType>::ForFaces(m, int(g->cV(k) - &m.vert[0]), [&](const FaceType *h, int) { fn(h); });
+        };
+        for (int r = 0; r < iters; ++r) {
+            std::vector<const FaceType *> next;
+            for (const FaceType *g : front)
+                around(g, [&](const FaceType *h) {
+                    if (id.emplace(h, int(all.size())).second) all.push_back(h), next.push_back(h);
+                });
+            front.swap(next);
+        }
+        const int n = int(all.size());
+        std::vector<std::vector<int>> nb(n);
+        std::vector<vcg::Point3d> nr(n), tmp(n);
+        for (int i = 0; i < n; ++i) {
+            around(all[i], [&](const FaceType *h) {
+                const auto it = id.find(h);
+                if (it != id.end()) nb[i].push_back(it->second);
+            });
+            std::sort(nb[i].begin(), nb[i].end());
+            nb[i].erase(std::unique(nb[i].begin(), nb[i].end()), nb[i].end());
+            nr[i] = vcg::Point3d::Construct(vcg::TriangleNormal(*all[i]));
+            if (nr[i].Norm() > 0) nr[i].Normalize();
+        }
+        const double t = par.creaseFilterCos;
+        for (int it = 0; it < iters; ++it) {
+            for (int i = 0; i < n; ++i) {
+                vcg::Point3d s(0, 0, 0);
+                for (int j : nb[i]) {
+                    const double c = std::max(1e-4, std::min(1.0, nr[j] * nr[i]));
+                    if (c >= t) s += nr[j] * ((c - t) * (c - t));
+                }
+                tmp[i] = s.Norm() > 0 ? s / s.Norm() : nr[i];
+            }
+            nr.swap(tmp);
+        }
+        for (const FaceType *f : faces) out[f] = nr[id[f]];
+        return out;
+    }
+
 private:
+    /// ConcaveAngle with the normals of fn (FilteredNormals) when it has the faces: the angle
+    /// between them where they turn towards each other across the edge ((n1 - n0) . (b1 - b0)
+    /// < 0, b the faces' barycentres), 0 otherwise; the other cases below when fn is empty.
+    static double ConcaveAngle(const MeshType &m, const FaceType *f0, const FaceType *f1, int rings, double flat,
+                               const FaceNormals &fn, bool gate)
+    {
+        if (fn.empty()) return ConcaveAngle(m, f0, f1, rings, flat);
+        if (!f0 || !f1) return 0;
+        const auto i0 = fn.find(f0), i1 = fn.find(f1);
+        if (i0 == fn.end() || i1 == fn.end()) return ConcaveAngle(m, f0, f1, rings, flat);
+        const vcg::Point3d &n0 = i0->second, &n1 = i1->second;
+        const vcg::Point3d b0 = vcg::Point3d::Construct(vcg::Barycenter(*f0)), b1 = vcg::Point3d::Construct(vcg::Barycenter(*f1));
+        if (!((n1 - n0) * (b1 - b0) < 0)) return 0;
+        if (gate) return ConcaveAngle(f0, f1, flat);
+        return std::acos(std::max(-1.0, std::min(1.0, n0 * n1)));
+    }
+
     /// ConcaveAngle where the surface is concave across the edge at a scale as well: with
     /// rings > 0, 0 unless f0's and f1's normals, each averaged by area over the faces within
     /// `rings` rings (sharing a vertex, repeatedly), turn towards each other across the edge
