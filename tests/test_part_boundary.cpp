@@ -879,6 +879,46 @@ TEST(ValleyLoop, FollowsTheNoisyCreaseWithFilteredNormals)
     EXPECT_NEAR(ValleyLoop<CMeshO>::Cost(m, f, flat, ref, filtered, len), cost, 1e-9 * cost);
 }
 
+// The filter of FollowsTheNoisyCreaseWithFilteredNormals with a threshold relative to the
+// surface's own angles (session 31, creaseFilterRelative: k times the median angle between
+// vertex-adjacent faces). Over the whole mesh (creaseFilterRelativeWhole) the band and the
+// loop's own faces get the same threshold, so CostParts prices the found loop as the search did;
+// over the filtered set alone they do not (the loop's faces sit on the crease; measured 0.999).
+TEST(ValleyLoop, FollowsTheNoisyCreaseWithARelativeFilterThreshold)
+{
+    CMeshO m;
+    MakeKneeTube(m, 0.4);
+    std::vector<std::vector<int>> segs;
+    ASSERT_TRUE(gs_parts::ApplyVariant(m, segs, "noise"));
+    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    const std::vector<double> flat(m.vert.size(), 0.5);
+    std::vector<P3> loop;
+    for (int i = 0; i < 32; ++i)
+        loop.push_back(P3(std::cos(M_PI * i / 16), std::sin(M_PI * i / 16), 0) * KneeRadius(-kKneeStep) + P3(0, 0, -kKneeStep));
+    std::vector<int> faces;
+    for (int v : gs_test::NearestVertices(m, loop)) faces.push_back(int(m.vert[v].cVFp() - &m.face[0]));
+    ValleyLoop<CMeshO>::Param whole, band;
+    whole.creaseFilterIterations = band.creaseFilterIterations = 3;
+    whole.creaseFilterRelative = band.creaseFilterRelative = 2;
+    whole.creaseFilterRelativeWhole = true;
+    double refW = -1, costW = 0, refB = -1, costB = 0, len = 0;
+    const std::vector<int> w = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, whole, refW, costW);
+    const std::vector<int> b = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, band, refB, costB);
+    double sum = 0, maxOff = 0;
+    for (int v : w) {
+        const double z = std::fabs(m.vert[v].cP()[2]) / kKneeStep;
+        sum += z, maxOff = std::max(maxOff, z);
+    }
+    const double costB2 = ValleyLoop<CMeshO>::Cost(m, b, flat, refB, band, len);
+    std::printf("noisy knee tube, relative threshold: %zu vertices, mean %.2f max %.2f rings off; "
+                "CostParts / search: whole %.9f, band %.6f\n", w.size(), w.empty() ? 0.0 : sum / w.size(), maxOff,
+                ValleyLoop<CMeshO>::Cost(m, w, flat, refW, whole, len) / costW, costB2 / costB);
+    ASSERT_GE(w.size(), 100u);
+    EXPECT_LT(sum / w.size(), 0.15); // measured 0.03 (k 2, 3 passes); the fixed 30 degrees: 0.21
+    EXPECT_NEAR(ValleyLoop<CMeshO>::Cost(m, w, flat, refW, whole, len), costW, 1e-9 * costW);
+    EXPECT_GT(std::fabs(costB2 - costB), 1e-6 * costB); // the mechanism: the set's own median differs
+}
+
 // The sides of a loop are flooded only as far as the part it cuts off: a cap of 3.5 % of a
 // sphere (z > 0.93, a band of loop vertices 0.90 < z <= 0.93 round it) is measured exactly,
 // and the flood stops once the rest has been seen to be the body (maxPart 1/3: twice the cap's

@@ -25,7 +25,9 @@
 //   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone;
 //   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off;
 //   --valley-cfilter K, --valley-cfilter-cos C, --valley-cfilter-gate 0|1: creaseFilterIterations, creaseFilterCos,
-//   creaseFilterGate, session 31)
+//   creaseFilterGate, session 31; --valley-cfilter-rel k, --valley-cfilter-whole 0|1, --valley-cfilter-min
+//   DEGREES, --valley-cfilter-pass DEGREES: creaseFilterRelative, creaseFilterRelativeWhole,
+//   creaseFilterRelativeMin, creaseFilterPassAngle)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -208,6 +210,10 @@ int main(int argc, char **argv)
         else if (a == "--valley-cfilter") vlp.valley.creaseFilterIterations = std::stoi(next());
         else if (a == "--valley-cfilter-cos") vlp.valley.creaseFilterCos = std::stod(next());
         else if (a == "--valley-cfilter-gate") vlp.valley.creaseFilterGate = std::stoi(next()) != 0;
+        else if (a == "--valley-cfilter-rel") vlp.valley.creaseFilterRelative = std::stod(next());
+        else if (a == "--valley-cfilter-whole") vlp.valley.creaseFilterRelativeWhole = std::stoi(next()) != 0;
+        else if (a == "--valley-cfilter-min") vlp.valley.creaseFilterRelativeMin = std::stod(next()) * M_PI / 180;
+        else if (a == "--valley-cfilter-pass") vlp.valley.creaseFilterPassAngle = std::stod(next()) * M_PI / 180;
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());

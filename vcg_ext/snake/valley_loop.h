@@ -112,6 +112,22 @@ public:
         /// With the filter on: only the sign is read from the filtered normals, the angle is
         /// the edge's raw one-ring one (as concavityRings gates it with area-averaged normals).
         bool creaseFilterGate = false;
+        /// > 0: the filter's threshold angle is this factor times the median angle between
+        /// the filtered faces' vertex-adjacent pairs (raw normals; at most 90 degrees) instead
+        /// of acos(creaseFilterCos), so that a noisy surface gets a wider threshold than a
+        /// clean one's shallow crease (session 31). 0: the fixed creaseFilterCos.
+        double creaseFilterRelative = 0;
+        /// With creaseFilterRelative: the median over the whole mesh (its faces sampled evenly,
+        /// at most 2000, each with its vertex-adjacent faces) instead of the filtered set, so
+        /// that the band and a loop's own faces (CostParts) get the same threshold.
+        bool creaseFilterRelativeWhole = false;
+        /// With creaseFilterRelative: the threshold angle is at least this (radians), so that a
+        /// clean mesh keeps a fixed one and only a noisier one gets a wider threshold. 0: none.
+        double creaseFilterRelativeMin = 0;
+        /// With creaseFilterRelative and creaseFilterRelativeWhole, > 0: the passes are the
+        /// mesh's median angle over this (radians), at least 1 and at most
+        /// creaseFilterIterations: a rougher surface is filtered further. 0: the count.
+        double creaseFilterPassAngle = 0;
         /// Bands searched in turn (the first round the snake, each next one round the previous
         /// band's loop) while the loop gets cheaper in total and per length: a descent in loop
         /// space that reaches a deeper valley farther than one band from where the snake
@@ -446,16 +462,35 @@ public:
     static FaceNormals FilteredNormals(const MeshType &m, const std::vector<const FaceType *> &faces, const Param &par)
     {
         FaceNormals out;
-        const int iters = par.creaseFilterIterations;
+        int iters = par.creaseFilterIterations;
         if (iters <= 0 || faces.empty()) return out;
-        std::unordered_map<const FaceType *, int> id;
-        std::vector<const FaceType *> all, front;
-        for (const FaceType *f : faces)
-            if (id.emplace(f, int(all.size())).second) all.push_back(f), front.push_back(f);
         auto around = [&](const FaceType *g, const std::function<void(const FaceType *)> &fn) {
             for (int k = 0; k < 3; ++k)
                 PartSalience<MeshType>::ForFaces(m, int(g->cV(k) - &m.vert[0]), [&](const FaceType *h, int) { fn(h); });
         };
+        std::vector<double> ang; // angles between vertex-adjacent faces, for creaseFilterRelative
+        if (par.creaseFilterRelative > 0 && par.creaseFilterRelativeWhole) {
+            auto unit = [](const FaceType &f) {
+                vcg::Point3d q = vcg::Point3d::Construct(vcg::TriangleNormal(f));
+                return q.Norm() > 0 ? q / q.Norm() : q;
+            };
+            const size_t step = std::max<size_t>(1, m.face.size() / 2000);
+            for (size_t i = 0; i < m.face.size(); i += step) {
+                const FaceType &f = m.face[i];
+                if (f.IsD()) continue;
+                const vcg::Point3d nf = unit(f);
+                around(&f, [&](const FaceType *h) {
+                    if (h != &f) ang.push_back(std::acos(std::max(-1.0, std::min(1.0, nf * unit(*h)))));
+                });
+            }
+            if (!ang.empty()) std::nth_element(ang.begin(), ang.begin() + ang.size() / 2, ang.end());
+            if (!ang.empty() && par.creaseFilterPassAngle > 0)
+                iters = std::max(1, std::min(iters, int(ang[ang.size() / 2] / par.creaseFilterPassAngle)));
+        }
+        std::unordered_map<const FaceType *, int> id;
+        std::vector<const FaceType *> all, front;
+        for (const FaceType *f : faces)
+            if (id.emplace(f, int(all.size())).second) all.push_back(f), front.push_back(f);
         for (int r = 0; r < iters; ++r) {
             std::vector<const FaceType *> next;
             for (const FaceType *g : front)
@@ -477,7 +512,18 @@ public:
             nr[i] = vcg::Point3d::Construct(vcg::TriangleNormal(*all[i]));
             if (nr[i].Norm() > 0) nr[i].Normalize();
         }
-        const double t = par.creaseFilterCos;
+        double t = par.creaseFilterCos;
+        if (par.creaseFilterRelative > 0) {
+            if (!par.creaseFilterRelativeWhole) {
+                for (int i = 0; i < n; ++i)
+                    for (int j : nb[i])
+                        if (j > i) ang.push_back(std::acos(std::max(-1.0, std::min(1.0, nr[i] * nr[j]))));
+                if (!ang.empty()) std::nth_element(ang.begin(), ang.begin() + ang.size() / 2, ang.end());
+            }
+            if (!ang.empty()) {
+                t = std::cos(std::min(0.5 * M_PI, std::max(par.creaseFilterRelativeMin, par.creaseFilterRelative * ang[ang.size() / 2])));
+            }
+        }
         for (int it = 0; it < iters; ++it) {
             for (int i = 0; i < n; ++i) {
                 vcg::Point3d s(0, 0, 0);
