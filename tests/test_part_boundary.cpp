@@ -815,6 +815,7 @@ TEST(ValleyLoop, FollowsTheConcaveCreaseInAFlatValleyWithNoise)
     ValleyLoop<CMeshO>::Param oneRing, ringScale;
     oneRing.concavityRings = 0;
     ringScale.concavityRings = 1;
+    oneRing.creaseFilterIterations = ringScale.creaseFilterIterations = 0; // the raw normals (session 32's filter: off)
     const std::vector<int> scaled = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep, ringScale);
     const std::vector<int> plain = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep, oneRing);
     double maxS, maxP;
@@ -861,8 +862,10 @@ TEST(ValleyLoop, FollowsTheNoisyCreaseWithFilteredNormals)
         return vl.empty() ? 1e9 : sum / vl.size();
     };
     ValleyLoop<CMeshO>::Param raw, filtered;
+    raw.creaseFilterIterations = 0;
     filtered.creaseFilterIterations = 3;
     filtered.creaseFilterCos = 0.866;
+    filtered.creaseFilterRelative = 0, filtered.creaseFilterRelativeWhole = false, filtered.creaseFilterNoiseMin = 0; // the fixed threshold
     double ref = -1, cost = 0;
     const std::vector<int> f = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, filtered, ref, cost);
     const std::vector<int> p = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep, raw);
@@ -901,6 +904,8 @@ TEST(ValleyLoop, FollowsTheNoisyCreaseWithARelativeFilterThreshold)
     whole.creaseFilterIterations = band.creaseFilterIterations = 3;
     whole.creaseFilterRelative = band.creaseFilterRelative = 2;
     whole.creaseFilterRelativeWhole = true;
+    band.creaseFilterRelativeWhole = false;
+    whole.creaseFilterNoiseMin = band.creaseFilterNoiseMin = 0; // no gate (session 32)
     double refW = -1, costW = 0, refB = -1, costB = 0, len = 0;
     const std::vector<int> w = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, whole, refW, costW);
     const std::vector<int> b = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, band, refB, costB);
@@ -917,6 +922,71 @@ TEST(ValleyLoop, FollowsTheNoisyCreaseWithARelativeFilterThreshold)
     EXPECT_LT(sum / w.size(), 0.15); // measured 0.03 (k 2, 3 passes); the fixed 30 degrees: 0.21
     EXPECT_NEAR(ValleyLoop<CMeshO>::Cost(m, w, flat, refW, whole, len), costW, 1e-9 * costW);
     EXPECT_GT(std::fabs(costB2 - costB), 1e-6 * costB); // the mechanism: the set's own median differs
+}
+
+// The crease filter gated by the surface's noise (session 32, the defaults: creaseFilterNoiseMin
+// 0.085 over ValleyLoop::NoiseLevel, 3 passes, the threshold twice the mesh's median
+// face-to-face angle). The noisy knee tube measures above the gate, and the default loop
+// follows the crease where the raw normals lead it off; the clean knee tube measures below it,
+// and its reference and loop are exactly those without the filter (with the gate at 0 the
+// filter runs there too and changes the reference).
+TEST(ValleyLoop, FiltersTheCreaseTermOnlyOnANoisySurface)
+{
+    auto setup = [](CMeshO &m, bool noisy, std::vector<P3> &loop, std::vector<int> &faces) {
+        MakeKneeTube(m, 0.4);
+        if (noisy) {
+            std::vector<std::vector<int>> segs;
+            ASSERT_TRUE(gs_parts::ApplyVariant(m, segs, "noise"));
+            vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+        }
+        for (int i = 0; i < 32; ++i)
+            loop.push_back(P3(std::cos(M_PI * i / 16), std::sin(M_PI * i / 16), 0) * KneeRadius(-kKneeStep) + P3(0, 0, -kKneeStep));
+        for (int v : gs_test::NearestVertices(m, loop)) faces.push_back(int(m.vert[v].cVFp() - &m.face[0]));
+    };
+    ValleyLoop<CMeshO>::Param def, off, ungated;
+    off.creaseFilterIterations = 0;
+    ungated.creaseFilterNoiseMin = 0;
+    ASSERT_GT(def.creaseFilterIterations, 0);
+    ASSERT_GT(def.creaseFilterNoiseMin, 0);
+    // noisy: the filter runs and keeps the loop on the crease
+    CMeshO n;
+    std::vector<P3> loopN;
+    std::vector<int> facesN;
+    setup(n, true, loopN, facesN);
+    const std::vector<double> flatN(n.vert.size(), 0.5);
+    const double levelN = ValleyLoop<CMeshO>::NoiseLevel(n);
+    double refD = -1, costD = 0, refO = -1, costO = 0;
+    const std::vector<int> d = ValleyLoop<CMeshO>::FindAt(n, loopN, facesN, flatN, kKneeStep, def, refD, costD);
+    const std::vector<int> o = ValleyLoop<CMeshO>::FindAt(n, loopN, facesN, flatN, kKneeStep, off, refO, costO);
+    auto meanOff = [&](const CMeshO &m, const std::vector<int> &vl) {
+        double sum = 0;
+        for (int v : vl) sum += std::fabs(m.vert[v].cP()[2]) / kKneeStep;
+        return vl.empty() ? 1e9 : sum / vl.size();
+    };
+    // clean: below the gate, the same reference and loop as without the filter
+    CMeshO c;
+    std::vector<P3> loopC;
+    std::vector<int> facesC;
+    setup(c, false, loopC, facesC);
+    const std::vector<double> flatC(c.vert.size(), 0.5);
+    const double levelC = ValleyLoop<CMeshO>::NoiseLevel(c);
+    double refCD = -1, costCD = 0, refCO = -1, costCO = 0, refCU = -1, costCU = 0;
+    const std::vector<int> cd = ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, def, refCD, costCD);
+    const std::vector<int> co = ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, off, refCO, costCO);
+    const std::vector<int> cu = ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, ungated, refCU, costCU);
+    std::printf("knee tube noise level: noisy %.4f h, clean %.4f h (gate %.3f); noisy loop mean %.2f rings off with the "
+                "default, %.2f without the filter; clean reference %.6f default, %.6f off, %.6f ungated\n",
+                levelN, levelC, def.creaseFilterNoiseMin, meanOff(n, d), meanOff(n, o), refCD, refCO, refCU);
+    EXPECT_GT(levelN, def.creaseFilterNoiseMin);
+    EXPECT_LT(levelC, def.creaseFilterNoiseMin);
+    ASSERT_GE(d.size(), 100u);
+    ASSERT_GE(o.size(), 100u);
+    EXPECT_LT(meanOff(n, d), 0.15);
+    EXPECT_GT(meanOff(n, o), 0.4); // the mechanism: the raw one-ring angles are noise here
+    EXPECT_EQ(cd, co);
+    EXPECT_EQ(refCD, refCO);
+    EXPECT_EQ(costCD, costCO);
+    EXPECT_GT(std::fabs(refCU - refCO), 1e-6 * refCO); // ungated, the filter would change the clean reference
 }
 
 // The sides of a loop are flooded only as far as the part it cuts off: a cap of 3.5 % of a

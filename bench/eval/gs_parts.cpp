@@ -27,7 +27,7 @@
 //   --valley-cfilter K, --valley-cfilter-cos C, --valley-cfilter-gate 0|1: creaseFilterIterations, creaseFilterCos,
 //   creaseFilterGate, session 31; --valley-cfilter-rel k, --valley-cfilter-whole 0|1, --valley-cfilter-min
 //   DEGREES, --valley-cfilter-pass DEGREES: creaseFilterRelative, creaseFilterRelativeWhole,
-//   creaseFilterRelativeMin, creaseFilterPassAngle)
+//   creaseFilterRelativeMin, creaseFilterPassAngle; --valley-cfilter-noise X: creaseFilterNoiseMin, session 32)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -214,6 +214,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-cfilter-whole") vlp.valley.creaseFilterRelativeWhole = std::stoi(next()) != 0;
         else if (a == "--valley-cfilter-min") vlp.valley.creaseFilterRelativeMin = std::stod(next()) * M_PI / 180;
         else if (a == "--valley-cfilter-pass") vlp.valley.creaseFilterPassAngle = std::stod(next()) * M_PI / 180;
+        else if (a == "--valley-cfilter-noise") vlp.valley.creaseFilterNoiseMin = std::stod(next());
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
@@ -288,6 +289,9 @@ int main(int argc, char **argv)
                 peopleAll.n += int(p.cuts.size()), peopleAll.ok += ok;
                 people << id << ',' << md.category << ',' << p.index << ',' << p.cuts.size() << ',' << ok << '\n';
             }
+        if (std::getenv("GS_PARTS_NOISE")) // session 32: ValleyLoop::NoiseLevel, the filter's gate
+            std::fprintf(stderr, "noise %d %s: %.4f h\n", id, md.category.c_str(), ValleyLoop<CMeshO>::NoiseLevel(md.mesh));
+        if (std::getenv("GS_PARTS_NOISE") && std::string(std::getenv("GS_PARTS_NOISE")) == "only") continue;
         for (const std::string &en : energies) {
             auto ty = types.find(en);
             if (ty == types.end()) {
