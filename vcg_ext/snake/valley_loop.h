@@ -28,9 +28,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/snake/crease_normals.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/snake/part_salience.h>
 
@@ -101,46 +101,10 @@ public:
         /// 161 / 167 (+11 -5), noise 102 / 102 (no flat edges); 256 the same rows as 16 on the
         /// refined hand, ant and armadillo. 0: the sign of the apex's height alone, as before.
         double flatTolerance = 16;
-        /// Feature-preserving filter of the face normals the crease term reads (session 31):
-        /// `creaseFilterIterations` passes of vcglib's Smooth::FaceNormalAngleThreshold rule
-        /// over the band's faces (each normal replaced by the sum of its vertex-adjacent faces'
-        /// normals within the threshold angle, cosine `creaseFilterCos`, weighed (cos -
-        /// creaseFilterCos)^2), so that noise on a flank is smoothed but a crease sharper than
-        /// the threshold is not averaged across; the edge's angle and its sign ((n1 - n0) .
-        /// (b1 - b0) < 0) are read from the filtered normals. 0: the raw normals, as before.
-        /// On by default since session 32, gated by creaseFilterNoiseMin (8 passes with the
-        /// relative threshold below; on the noisy variant 3, 5, 8, 12 passes: 128, 144, 150, 143).
-        int creaseFilterIterations = 8;
-        double creaseFilterCos = 0.866;
-        /// With the filter on: only the sign is read from the filtered normals, the angle is
-        /// the edge's raw one-ring one (as concavityRings gates it with area-averaged normals).
-        bool creaseFilterGate = false;
-        /// > 0: the filter's threshold angle is this factor times the median angle between
-        /// the filtered faces' vertex-adjacent pairs (raw normals; at most 90 degrees) instead
-        /// of acos(creaseFilterCos), so that a noisy surface gets a wider threshold than a
-        /// clean one's shallow crease (session 31). 0: the fixed creaseFilterCos.
-        double creaseFilterRelative = 2;
-        /// With creaseFilterRelative: the median over the whole mesh (its faces sampled evenly,
-        /// at most 2000, each with its vertex-adjacent faces) instead of the filtered set, so
-        /// that the band and a loop's own faces (CostParts) get the same threshold.
-        bool creaseFilterRelativeWhole = true;
-        /// With creaseFilterRelative: the threshold angle is at least this (radians), so that a
-        /// clean mesh keeps a fixed one and only a noisier one gets a wider threshold. 0: none.
-        double creaseFilterRelativeMin = 0;
-        /// With creaseFilterRelative and creaseFilterRelativeWhole, > 0: the passes are the
-        /// mesh's median angle over this (radians), at least 1 and at most
-        /// creaseFilterIterations: a rougher surface is filtered further. 0: the count.
-        double creaseFilterPassAngle = 0;
-        /// > 0: the filter runs only where the mesh is noisy (session 32): when NoiseLevel(m),
-        /// the median residual of a quadric height fit over each vertex's two rings in units of
-        /// the local edge length, is below this, the crease term reads the raw normals (no
-        /// pass), so a clean mesh's rows are those without the filter. 0: no gate. Measured:
-        /// the 9 benchmark meshes 0.013-0.069 (the armadillo, a scan, highest), their noisy
-        /// variant (+-0.2 h along the normal) 0.099-0.122, refined / graded 0.010-0.045, the
-        /// CAD-like 0.0000-0.094 (bearings' sharp creases). On bench/eval/gs_parts (--energy
-        /// part --rings 2,3, success_h0) with the defaults: the 9 meshes 168 (every row the same),
-        /// refine 154 and graded 167 (the same), noise 102 -> 150 (+57 -9), CAD-like 20 -> 21/24.
-        double creaseFilterNoiseMin = 0.085;
+        /// The crease term read from feature-preserving filtered face normals (sessions 31-32,
+        /// crease_normals.h: the passes, the threshold, the gate by the surface's noise and the
+        /// figures). PartBoundaryEnd::FinishRun fills in its measures of the mesh once per Run.
+        typename CreaseNormals<MeshType>::Param creaseFilter;
         /// Bands searched in turn (the first round the snake, each next one round the previous
         /// band's loop) while the loop gets cheaper in total and per length: a descent in loop
         /// space that reaches a deeper valley farther than one band from where the snake
@@ -278,11 +242,11 @@ public:
         std::unordered_map<long long, double> bend; // concave dihedral angle, 0 when convex or flat
         std::vector<double> concave;
         std::vector<const FaceType *> bandFaces;
-        if (par.creaseFilterIterations > 0)
+        if (par.creaseFilter.iterations > 0)
             for (int fi : faces) bandFaces.push_back(&m.face[fi]);
-        const FaceNormals fn = FilteredNormals(m, bandFaces, par);
+        const FaceNormals fn = CreaseNormals<MeshType>::Filtered(m, bandFaces, par.creaseFilter);
         for (const auto &ef : edgeFaces) {
-            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilterGate);
+            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.gate);
             bend[ef.first] = x;
             if (x > 0) concave.push_back(x);
         }
@@ -410,16 +374,16 @@ public:
                 if (f->cV(0) == vb || f->cV(1) == vb || f->cV(2) == vb) (f0 ? f1 : f0) = f;
             });
             ef[i] = {f0, f1};
-            if (par.creaseFilterIterations > 0)
+            if (par.creaseFilter.iterations > 0)
                 for (const FaceType *f : {f0, f1})
                     if (f) own.push_back(f);
         }
-        const FaceNormals fn = FilteredNormals(m, own, par);
+        const FaceNormals fn = CreaseNormals<MeshType>::Filtered(m, own, par.creaseFilter);
         for (size_t i = 0; i < vl.size(); ++i) {
             const int a = vl[i], b = vl[(i + 1) % vl.size()];
             const VertexType *va = &m.vert[a], *vb = &m.vert[b];
             const double len = vcg::Distance(va->cP(), vb->cP());
-            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilterGate) / ref) : 0.0;
+            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.gate) / ref) : 0.0;
             eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
             lSum += len;
             cSum += len * (1 - c);
@@ -464,183 +428,11 @@ public:
         }
     };
 
-    /// Unit face normals by face (creaseFilter* of Param); empty: the faces' own.
-    typedef std::unordered_map<const FaceType *, vcg::Point3d> FaceNormals;
-
-    /// The normals of `faces` after par.creaseFilterIterations passes of the thresholded
-    /// filter (vcglib's Smooth::FaceNormalAngleThreshold, which writes the normals of the
-    /// whole mesh: here the mesh is const and the cost must follow the band). The passes run
-    /// over the faces within as many rings of `faces` (vertex-adjacent), so a face of `faces`
-    /// gets the value a pass over the whole mesh would give it, whatever set it comes with.
-    static FaceNormals FilteredNormals(const MeshType &m, const std::vector<const FaceType *> &faces, const Param &par)
-    {
-        FaceNormals out;
-        int iters = par.creaseFilterIterations;
-        if (iters <= 0 || faces.empty()) return out;
-        if (par.creaseFilterNoiseMin > 0 && CachedNoiseLevel(m) < par.creaseFilterNoiseMin) return out;
-        auto around = [&](const FaceType *g, const std::function<void(const FaceType *)> &fn) {
-            for (int k = 0; k < 3; ++k)
-                PartSalience<MeshType>::ForFaces(m, int(g->cV(k) - &m.vert[0]), [&](const FaceType *h, int) { fn(h); });
-        };
-        std::vector<double> ang; // angles between vertex-adjacent faces, for creaseFilterRelative
-        if (par.creaseFilterRelative > 0 && par.creaseFilterRelativeWhole) {
-            auto unit = [](const FaceType &f) {
-                vcg::Point3d q = vcg::Point3d::Construct(vcg::TriangleNormal(f));
-                return q.Norm() > 0 ? q / q.Norm() : q;
-            };
-            const size_t step = std::max<size_t>(1, m.face.size() / 2000);
-            for (size_t i = 0; i < m.face.size(); i += step) {
-                const FaceType &f = m.face[i];
-                if (f.IsD()) continue;
-                const vcg::Point3d nf = unit(f);
-                around(&f, [&](const FaceType *h) {
-                    if (h != &f) ang.push_back(std::acos(std::max(-1.0, std::min(1.0, nf * unit(*h)))));
-                });
-            }
-            if (!ang.empty()) std::nth_element(ang.begin(), ang.begin() + ang.size() / 2, ang.end());
-            if (!ang.empty() && par.creaseFilterPassAngle > 0)
-                iters = std::max(1, std::min(iters, int(ang[ang.size() / 2] / par.creaseFilterPassAngle)));
-        }
-        std::unordered_map<const FaceType *, int> id;
-        std::vector<const FaceType *> all, front;
-        for (const FaceType *f : faces)
-            if (id.emplace(f, int(all.size())).second) all.push_back(f), front.push_back(f);
-        for (int r = 0; r < iters; ++r) {
-            std::vector<const FaceType *> next;
-            for (const FaceType *g : front)
-                around(g, [&](const FaceType *h) {
-                    if (id.emplace(h, int(all.size())).second) all.push_back(h), next.push_back(h);
-                });
-            front.swap(next);
-        }
-        const int n = int(all.size());
-        std::vector<std::vector<int>> nb(n);
-        std::vector<vcg::Point3d> nr(n), tmp(n);
-        for (int i = 0; i < n; ++i) {
-            around(all[i], [&](const FaceType *h) {
-                const auto it = id.find(h);
-                if (it != id.end()) nb[i].push_back(it->second);
-            });
-            std::sort(nb[i].begin(), nb[i].end());
-            nb[i].erase(std::unique(nb[i].begin(), nb[i].end()), nb[i].end());
-            nr[i] = vcg::Point3d::Construct(vcg::TriangleNormal(*all[i]));
-            if (nr[i].Norm() > 0) nr[i].Normalize();
-        }
-        double t = par.creaseFilterCos;
-        if (par.creaseFilterRelative > 0) {
-            if (!par.creaseFilterRelativeWhole) {
-                for (int i = 0; i < n; ++i)
-                    for (int j : nb[i])
-                        if (j > i) ang.push_back(std::acos(std::max(-1.0, std::min(1.0, nr[i] * nr[j]))));
-                if (!ang.empty()) std::nth_element(ang.begin(), ang.begin() + ang.size() / 2, ang.end());
-            }
-            if (!ang.empty()) {
-                t = std::cos(std::min(0.5 * M_PI, std::max(par.creaseFilterRelativeMin, par.creaseFilterRelative * ang[ang.size() / 2])));
-            }
-        }
-        for (int it = 0; it < iters; ++it) {
-            for (int i = 0; i < n; ++i) {
-                vcg::Point3d s(0, 0, 0);
-                for (int j : nb[i]) {
-                    const double c = std::max(1e-4, std::min(1.0, nr[j] * nr[i]));
-                    if (c >= t) s += nr[j] * ((c - t) * (c - t));
-                }
-                tmp[i] = s.Norm() > 0 ? s / s.Norm() : nr[i];
-            }
-            nr.swap(tmp);
-        }
-        for (const FaceType *f : faces) out[f] = nr[id[f]];
-        return out;
-    }
-
-    /// The surface's noise in units of its edge length (session 32): over at most 2000
-    /// vertices sampled evenly (interior, VF adjacency), the RMS residual of the least-squares
-    /// height fit z = ax^2 + bxy + cy^2 + dx + ey + f of the vertex's two rings in the frame of
-    /// its area-weighted normal, over the one-ring's mean edge length; the median. A quadric
-    /// follows the curvature of a clean surface to third order (a smooth limb two rings wide
-    /// leaves little), while noise along the normal stays in the residual: +-0.2 h uniform
-    /// (rms 0.115 h) leaves ~0.09 h.
-    static double NoiseLevel(const MeshType &m)
-    {
-        std::vector<double> res;
-        const size_t step = std::max<size_t>(1, m.vert.size() / 2000);
-        std::vector<const VertexType *> ring;
-        std::vector<const VertexType *> seen;
-        for (size_t vi = 0; vi < m.vert.size(); vi += step) {
-            const VertexType &v = m.vert[vi];
-            if (v.IsD() || !v.cVFp()) continue;
-            vcg::Point3d n(0, 0, 0);
-            ring.clear();
-            double h = 0;
-            int hn = 0;
-            PartSalience<MeshType>::ForFaces(m, int(vi), [&](const FaceType *f, int z) {
-                n += vcg::Point3d::Construct(vcg::TriangleNormal(*f));
-                for (int k = 1; k < 3; ++k) ring.push_back(f->cV((z + k) % 3));
-                h += vcg::Distance(v.cP(), f->cV((z + 1) % 3)->cP()), ++hn;
-            });
-            if (hn < 3 || n.Norm() <= 0) continue;
-            h /= hn;
-            n.Normalize();
-            std::sort(ring.begin(), ring.end());
-            ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-            seen = ring;
-            for (const VertexType *q : ring)
-                PartSalience<MeshType>::ForFaces(m, int(q - &m.vert[0]), [&](const FaceType *f, int) {
-                    for (int k = 0; k < 3; ++k) seen.push_back(f->cV(k));
-                });
-            std::sort(seen.begin(), seen.end());
-            seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-            if (seen.size() < 12 || h <= 0) continue;
-            vcg::Point3d u = std::fabs(n[0]) < 0.9 ? vcg::Point3d(1, 0, 0) : vcg::Point3d(0, 1, 0);
-            u = (u - n * (u * n)).Normalize();
-            const vcg::Point3d w = n ^ u;
-            const vcg::Point3d p = vcg::Point3d::Construct(v.cP());
-            Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
-            Eigen::Matrix<double, 6, 1> B = Eigen::Matrix<double, 6, 1>::Zero();
-            std::vector<Eigen::Matrix<double, 6, 1>> rows;
-            std::vector<double> zs;
-            for (const VertexType *q : seen) {
-                const vcg::Point3d d = (vcg::Point3d::Construct(q->cP()) - p) / h;
-                const double x = d * u, y = d * w, z = d * n;
-                Eigen::Matrix<double, 6, 1> r;
-                r << x * x, x * y, y * y, x, y, 1;
-                A += r * r.transpose(), B += r * z;
-                rows.push_back(r), zs.push_back(z);
-            }
-            const Eigen::Matrix<double, 6, 1> c = A.ldlt().solve(B);
-            double e = 0;
-            for (size_t i = 0; i < rows.size(); ++i) e += std::pow(rows[i].dot(c) - zs[i], 2);
-            if (std::isfinite(e)) res.push_back(std::sqrt(e / rows.size()));
-        }
-        if (res.empty()) return 0;
-        std::nth_element(res.begin(), res.begin() + res.size() / 2, res.end());
-        return res[res.size() / 2];
-    }
-
-    /// NoiseLevel, remembered per thread for the last mesh it was measured on (the band and
-    /// every loop priced call it): keyed by the mesh's address, sizes and a sum of the sampled
-    /// vertices' coordinates, so an edited or another mesh at the same address is measured anew.
-    static double CachedNoiseLevel(const MeshType &m)
-    {
-        struct Key {
-            const MeshType *m = nullptr;
-            size_t nv = 0, nf = 0;
-            double sum = 0;
-            bool operator==(const Key &o) const { return m == o.m && nv == o.nv && nf == o.nf && sum == o.sum; }
-        };
-        Key k;
-        k.m = &m, k.nv = m.vert.size(), k.nf = m.face.size();
-        const size_t step = std::max<size_t>(1, m.vert.size() / 2000);
-        for (size_t vi = 0; vi < m.vert.size(); vi += step)
-            k.sum += double(m.vert[vi].cP()[0]) + 3 * double(m.vert[vi].cP()[1]) + 7 * double(m.vert[vi].cP()[2]);
-        thread_local Key last;
-        thread_local double level = 0;
-        if (!(k == last)) level = NoiseLevel(m), last = k;
-        return level;
-    }
+    /// Unit face normals by face (CreaseNormals::Filtered); empty: the faces' own.
+    typedef typename CreaseNormals<MeshType>::Normals FaceNormals;
 
 private:
-    /// ConcaveAngle with the normals of fn (FilteredNormals) when it has the faces: the angle
+    /// ConcaveAngle with the normals of fn (CreaseNormals::Filtered) when it has the faces: the angle
     /// between them where they turn towards each other across the edge ((n1 - n0) . (b1 - b0)
     /// < 0, b the faces' barycentres), 0 otherwise; the other cases below when fn is empty.
     static double ConcaveAngle(const MeshType &m, const FaceType *f0, const FaceType *f1, int rings, double flat,
