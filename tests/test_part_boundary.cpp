@@ -22,6 +22,7 @@
 #include <vcg_ext/energy/energy_source.h>
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/energy/part_boundary_energy.h>
+#include <vcg_ext/surface/surface_noise.h>
 #include <vcg/complex/algorithms/create/marching_cubes.h>
 #include <vcg/complex/algorithms/create/mc_trivial_walker.h>
 #include <vcg/complex/algorithms/refine.h>
@@ -855,6 +856,36 @@ void MakeKneeTube(CMeshO &m, double up = 1.0)
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
 }
 
+// The knee tube with its part 0.4 as steep (noisy: the benchmark's noise variant, +-0.2 h along
+// the normal) and a loop of 32 points round it a ring below the crease, with the faces at its
+// points (as a snake's samples' for ValleyLoop::Find); false when the variant fails.
+bool MakeKneeTubeLoop(CMeshO &m, bool noisy, std::vector<P3> &loop, std::vector<int> &faces)
+{
+    MakeKneeTube(m, 0.4);
+    if (noisy) {
+        std::vector<std::vector<int>> segs;
+        if (!gs_parts::ApplyVariant(m, segs, "noise")) return false;
+        vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+    }
+    for (int i = 0; i < 32; ++i)
+        loop.push_back(P3(std::cos(M_PI * i / 16), std::sin(M_PI * i / 16), 0) * KneeRadius(-kKneeStep) + P3(0, 0, -kKneeStep));
+    for (int v : gs_test::NearestVertices(m, loop)) faces.push_back(int(m.vert[v].cVFp() - &m.face[0]));
+    return true;
+}
+
+// Edge loop vl's mean distance off the knee tube's crease (z = 0) in rings, its largest in
+// maxOff; 1e9 when it is empty.
+double RingsOffCrease(const CMeshO &m, const std::vector<int> &vl, double &maxOff)
+{
+    double sum = 0;
+    maxOff = 0;
+    for (int v : vl) {
+        const double z = std::fabs(m.vert[v].cP()[2]) / kKneeStep;
+        sum += z, maxOff = std::max(maxOff, z);
+    }
+    return vl.empty() ? 1e9 : sum / vl.size();
+}
+
 } // namespace
 
 // The valley loop follows the mesh's own concave crease where the energy is a flat-floored
@@ -905,32 +936,18 @@ TEST(ValleyLoop, FollowsTheConcaveCreaseInAFlatValley)
 TEST(ValleyLoop, FollowsTheConcaveCreaseInAFlatValleyWithNoise)
 {
     CMeshO m;
-    MakeKneeTube(m, 0.4);
-    std::vector<std::vector<int>> segs;
-    ASSERT_TRUE(gs_parts::ApplyVariant(m, segs, "noise"));
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
-    const std::vector<double> flat(m.vert.size(), 0.5);
     std::vector<P3> loop;
-    for (int i = 0; i < 32; ++i)
-        loop.push_back(P3(std::cos(M_PI * i / 16), std::sin(M_PI * i / 16), 0) * KneeRadius(-kKneeStep) + P3(0, 0, -kKneeStep));
     std::vector<int> faces;
-    for (int v : gs_test::NearestVertices(m, loop)) faces.push_back(int(m.vert[v].cVFp() - &m.face[0]));
-    auto off = [&](const std::vector<int> &vl, double &maxOff) { // in rings off the crease (z = 0)
-        double sum = 0;
-        maxOff = 0;
-        for (int v : vl) {
-            const double z = std::fabs(m.vert[v].cP()[2]) / kKneeStep;
-            sum += z, maxOff = std::max(maxOff, z);
-        }
-        return vl.empty() ? 1e9 : sum / vl.size();
-    };
+    ASSERT_TRUE(MakeKneeTubeLoop(m, true, loop, faces));
+    const std::vector<double> flat(m.vert.size(), 0.5);
     ValleyLoop<CMeshO>::Param oneRing, ringScale;
     oneRing.concavityRings = 0;
     ringScale.concavityRings = 1;
+    oneRing.creaseFilter.iterations = ringScale.creaseFilter.iterations = 0; // the raw normals (session 32's filter: off)
     const std::vector<int> scaled = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep, ringScale);
     const std::vector<int> plain = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep, oneRing);
     double maxS, maxP;
-    const double meanS = off(scaled, maxS), meanP = off(plain, maxP);
+    const double meanS = RingsOffCrease(m, scaled, maxS), meanP = RingsOffCrease(m, plain, maxP);
     std::printf("noisy knee tube: concave at a ring's scale %zu vertices, mean %.2f max %.2f rings off the crease; "
                 "one ring %zu, mean %.2f max %.2f\n", scaled.size(), meanS, maxS, plain.size(), meanP, maxP);
     ASSERT_GE(scaled.size(), 100u);
@@ -939,6 +956,145 @@ TEST(ValleyLoop, FollowsTheConcaveCreaseInAFlatValleyWithNoise)
     EXPECT_LT(maxS, 1.5);
     EXPECT_GT(meanP, 0.4); // the mechanism: one-ring concavity is noise here
     EXPECT_GT(maxP, 1.5);
+}
+
+// The same noisy knee tube with the crease term read from feature-preserving filtered normals
+// (session 31, ValleyLoop::Param::creaseFilter, crease_normals.h: the thresholded filter of vcglib's
+// Smooth::FaceNormalAngleThreshold over the band): the noise on the flanks is smoothed, the
+// crease stays where it is, and the loop follows it where the raw one-ring angles lead it off.
+// The search and CostParts price the found loop alike (the filter runs on the faces within its
+// iterations' rings, whichever set it is given). Measured (3 passes, cos 30 degrees): mean 0.21,
+// max 1.04 rings off, against 0.51 and 2.01 raw; 5 passes or cos 45 degrees: 0.03 and 0.07;
+// 1-2 passes at 30 degrees or up to 5 at 20: 0.33-0.53 (the crease, 0.18 rad, is shallower than
+// the threshold, so here the filter smooths across it as an isotropic one would).
+TEST(ValleyLoop, FollowsTheNoisyCreaseWithFilteredNormals)
+{
+    CMeshO m;
+    std::vector<P3> loop;
+    std::vector<int> faces;
+    ASSERT_TRUE(MakeKneeTubeLoop(m, true, loop, faces));
+    const std::vector<double> flat(m.vert.size(), 0.5);
+    ValleyLoop<CMeshO>::Param raw, filtered;
+    raw.creaseFilter.iterations = 0;
+    filtered.creaseFilter.iterations = 3;
+    filtered.creaseFilter.cos = 0.866;
+    filtered.creaseFilter.relative = 0, filtered.creaseFilter.relativeWhole = false, filtered.creaseFilter.noiseMin = 0; // the fixed threshold
+    double ref = -1, cost = 0;
+    const std::vector<int> f = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, filtered, ref, cost);
+    const std::vector<int> p = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, kKneeStep, raw);
+    double maxF, maxP;
+    const double meanF = RingsOffCrease(m, f, maxF), meanP = RingsOffCrease(m, p, maxP);
+    std::printf("noisy knee tube: filtered normals %zu vertices, mean %.2f max %.2f rings off the crease; "
+                "raw %zu, mean %.2f max %.2f\n", f.size(), meanF, maxF, p.size(), meanP, maxP);
+    ASSERT_GE(f.size(), 100u);
+    ASSERT_GE(p.size(), 100u);
+    EXPECT_LT(meanF, 0.3);
+    EXPECT_LT(maxF, 1.5);
+    EXPECT_GT(meanP, 0.4); // the mechanism: the raw one-ring angles are noise here
+    double len = 0;
+    EXPECT_NEAR(ValleyLoop<CMeshO>::Cost(m, f, flat, ref, filtered, len), cost, 1e-9 * cost);
+}
+
+// The filter of FollowsTheNoisyCreaseWithFilteredNormals with a threshold relative to the
+// surface's own angles (session 31, creaseFilter.relative: k times the median angle between
+// vertex-adjacent faces). Over the whole mesh (creaseFilter.relativeWhole) the band and the
+// loop's own faces get the same threshold, so CostParts prices the found loop as the search did;
+// over the filtered set alone they do not (the loop's faces sit on the crease; measured 0.999).
+TEST(ValleyLoop, FollowsTheNoisyCreaseWithARelativeFilterThreshold)
+{
+    CMeshO m;
+    std::vector<P3> loop;
+    std::vector<int> faces;
+    ASSERT_TRUE(MakeKneeTubeLoop(m, true, loop, faces));
+    const std::vector<double> flat(m.vert.size(), 0.5);
+    ValleyLoop<CMeshO>::Param whole, band;
+    whole.creaseFilter.iterations = band.creaseFilter.iterations = 3;
+    whole.creaseFilter.relative = band.creaseFilter.relative = 2;
+    whole.creaseFilter.relativeWhole = true;
+    band.creaseFilter.relativeWhole = false;
+    whole.creaseFilter.noiseMin = band.creaseFilter.noiseMin = 0; // no gate (session 32)
+    double refW = -1, costW = 0, refB = -1, costB = 0, len = 0;
+    const std::vector<int> w = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, whole, refW, costW);
+    const std::vector<int> b = ValleyLoop<CMeshO>::FindAt(m, loop, faces, flat, kKneeStep, band, refB, costB);
+    double maxOff = 0;
+    const double meanW = RingsOffCrease(m, w, maxOff);
+    const double costB2 = ValleyLoop<CMeshO>::Cost(m, b, flat, refB, band, len);
+    std::printf("noisy knee tube, relative threshold: %zu vertices, mean %.2f max %.2f rings off; "
+                "CostParts / search: whole %.9f, band %.6f\n", w.size(), meanW, maxOff,
+                ValleyLoop<CMeshO>::Cost(m, w, flat, refW, whole, len) / costW, costB2 / costB);
+    ASSERT_GE(w.size(), 100u);
+    EXPECT_LT(meanW, 0.15); // measured 0.03 (k 2, 3 passes); the fixed 30 degrees: 0.21
+    EXPECT_NEAR(ValleyLoop<CMeshO>::Cost(m, w, flat, refW, whole, len), costW, 1e-9 * costW);
+    EXPECT_GT(std::fabs(costB2 - costB), 1e-6 * costB); // the mechanism: the set's own median differs
+}
+
+// The crease filter gated by the surface's noise (session 32, the defaults: creaseFilter.noiseMin
+// 0.085 over SurfaceNoise::Level, 8 passes, the threshold twice the mesh's median
+// face-to-face angle). The noisy knee tube measures above the gate, and the default loop
+// follows the crease where the raw normals lead it off; the clean knee tube measures below it,
+// and its reference and loop are exactly those without the filter (with the gate at 0 the
+// filter runs there too and changes the reference).
+TEST(ValleyLoop, FiltersTheCreaseTermOnlyOnANoisySurface)
+{
+    ValleyLoop<CMeshO>::Param def, off, ungated;
+    off.creaseFilter.iterations = 0;
+    ungated.creaseFilter.noiseMin = 0;
+    EXPECT_GT(def.creaseFilter.iterations, 0);
+    EXPECT_GT(def.creaseFilter.noiseMin, 0);
+    // noisy: the filter runs and keeps the loop on the crease
+    CMeshO n;
+    std::vector<P3> loopN;
+    std::vector<int> facesN;
+    ASSERT_TRUE(MakeKneeTubeLoop(n, true, loopN, facesN));
+    const std::vector<double> flatN(n.vert.size(), 0.5);
+    const double levelN = SurfaceNoise<CMeshO>::Level(n);
+    double refD = -1, costD = 0, refO = -1, costO = 0;
+    const std::vector<int> d = ValleyLoop<CMeshO>::FindAt(n, loopN, facesN, flatN, kKneeStep, def, refD, costD);
+    const std::vector<int> o = ValleyLoop<CMeshO>::FindAt(n, loopN, facesN, flatN, kKneeStep, off, refO, costO);
+    double maxD, maxO;
+    const double offD = RingsOffCrease(n, d, maxD), offO = RingsOffCrease(n, o, maxO);
+    // clean: below the gate, the same reference and loop as without the filter
+    CMeshO c;
+    std::vector<P3> loopC;
+    std::vector<int> facesC;
+    ASSERT_TRUE(MakeKneeTubeLoop(c, false, loopC, facesC));
+    const std::vector<double> flatC(c.vert.size(), 0.5);
+    const double levelC = SurfaceNoise<CMeshO>::Level(c);
+    double refCD = -1, costCD = 0, refCO = -1, costCO = 0, refCU = -1, costCU = 0;
+    const std::vector<int> cd = ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, def, refCD, costCD);
+    const std::vector<int> co = ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, off, refCO, costCO);
+    const std::vector<int> cu = ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, ungated, refCU, costCU);
+    std::printf("knee tube noise level: noisy %.4f h, clean %.4f h (gate %.3f); noisy loop mean %.2f rings off with the "
+                "default, %.2f without the filter; clean reference %.6f default, %.6f off, %.6f ungated\n",
+                levelN, levelC, def.creaseFilter.noiseMin, offD, offO, refCD, refCO, refCU);
+    EXPECT_GT(levelN, def.creaseFilter.noiseMin);
+    EXPECT_LT(levelC, def.creaseFilter.noiseMin);
+    ASSERT_GE(d.size(), 100u);
+    ASSERT_GE(o.size(), 100u);
+    EXPECT_LT(offD, 0.15);
+    EXPECT_GT(offO, 0.4); // the mechanism: the raw one-ring angles are noise here
+    EXPECT_EQ(cd, co);
+    EXPECT_EQ(refCD, refCO);
+    EXPECT_EQ(costCD, costCO);
+    EXPECT_GT(std::fabs(refCU - refCO), 1e-6 * refCO); // ungated, the filter would change the clean reference
+    // the mesh's measures taken once (CreaseNormals::Measured, as PartBoundaryEnd::FinishRun
+    // does) price as those taken at each call: the noisy tube's level and median angle, the
+    // clean one's level alone (gated: no median)
+    ValleyLoop<CMeshO>::Param mn = def, mc = def;
+    mn.creaseFilter = CreaseNormals<CMeshO>::Measured(n, def.creaseFilter);
+    mc.creaseFilter = CreaseNormals<CMeshO>::Measured(c, def.creaseFilter);
+    EXPECT_EQ(mn.creaseFilter.noiseLevel, levelN);
+    EXPECT_EQ(mn.creaseFilter.medianAngle, CreaseNormals<CMeshO>::MedianAngle(n));
+    EXPECT_GT(mn.creaseFilter.medianAngle, 0);
+    EXPECT_EQ(mc.creaseFilter.noiseLevel, levelC);
+    EXPECT_LT(mc.creaseFilter.medianAngle, 0);
+    double refMN = -1, costMN = 0, refMC = -1, costMC = 0;
+    EXPECT_EQ(ValleyLoop<CMeshO>::FindAt(n, loopN, facesN, flatN, kKneeStep, mn, refMN, costMN), d);
+    EXPECT_EQ(refMN, refD);
+    EXPECT_EQ(costMN, costD);
+    EXPECT_EQ(ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, mc, refMC, costMC), cd);
+    EXPECT_EQ(refMC, refCD);
+    EXPECT_EQ(costMC, costCD);
 }
 
 // The sides of a loop are flooded only as far as the part it cuts off: a cap of 3.5 % of a

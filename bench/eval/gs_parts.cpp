@@ -25,7 +25,11 @@
 //   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone;
 //   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off;
 //   --part-flat K: PartBoundaryEnergy::Param::flatTolerance, a vertex flat where its concavity is
-//   within K times the curvature the coordinates' rounding can give its fit, 0 = off, session 32)
+//   within K times the curvature the coordinates' rounding can give its fit, 0 = off, session 32;
+//   --valley-cfilter K, --valley-cfilter-cos C, --valley-cfilter-gate 0|1: creaseFilter's (CreaseNormals::Param)
+//   iterations, cos, gate, session 31; --valley-cfilter-rel k, --valley-cfilter-whole 0|1, --valley-cfilter-min
+//   DEGREES, --valley-cfilter-pass DEGREES: its relative, relativeWhole, relativeMin, passAngle;
+//   --valley-cfilter-noise X: its noiseMin, session 32)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -96,6 +100,7 @@
 #include <vcg_ext/energy/feature_energy.h>
 #include <vcg_ext/snake/geometric_snake.h>
 #include <vcg_ext/snake/part_boundary_end.h>
+#include <vcg_ext/surface/surface_noise.h>
 #include <vcg/complex/algorithms/closest.h>
 #include <vcg/space/fitting3.h>
 #include <vcg/space/index/grid_static_ptr.h>
@@ -229,6 +234,14 @@ int main(int argc, char **argv)
         else if (a == "--valley-crings") vlp.valley.concavityRings = std::stoi(next());
         else if (a == "--valley-flat") vlp.valley.flatTolerance = std::stod(next());
         else if (a == "--part-flat") partPar.flatTolerance = partFlat = std::stod(next());
+        else if (a == "--valley-cfilter") vlp.valley.creaseFilter.iterations = std::stoi(next());
+        else if (a == "--valley-cfilter-cos") vlp.valley.creaseFilter.cos = std::stod(next());
+        else if (a == "--valley-cfilter-gate") vlp.valley.creaseFilter.gate = std::stoi(next()) != 0;
+        else if (a == "--valley-cfilter-rel") vlp.valley.creaseFilter.relative = std::stod(next());
+        else if (a == "--valley-cfilter-whole") vlp.valley.creaseFilter.relativeWhole = std::stoi(next()) != 0;
+        else if (a == "--valley-cfilter-min") vlp.valley.creaseFilter.relativeMin = std::stod(next()) * M_PI / 180;
+        else if (a == "--valley-cfilter-pass") vlp.valley.creaseFilter.passAngle = std::stod(next()) * M_PI / 180;
+        else if (a == "--valley-cfilter-noise") vlp.valley.creaseFilter.noiseMin = std::stod(next());
         else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
         else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
@@ -303,6 +316,9 @@ int main(int argc, char **argv)
                 peopleAll.n += int(p.cuts.size()), peopleAll.ok += ok;
                 people << id << ',' << md.category << ',' << p.index << ',' << p.cuts.size() << ',' << ok << '\n';
             }
+        if (std::getenv("GS_PARTS_NOISE")) // session 32: SurfaceNoise::Level, the crease filter's gate
+            std::fprintf(stderr, "noise %d %s: %.4f h\n", id, md.category.c_str(), vcg::tri::SurfaceNoise<CMeshO>::Level(md.mesh));
+        if (std::getenv("GS_PARTS_NOISE") && std::string(std::getenv("GS_PARTS_NOISE")) == "only") continue;
         for (const std::string &en : energies) {
             auto ty = types.find(en);
             if (ty == types.end()) {

@@ -22,6 +22,7 @@
 #include <vcg/complex/complex.h>
 
 #include <vcg_ext/energy/feature_energy.h>
+#include <vcg_ext/snake/crease_normals.h>
 #include <vcg_ext/snake/loop_bend.h>
 #include <vcg_ext/snake/part_salience.h>
 #include <vcg_ext/snake/stop.h>
@@ -112,7 +113,7 @@ public:
     /// is when the band holds no loop, or only one shorter than half the snake).
     /// `seeded`: the loop the Run started from (Seeded::Of before the Run), or null.
     template <class SnakeType>
-    static bool FinishRun(SnakeType &s, FeatureEnergyType type, bool energyFromQuality, const Param &par = Param(),
+    static bool FinishRun(SnakeType &s, FeatureEnergyType type, bool energyFromQuality, const Param &parIn = Param(),
                           const Seeded *seeded = nullptr)
     {
         if (!s.Closed() || energyFromQuality || type != FeatureEnergyType::PartBoundary ||
@@ -121,6 +122,10 @@ public:
         const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
         const auto &energy = s.GetSurface().Energy();
         const double h = s.LengthScale();
+        // the crease filter's measures of the mesh (its noise, its median angle), taken once
+        // for every search below (CreaseNormals::Param::noiseLevel, medianAngle)
+        Param par = parIn;
+        par.valley.creaseFilter = CreaseNormals<MeshType>::Measured(m, par.valley.creaseFilter);
         const Seeded own = Seeded::Of(s); // the loop where the Run ended
         double ref = -1, cost = 0;
         std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);

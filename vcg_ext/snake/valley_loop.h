@@ -30,6 +30,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <vcg_ext/snake/crease_normals.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/snake/part_salience.h>
 
@@ -100,6 +101,10 @@ public:
         /// 161 / 167 (+11 -5), noise 102 / 102 (no flat edges); 256 the same rows as 16 on the
         /// refined hand, ant and armadillo. 0: the sign of the apex's height alone, as before.
         double flatTolerance = 16;
+        /// The crease term read from feature-preserving filtered face normals (sessions 31-32,
+        /// crease_normals.h: the passes, the threshold, the gate by the surface's noise and the
+        /// figures). PartBoundaryEnd::FinishRun fills in its measures of the mesh once per Run.
+        typename CreaseNormals<MeshType>::Param creaseFilter;
         /// Bands searched in turn (the first round the snake, each next one round the previous
         /// band's loop) while the loop gets cheaper in total and per length: a descent in loop
         /// space that reaches a deeper valley farther than one band from where the snake
@@ -232,8 +237,12 @@ public:
         }
         std::unordered_map<long long, double> bend; // concave dihedral angle, 0 when convex or flat
         std::vector<double> concave;
+        std::vector<const FaceType *> bandFaces;
+        if (par.creaseFilter.iterations > 0)
+            for (int fi : faces) bandFaces.push_back(&m.face[fi]);
+        const FaceNormals fn = CreaseNormals<MeshType>::Filtered(m, bandFaces, par.creaseFilter);
         for (const auto &ef : edgeFaces) {
-            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance);
+            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.gate);
             bend[ef.first] = x;
             if (x > 0) concave.push_back(x);
         }
@@ -351,15 +360,26 @@ public:
                           double &eSum, double &lSum, double &cSum, const Param &par = Param())
     {
         eSum = lSum = cSum = 0;
+        std::vector<std::pair<const FaceType *, const FaceType *>> ef(vl.size(), {nullptr, nullptr});
+        std::vector<const FaceType *> own;
         for (size_t i = 0; i < vl.size(); ++i) {
             const int a = vl[i], b = vl[(i + 1) % vl.size()];
-            const VertexType *va = &m.vert[a], *vb = &m.vert[b];
+            const VertexType *vb = &m.vert[b];
             const FaceType *f0 = nullptr, *f1 = nullptr;
             PartSalience<MeshType>::ForFaces(m, a, [&](const FaceType *f, int) {
                 if (f->cV(0) == vb || f->cV(1) == vb || f->cV(2) == vb) (f0 ? f1 : f0) = f;
             });
+            ef[i] = {f0, f1};
+            if (par.creaseFilter.iterations > 0)
+                for (const FaceType *f : {f0, f1})
+                    if (f) own.push_back(f);
+        }
+        const FaceNormals fn = CreaseNormals<MeshType>::Filtered(m, own, par.creaseFilter);
+        for (size_t i = 0; i < vl.size(); ++i) {
+            const int a = vl[i], b = vl[(i + 1) % vl.size()];
+            const VertexType *va = &m.vert[a], *vb = &m.vert[b];
             const double len = vcg::Distance(va->cP(), vb->cP());
-            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, f0, f1, par.concavityRings, par.flatTolerance) / ref) : 0.0;
+            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.gate) / ref) : 0.0;
             eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
             lSum += len;
             cSum += len * (1 - c);
@@ -404,7 +424,27 @@ public:
         }
     };
 
+    /// Unit face normals by face (CreaseNormals::Filtered); empty: the faces' own.
+    typedef typename CreaseNormals<MeshType>::Normals FaceNormals;
+
 private:
+    /// ConcaveAngle with the normals of fn (CreaseNormals::Filtered) when it has the faces: the angle
+    /// between them where they turn towards each other across the edge ((n1 - n0) . (b1 - b0)
+    /// < 0, b the faces' barycentres), 0 otherwise; the other cases below when fn is empty.
+    static double ConcaveAngle(const MeshType &m, const FaceType *f0, const FaceType *f1, int rings, double flat,
+                               const FaceNormals &fn, bool gate)
+    {
+        if (fn.empty()) return ConcaveAngle(m, f0, f1, rings, flat);
+        if (!f0 || !f1) return 0;
+        const auto i0 = fn.find(f0), i1 = fn.find(f1);
+        if (i0 == fn.end() || i1 == fn.end()) return ConcaveAngle(m, f0, f1, rings, flat);
+        const vcg::Point3d &n0 = i0->second, &n1 = i1->second;
+        const vcg::Point3d b0 = vcg::Point3d::Construct(vcg::Barycenter(*f0)), b1 = vcg::Point3d::Construct(vcg::Barycenter(*f1));
+        if (!((n1 - n0) * (b1 - b0) < 0)) return 0;
+        if (gate) return ConcaveAngle(f0, f1, flat);
+        return std::acos(std::max(-1.0, std::min(1.0, n0 * n1)));
+    }
+
     /// ConcaveAngle where the surface is concave across the edge at a scale as well: with
     /// rings > 0, 0 unless f0's and f1's normals, each averaged by area over the faces within
     /// `rings` rings (sharing a vertex, repeatedly), turn towards each other across the edge
