@@ -439,6 +439,7 @@ private:
         const auto i0 = fn.find(f0), i1 = fn.find(f1);
         if (i0 == fn.end() || i1 == fn.end()) return ConcaveAngle(m, f0, f1, rings, flat);
         const vcg::Point3d &n0 = i0->second, &n1 = i1->second;
+        if (!(n0.Norm() > 0 && n1.Norm() > 0)) return 0; // a zero-area face keeps no normal: no crease, as unfiltered
         const vcg::Point3d b0 = vcg::Point3d::Construct(vcg::Barycenter(*f0)), b1 = vcg::Point3d::Construct(vcg::Barycenter(*f1));
         if (!((n1 - n0) * (b1 - b0) < 0)) return 0;
         if (gate) return ConcaveAngle(f0, f1, flat);
