@@ -15,7 +15,11 @@
 //                  replaces it), what the edit tool does at every such Run end; a loop of 6
 //                  clicks round a patch of the bunny's flank, run 60 operations; arg = the
 //                  mesh's faces (bunny00 as scanned, and subdivided to 1.2M: the ratio shows
-//                  what grows with the mesh rather than with the band)
+//                  what grows with the mesh rather than with the band). Session 33: with the
+//                  mesh's measures the crease filter reads taken once per mesh, as the hosts
+//                  do (SnakeSession::RunEndParam), not in the Run's end
+// BM_RunEndMeasures those measures (PartBoundaryEnd::Measured: SurfaceNoise::Level, the median
+//                  face angle), once per mesh and energy; arg as BM_ValleyLoop
 // BM_ValleyLoopSeeded the same end when the loop converged shorter than half its seeded loop
 //                  (PartBoundaryEnd::Param::seededShrink, session 25: a second search round the
 //                  seeded loop), on a tall bump on a sphere (icosphere 6, 81920 faces; its rim a
@@ -217,6 +221,7 @@ ValleyCase &Valley(int faces)
                  s->Samples().size(), s->LengthScale(), s->LengthScale() / k.c->MeanEdge(), SnakeStopKey(s->Stats().stop));
     k.samples = s->Samples();
     k.unit = s->LengthScale();
+    k.c->RunEndParam(); // the mesh's measures for the Run's end, taken once (BM_RunEndMeasures)
     return k;
 }
 
@@ -230,11 +235,25 @@ void BM_ValleyLoop(benchmark::State &state)
         s->InitFromSamples(k.samples, true, k.unit);
         s->EndRun(SnakeStop::Converged); // as a Run that converged there
         state.ResumeTiming();
-        replaced += PartBoundaryEnd<CMeshO>::FinishRun(*s, FeatureEnergyType::PartBoundary, false);
+        replaced += PartBoundaryEnd<CMeshO>::FinishRun(*s, FeatureEnergyType::PartBoundary, false, k.c->RunEndParam());
     }
     state.counters["faces"] = k.c->Mesh().fn;
     state.counters["samples"] = double(k.samples.size());
     state.counters["replaced"] = double(replaced) / state.iterations();
+}
+
+/// What a host pays once per mesh for the Run's end (SnakeSession::RunEndParam, session 33).
+void BM_RunEndMeasures(benchmark::State &state)
+{
+    ValleyCase &k = Valley(int(state.range(0)));
+    double noise = 0;
+    for (auto _ : state) {
+        const PartBoundaryEnd<CMeshO>::Param p = PartBoundaryEnd<CMeshO>::Measured(k.c->Mesh(), PartBoundaryEnd<CMeshO>::Param());
+        noise = p.valley.creaseFilter.noiseLevel;
+        benchmark::DoNotOptimize(noise);
+    }
+    state.counters["faces"] = k.c->Mesh().fn;
+    state.counters["noise"] = noise;
 }
 
 /// The tall bump of tests/test_part_boundary.cpp (ValleyLoop.SearchesRoundTheSeededLoopWhenTheSnakeShrankFar)
@@ -246,6 +265,7 @@ struct SeededCase
     std::vector<SnakeSample> samples[2];
     double unit[2] = {0, 0};
     PartBoundaryEnd<CMeshO>::Seeded seeded[2];
+    PartBoundaryEnd<CMeshO>::Param par; // with the mesh's measures (PartBoundaryEnd::Measured), as a host's
 };
 
 double Leg(double phi) { return 1.0 + 0.8 * std::exp(-std::pow(phi / 0.25, 2)); }
@@ -265,6 +285,7 @@ SeededCase &Seeded()
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
     FeatureEnergy<CMeshO>::Compute(m, FeatureEnergyType::PartBoundary, 2);
     k->surf = std::make_shared<SnakeSurface<CMeshO>>(m, SnakeEnergySource<CMeshO>::CaptureSmoothingFor(false, FeatureEnergyType::PartBoundary));
+    k->par = PartBoundaryEnd<CMeshO>::Measured(m, PartBoundaryEnd<CMeshO>::Param());
     // the rim: where the meridian bends most inwards (as the test's RimOf)
     double rim = 0, kBest = 1e300;
     for (double phi = 0.05; phi < 1.5; phi += 1e-4) {
@@ -316,8 +337,7 @@ void BM_ValleyLoopSeeded(benchmark::State &state)
         shrank += ValleyLoop<CMeshO>::PolyLength(s.PolylinePositions()) <
                   PartBoundaryEnd<CMeshO>::Param().seededShrink * ValleyLoop<CMeshO>::PolyLength(k.seeded[c].loop);
         state.ResumeTiming();
-        replaced += PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, PartBoundaryEnd<CMeshO>::Param(),
-                                                       with ? &k.seeded[c] : nullptr);
+        replaced += PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, k.par, with ? &k.seeded[c] : nullptr);
     }
     state.counters["faces"] = k.m.fn;
     state.counters["samples"] = double(k.samples[c].size());
@@ -340,6 +360,7 @@ struct StubCase
     double unit = 0;
     PartBoundaryEnd<CMeshO>::Seeded seeded;
     bool towardBody = false; // the seeded loop's search empty after the loop shrank: TowardBody's path
+    PartBoundaryEnd<CMeshO>::Param par; // with the mesh's measures (PartBoundaryEnd::Measured), as a host's
 };
 
 /// Splits the edges with both ends below z = -1.
@@ -367,6 +388,7 @@ StubCase &Stub(int faces)
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
     for (auto &v : m.vert) v.Q() = 0.5;
     k->surf = std::make_shared<SnakeSurface<CMeshO>>(m, 0); // the energy: the vertices' quality
+    k->par = PartBoundaryEnd<CMeshO>::Measured(m, PartBoundaryEnd<CMeshO>::Param());
     std::vector<int> seeds;
     for (int i = 0; i < n; i += 2) seeds.push_back(ring[2] + i);
     GeometricSnake<CMeshO> t(k->surf);
@@ -402,8 +424,7 @@ void BM_PartEndTowardBody(benchmark::State &state)
         s.InitFromSamples(k.samples, true, k.unit);
         s.EndRun(SnakeStop::Converged); // as a Run that converged there
         state.ResumeTiming();
-        replaced += PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false,
-                                                       PartBoundaryEnd<CMeshO>::Param(), &k.seeded);
+        replaced += PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, k.par, &k.seeded);
         state.PauseTiming();
         for (const auto &x : s.PolylinePositions()) zMax = std::max(zMax, std::fabs(x[2]));
         state.ResumeTiming();
@@ -422,6 +443,7 @@ BENCHMARK(BM_Click)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(40
 BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(BM_BuildCold)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_ValleyLoop)->Arg(0)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
+BENCHMARK(BM_RunEndMeasures)->Arg(0)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(BM_ValleyLoopSeeded)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(BM_PartEndTowardBody)->Arg(0)->Arg(100000)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 

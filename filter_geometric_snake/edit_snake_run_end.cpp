@@ -42,9 +42,10 @@ void EditGeometricSnakePlugin::reportRunEnd(tri::SnakeStop why)
     const double compute = (ctl->ComputeMs() - runCompute0) / 1000.0, wall = runClock.elapsed() / 1000.0;
     s->EndRun(why, runLimits().Message(why, ops, wall));
     // a converged part-boundary loop ends on the cheapest edge loop round it, as in the filters
-    // (searched round the loop the Run started from when it shrank far, PartBoundaryEnd::Param::seededShrink)
-    vcg::tri::PartBoundaryEnd<CMeshO>::FinishRun(*s, ctl->EnergyType(), ctl->EnergyFromQuality(),
-                                                 vcg::tri::PartBoundaryEnd<CMeshO>::Param(), &runSeeded);
+    // (searched round the loop the Run started from when it shrank far, PartBoundaryEnd::Param::seededShrink),
+    // with the mesh's measures taken once per mesh (SnakeSession::RunEndParam)
+    vcg::tri::PartBoundaryEnd<CMeshO>::FinishRun(*s, ctl->EnergyType(), ctl->EnergyFromQuality(), ctl->RunEndParam(),
+                                                 &runSeeded);
     const std::string &msg = s->Stats().stopMessage;
     const bool problem = tri::SnakeStopIsProblem(why);
     // the Log line the GUI tests read: the end, compute time vs wall time, the reason

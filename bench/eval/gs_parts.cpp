@@ -203,7 +203,7 @@ int main(int argc, char **argv)
     int seedCount = 8, maxOps = 400;
     double balloon = 0, alpha = -1, beta = -1, ext = -1;
     bool valleyLoop = true;
-    PartBoundaryEnd<CMeshO>::Param vlp;
+    PartBoundaryEnd<CMeshO>::Param vlpArgs;
     PartBoundaryEnergy<CMeshO>::Param partPar; // --part-flat
     double partFlat = -1;
     int smoothing = 2, capture = -1; // -1: the tool's choice for the energy
@@ -219,51 +219,51 @@ int main(int argc, char **argv)
         else if (a == "--out") out = next();
         else if (a == "--people") peopleOut = next();
         else if (a == "--variant") variant = next();
-        else if (a == "--seeded-shrink") vlp.seededShrink = std::stod(next());
-        else if (a == "--no-toward-body") vlp.towardBody = false;
+        else if (a == "--seeded-shrink") vlpArgs.seededShrink = std::stod(next());
+        else if (a == "--no-toward-body") vlpArgs.towardBody = false;
         else if (a == "--alpha") alpha = std::stod(next());
         else if (a == "--beta") beta = std::stod(next());
         else if (a == "--ext") ext = std::stod(next());
         else if (a == "--smoothing") smoothing = std::stoi(next());
         else if (a == "--capture") capture = std::stoi(next());
         else if (a == "--no-valley-loop") valleyLoop = false;
-        else if (a == "--valley-concavity") vlp.valley.concavityWeight = std::stod(next());
-        else if (a == "--valley-band") vlp.valley.bandWidth = std::stod(next());
-        else if (a == "--valley-lambda") vlp.valley.lambda = std::stod(next());
-        else if (a == "--valley-cscale") vlp.valley.concavityScale = std::stod(next());
-        else if (a == "--valley-crings") vlp.valley.concavityRings = std::stoi(next());
-        else if (a == "--valley-flat") vlp.valley.flatTolerance = std::stod(next());
+        else if (a == "--valley-concavity") vlpArgs.valley.concavityWeight = std::stod(next());
+        else if (a == "--valley-band") vlpArgs.valley.bandWidth = std::stod(next());
+        else if (a == "--valley-lambda") vlpArgs.valley.lambda = std::stod(next());
+        else if (a == "--valley-cscale") vlpArgs.valley.concavityScale = std::stod(next());
+        else if (a == "--valley-crings") vlpArgs.valley.concavityRings = std::stoi(next());
+        else if (a == "--valley-flat") vlpArgs.valley.flatTolerance = std::stod(next());
         else if (a == "--part-flat") partPar.flatTolerance = partFlat = std::stod(next());
-        else if (a == "--valley-cfilter") vlp.valley.creaseFilter.iterations = std::stoi(next());
-        else if (a == "--valley-cfilter-cos") vlp.valley.creaseFilter.cos = std::stod(next());
-        else if (a == "--valley-cfilter-gate") vlp.valley.creaseFilter.gate = std::stoi(next()) != 0;
-        else if (a == "--valley-cfilter-rel") vlp.valley.creaseFilter.relative = std::stod(next());
-        else if (a == "--valley-cfilter-whole") vlp.valley.creaseFilter.relativeWhole = std::stoi(next()) != 0;
-        else if (a == "--valley-cfilter-min") vlp.valley.creaseFilter.relativeMin = std::stod(next()) * M_PI / 180;
-        else if (a == "--valley-cfilter-pass") vlp.valley.creaseFilter.passAngle = std::stod(next()) * M_PI / 180;
-        else if (a == "--valley-cfilter-noise") vlp.valley.creaseFilter.noiseMin = std::stod(next());
-        else if (a == "--valley-iterations") vlp.valley.iterations = std::stoi(next());
-        else if (a == "--cross-bend") vlp.crossBend = std::stod(next());
-        else if (a == "--cross-price") vlp.crossPrice = std::stod(next());
-        else if (a == "--cross-dominant") vlp.crossDominant = std::stoi(next()) != 0;
-        else if (a == "--cross-steps") vlp.crossSteps = std::stoi(next());
-        else if (a == "--cross-step") vlp.crossStep = std::stod(next());
-        else if (a == "--cross-dist") vlp.crossDist = std::stod(next());
-        else if (a == "--cross-dirs") vlp.crossDirs = std::stoi(next());
-        else if (a == "--cross-gain") vlp.crossGain = std::stod(next());
-        else if (a == "--salience") vlp.salience.exponent = std::stod(next());
-        else if (a == "--salience-growth") vlp.salience.growth = std::stod(next());
-        else if (a == "--salience-steps") vlp.salience.steps = std::stoi(next());
-        else if (a == "--salience-margin") vlp.salience.margin = std::stod(next());
-        else if (a == "--profile-slope") vlp.salience.profile.slope = std::stod(next());
-        else if (a == "--profile-tube") vlp.salience.profile.minTube = std::stod(next());
-        else if (a == "--profile-price") vlp.salience.profilePrice = std::stod(next());
-        else if (a == "--profile-band") vlp.salience.profileBand = std::stod(next());
-        else if (a == "--salience-width") vlp.salience.widthExponent = std::stod(next());
-        else if (a == "--salience-width-reach") vlp.salience.widthReach = std::stod(next());
-        else if (a == "--sdf-rays") vlp.salience.sdf.rays = std::stoi(next());
-        else if (a == "--salience-width-radius") vlp.salience.widthRadius = std::stod(next());
-        else if (a == "--salience-width-samples") vlp.salience.widthSamples = std::stoi(next());
+        else if (a == "--valley-cfilter") vlpArgs.valley.creaseFilter.iterations = std::stoi(next());
+        else if (a == "--valley-cfilter-cos") vlpArgs.valley.creaseFilter.cos = std::stod(next());
+        else if (a == "--valley-cfilter-gate") vlpArgs.valley.creaseFilter.gate = std::stoi(next()) != 0;
+        else if (a == "--valley-cfilter-rel") vlpArgs.valley.creaseFilter.relative = std::stod(next());
+        else if (a == "--valley-cfilter-whole") vlpArgs.valley.creaseFilter.relativeWhole = std::stoi(next()) != 0;
+        else if (a == "--valley-cfilter-min") vlpArgs.valley.creaseFilter.relativeMin = std::stod(next()) * M_PI / 180;
+        else if (a == "--valley-cfilter-pass") vlpArgs.valley.creaseFilter.passAngle = std::stod(next()) * M_PI / 180;
+        else if (a == "--valley-cfilter-noise") vlpArgs.valley.creaseFilter.noiseMin = std::stod(next());
+        else if (a == "--valley-iterations") vlpArgs.valley.iterations = std::stoi(next());
+        else if (a == "--cross-bend") vlpArgs.crossBend = std::stod(next());
+        else if (a == "--cross-price") vlpArgs.crossPrice = std::stod(next());
+        else if (a == "--cross-dominant") vlpArgs.crossDominant = std::stoi(next()) != 0;
+        else if (a == "--cross-steps") vlpArgs.crossSteps = std::stoi(next());
+        else if (a == "--cross-step") vlpArgs.crossStep = std::stod(next());
+        else if (a == "--cross-dist") vlpArgs.crossDist = std::stod(next());
+        else if (a == "--cross-dirs") vlpArgs.crossDirs = std::stoi(next());
+        else if (a == "--cross-gain") vlpArgs.crossGain = std::stod(next());
+        else if (a == "--salience") vlpArgs.salience.exponent = std::stod(next());
+        else if (a == "--salience-growth") vlpArgs.salience.growth = std::stod(next());
+        else if (a == "--salience-steps") vlpArgs.salience.steps = std::stoi(next());
+        else if (a == "--salience-margin") vlpArgs.salience.margin = std::stod(next());
+        else if (a == "--profile-slope") vlpArgs.salience.profile.slope = std::stod(next());
+        else if (a == "--profile-tube") vlpArgs.salience.profile.minTube = std::stod(next());
+        else if (a == "--profile-price") vlpArgs.salience.profilePrice = std::stod(next());
+        else if (a == "--profile-band") vlpArgs.salience.profileBand = std::stod(next());
+        else if (a == "--salience-width") vlpArgs.salience.widthExponent = std::stod(next());
+        else if (a == "--salience-width-reach") vlpArgs.salience.widthReach = std::stod(next());
+        else if (a == "--sdf-rays") vlpArgs.salience.sdf.rays = std::stoi(next());
+        else if (a == "--salience-width-radius") vlpArgs.salience.widthRadius = std::stod(next());
+        else if (a == "--salience-width-samples") vlpArgs.salience.widthSamples = std::stoi(next());
         else if (a == "--energy") {
             energies.clear();
             std::stringstream ss(next());
@@ -344,6 +344,11 @@ int main(int argc, char **argv)
             }
             auto surf = std::make_shared<Surface>(
                 md.mesh, capture >= 0 ? capture : SnakeEnergySource<CMeshO>::CaptureSmoothingFor(false, ty->second));
+            // the Run's end's parameters with the measures of this mesh its crease filter reads (its
+            // noise, its median face angle), taken once per mesh as a host does (PartBoundaryEnd::Measured,
+            // session 33), not at every row's end
+            const PartBoundaryEnd<CMeshO>::Param vlp =
+                ty->second == FeatureEnergyType::PartBoundary ? PartBoundaryEnd<CMeshO>::Measured(md.mesh, vlpArgs) : vlpArgs;
             // GS_PARTS_CLEAN_LOOP=1 with --variant noise (session 30): each row's loop found on the original
             // mesh from the same seed vertices, then read on the noisy vertices and scored there against
             // the noisy cuts: what the noise costs through the criterion alone (a loop that does not move)
@@ -449,7 +454,7 @@ int main(int argc, char **argv)
                             t.InitFromSeeds(seeds, true);
                             const auto sc0 = PartBoundaryEnd<CMeshO>::Seeded::Of(t);
                             t.Run(maxOps);
-                            PartBoundaryEnd<CMeshO>::FinishRun(t, ty->second, false, vlp, &sc0);
+                            PartBoundaryEnd<CMeshO>::FinishRun(t, ty->second, false, vlpArgs, &sc0); // the clean mesh: measured at the call
                             // the loop's samples (along its edges) snapped to the nearest vertex: its vertex loop
                             std::vector<vcg::Point3d> cl, nl;
                             // (vcglib's uniform grid over the clean mesh's vertices, session 31; the loop's

@@ -92,8 +92,7 @@ public:
         lim.seconds = s.timeLimit;
         const auto seeded = PartBoundaryEnd<MeshType>::Seeded::Of(snake); // a loop that shrinks far is searched from it
         r.stop = snake.Run(lim, progress);
-        PartBoundaryEnd<MeshType>::FinishRun(snake, ctl.EnergyType(), ctl.EnergyFromQuality(),
-                                             typename PartBoundaryEnd<MeshType>::Param(), &seeded);
+        PartBoundaryEnd<MeshType>::FinishRun(snake, ctl.EnergyType(), ctl.EnergyFromQuality(), ctl.RunEndParam(), &seeded);
         r.stopMessage = snake.Stats().stopMessage;
         r.curve = snake.PolylinePositions();
         for (const auto &x : r.curve)

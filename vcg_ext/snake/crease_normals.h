@@ -71,9 +71,11 @@ public:
         /// 150 (+57 -9), CAD-like 20 -> 21/24.
         double noiseMin = 0.085;
         /// The mesh's measures, taken once where a caller prices many sets of faces on one
-        /// mesh (Measured: PartBoundaryEnd::FinishRun): SurfaceNoise::Level and MedianAngle.
-        /// < 0: measured at each Filtered call (a lone call, e.g. a diagnostic's CostParts).
-        /// They belong to the mesh they were measured on.
+        /// mesh (Measured): SurfaceNoise::Level and MedianAngle. A host takes them once per
+        /// mesh (PartBoundaryEnd::Measured: SnakeSession::RunEndParam, gs_parts; session 33),
+        /// PartBoundaryEnd::FinishRun those it was not given. < 0: measured at each Filtered
+        /// call (a lone call, e.g. a diagnostic's CostParts). They belong to the mesh they
+        /// were measured on.
         double noiseLevel = -1;
         double medianAngle = -1;
     };

@@ -108,6 +108,17 @@ public:
         }
     };
 
+    /// par with the measures of mesh m that the crease filter reads filled in (those still < 0:
+    /// CreaseNormals::Measured, the noise level and the median face angle). They are the mesh's,
+    /// not the Run's (~20 ms on bunny00's 70k faces, session 33): a host takes them once per
+    /// mesh (SnakeSession::RunEndParam, bench/eval/gs_parts) and passes them to every FinishRun
+    /// on it; FinishRun takes those still missing itself.
+    static Param Measured(const MeshType &m, Param par)
+    {
+        par.valley.creaseFilter = CreaseNormals<MeshType>::Measured(m, par.valley.creaseFilter);
+        return par;
+    }
+
     /// A closed snake that converged on the part-boundary energy ends on the cheapest loop of
     /// edges round it. Returns true when the snake was replaced by that loop (it is kept as it
     /// is when the band holds no loop, or only one shorter than half the snake).
@@ -122,10 +133,9 @@ public:
         const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
         const auto &energy = s.GetSurface().Energy();
         const double h = s.LengthScale();
-        // the crease filter's measures of the mesh (its noise, its median angle), taken once
-        // for every search below (CreaseNormals::Param::noiseLevel, medianAngle)
-        Param par = parIn;
-        par.valley.creaseFilter = CreaseNormals<MeshType>::Measured(m, par.valley.creaseFilter);
+        // the crease filter's measures of the mesh (its noise, its median angle), for every
+        // search below: the host's (Measured, once per mesh), else taken here
+        const Param par = Measured(m, parIn);
         const Seeded own = Seeded::Of(s); // the loop where the Run ended
         double ref = -1, cost = 0;
         std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);

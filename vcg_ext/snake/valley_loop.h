@@ -103,7 +103,8 @@ public:
         double flatTolerance = 16;
         /// The crease term read from feature-preserving filtered face normals (sessions 31-32,
         /// crease_normals.h: the passes, the threshold, the gate by the surface's noise and the
-        /// figures). PartBoundaryEnd::FinishRun fills in its measures of the mesh once per Run.
+        /// figures). Its measures of the mesh: the host's, once per mesh (PartBoundaryEnd::
+        /// Measured, session 33), else FinishRun's, once per Run.
         typename CreaseNormals<MeshType>::Param creaseFilter;
         /// Bands searched in turn (the first round the snake, each next one round the previous
         /// band's loop) while the loop gets cheaper in total and per length: a descent in loop
