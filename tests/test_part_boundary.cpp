@@ -16,6 +16,7 @@
 
 #include <part_cases.h>
 #include <revolved_profile.h>
+#include <vcg_ext/session/controller.h>
 #include <vcg_ext/snake/loop_bend.h>
 #include <vcg_ext/snake/part_boundary_end.h>
 #include <snake_test_util.h>
@@ -1261,6 +1262,89 @@ TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
     double len = 0; // Cost: the same sum, as the Run's end compares loops with (PerLength)
     EXPECT_NEAR(ValleyLoop<CMeshO>::Cost(m, found, flat, ref, par, len), cost, 1e-9 * cost);
     EXPECT_EQ(len, l);
+}
+
+// The filtered crease term gives an edge next to a zero-area face no crease, as the unfiltered
+// one does (session 32's last fix, ValleyLoop's ConcaveAngle with CreaseNormals::Filtered's
+// normals): the zero-area face keeps a zero filtered normal, and before the fix the edge was
+// priced acos(0) = 90 degrees concave whenever the sign test ((n1 - n0) . (b1 - b0) < 0) tipped
+// with the neighbour's filtered normal. A flat grid whose cell (a, b, c) is flattened to zero
+// area (b moved to the midpoint of its diagonal a-c) beside the face (a, c, d); the grid rises
+// beyond d (z = 0.5 (y - x - h) where y - x > h), so the filter tilts (a, c, d)'s normal
+// towards the zero-area face and the sign test tips. The edge a-c, walked both ways
+// (CostParts' loop {a, c}), costs its full length in concavity (c = 0 on it).
+TEST(ValleyLoop, AZeroAreaFaceGivesItsEdgeNoCreaseWithFilteredNormals)
+{
+    CMeshO m;
+    const int n = 8, i = 3, j = 3;
+    const double h = 1.0 / n;
+    gs_test::MakeFlatGrid(m, n);
+    const auto idx = [&](int x, int y) { return y * (n + 1) + x; };
+    for (auto &v : m.vert) {
+        const double t = double(v.cP()[1]) - double(v.cP()[0]) - h;
+        if (t > 1e-9) v.P()[2] = Scalarm(0.5 * t);
+    }
+    const int a = idx(i, j), b = idx(i + 1, j), c = idx(i + 1, j + 1);
+    m.vert[b].P() = (m.vert[a].cP() + m.vert[c].cP()) * Scalarm(0.5); // (a, b, c): zero area
+    gs_test::EnableSnakeAdjacency(m);
+    vcg::tri::UpdateTopology<CMeshO>::VertexFace(m);
+    const CFaceO *zero = nullptr, *beside = nullptr; // (a, b, c) and (a, c, d), d = (i, j + 1)
+    for (const CFaceO &f : m.face) {
+        auto has = [&](int v) { return f.cV(0) == &m.vert[v] || f.cV(1) == &m.vert[v] || f.cV(2) == &m.vert[v]; };
+        if (has(a) && has(c)) (has(b) ? zero : beside) = &f;
+    }
+    ASSERT_TRUE(zero && beside);
+    ASSERT_EQ(vcg::DoubleArea(*zero), 0);
+    ValleyLoop<CMeshO>::Param par;
+    par.creaseFilter.iterations = 1;
+    par.creaseFilter.relative = 0, par.creaseFilter.cos = 0.5; // a fixed 60-degree threshold
+    par.creaseFilter.noiseMin = 0;                              // no gate by the surface's noise
+    par.concavityRings = 1;
+    // the mechanism: the zero-area face's filtered normal stays zero, its neighbour's turns
+    // towards it (the sign test's side: n . (b_zero - b_beside) > 0)
+    const auto fn = CreaseNormals<CMeshO>::Filtered(m, {zero, beside}, par.creaseFilter);
+    ASSERT_EQ(fn.count(zero), 1u);
+    ASSERT_EQ(fn.count(beside), 1u);
+    EXPECT_EQ(fn.at(zero).Norm(), 0);
+    const P3 b0 = P3::Construct(vcg::Barycenter(*zero)), b1 = P3::Construct(vcg::Barycenter(*beside));
+    EXPECT_GT(fn.at(beside) * (b0 - b1), 1e-3 * h);
+    const std::vector<double> flat(m.vert.size(), 0.5);
+    double e, l, cs;
+    ValleyLoop<CMeshO>::CostParts(m, {a, c}, flat, 1.0, e, l, cs, par);
+    EXPECT_NEAR(l, 2 * std::sqrt(2.0) * h, 1e-6);
+    EXPECT_NEAR(cs, l, 1e-12 * l); // no concavity on the edge (before the fix: c = 1, cs = 0)
+}
+
+// The hosts take the Run's end's measures of their mesh once (session 33,
+// SnakeSession::RunEndParam: the noise level and the median face angle the crease filter reads,
+// PartBoundaryEnd::Measured), not at every Run's end, and again when the energy is recomputed
+// (the mesh may have changed); other energies leave them unmeasured (FinishRun does nothing
+// there). On the noisy knee tube (above the gate: both measures taken), its z then halved.
+TEST(PartBoundaryEnd, TheSessionTakesTheMeshsMeasuresOnceAndAgainWithTheEnergy)
+{
+    CMeshO m;
+    std::vector<P3> loop;
+    std::vector<int> faces;
+    ASSERT_TRUE(MakeKneeTubeLoop(m, true, loop, faces));
+    SnakeController<CMeshO> ctl(m);
+    ctl.ComputeEnergy(FeatureEnergyType::NormalVariation, 2);
+    EXPECT_LT(ctl.RunEndParam().valley.creaseFilter.noiseLevel, 0);
+    EXPECT_LT(ctl.RunEndParam().valley.creaseFilter.medianAngle, 0);
+    ctl.ComputeEnergy(FeatureEnergyType::PartBoundary, 2);
+    const auto &cf = ctl.RunEndParam().valley.creaseFilter;
+    const auto want = PartBoundaryEnd<CMeshO>::Measured(m, PartBoundaryEnd<CMeshO>::Param()).valley.creaseFilter;
+    EXPECT_EQ(cf.noiseLevel, SurfaceNoise<CMeshO>::Level(m));
+    EXPECT_GT(cf.noiseLevel, cf.noiseMin);
+    EXPECT_EQ(cf.medianAngle, want.medianAngle);
+    EXPECT_GT(cf.medianAngle, 0);
+    const double median0 = cf.medianAngle;
+    for (auto &v : m.vert) v.P()[2] *= Scalarm(0.5); // the mesh changes: its faces' angles
+    EXPECT_EQ(ctl.RunEndParam().valley.creaseFilter.medianAngle, median0); // kept until the energy changes
+    ctl.ComputeEnergy(FeatureEnergyType::PartBoundary, 2);
+    const auto again = PartBoundaryEnd<CMeshO>::Measured(m, PartBoundaryEnd<CMeshO>::Param()).valley.creaseFilter;
+    EXPECT_NE(again.medianAngle, median0);
+    EXPECT_EQ(ctl.RunEndParam().valley.creaseFilter.medianAngle, again.medianAngle);
+    EXPECT_EQ(ctl.RunEndParam().valley.creaseFilter.noiseLevel, again.noiseLevel);
 }
 
 // A loop that converged at less than half the length it was seeded with (PartBoundaryEnd::Param::
