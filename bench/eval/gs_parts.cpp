@@ -26,8 +26,9 @@
 //   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off;
 //   --part-flat K: PartBoundaryEnergy::Param::flatTolerance, a vertex flat where its concavity is
 //   within K times the curvature the coordinates' rounding can give its fit, 0 = off, session 32;
-//   --valley-cfilter K, --valley-cfilter-cos C, --valley-cfilter-gate 0|1: creaseFilter's (CreaseNormals::Param)
-//   iterations, cos, gate, session 31; --valley-cfilter-rel k, --valley-cfilter-whole 0|1, --valley-cfilter-min
+//   --valley-cfilter K, --valley-cfilter-cos C, --valley-cfilter-sign-only 0|1: creaseFilter's (CreaseNormals::Param)
+//   iterations, cos, signOnly (only the sign from the filtered normals, the angle raw), session 31
+//   (--valley-cfilter-gate: its name until session 33); --valley-cfilter-rel k, --valley-cfilter-whole 0|1, --valley-cfilter-min
 //   DEGREES, --valley-cfilter-pass DEGREES: its relative, relativeWhole, relativeMin, passAngle;
 //   --valley-cfilter-noise X: its noiseMin, session 32)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
@@ -236,7 +237,8 @@ int main(int argc, char **argv)
         else if (a == "--part-flat") partPar.flatTolerance = partFlat = std::stod(next());
         else if (a == "--valley-cfilter") vlpArgs.valley.creaseFilter.iterations = std::stoi(next());
         else if (a == "--valley-cfilter-cos") vlpArgs.valley.creaseFilter.cos = std::stod(next());
-        else if (a == "--valley-cfilter-gate") vlpArgs.valley.creaseFilter.gate = std::stoi(next()) != 0;
+        else if (a == "--valley-cfilter-sign-only" || a == "--valley-cfilter-gate")
+            vlpArgs.valley.creaseFilter.signOnly = std::stoi(next()) != 0;
         else if (a == "--valley-cfilter-rel") vlpArgs.valley.creaseFilter.relative = std::stod(next());
         else if (a == "--valley-cfilter-whole") vlpArgs.valley.creaseFilter.relativeWhole = std::stoi(next()) != 0;
         else if (a == "--valley-cfilter-min") vlpArgs.valley.creaseFilter.relativeMin = std::stod(next()) * M_PI / 180;

@@ -42,7 +42,8 @@ public:
         double cos = 0.866;
         /// With the filter on: only the sign is read from the filtered normals, the angle is
         /// the edge's raw one-ring one (as concavityRings gates it with area-averaged normals).
-        bool gate = false;
+        /// (Named `gate` until session 33; the gate by the surface's noise is noiseMin.)
+        bool signOnly = false;
         /// > 0: the threshold angle is this factor times the median angle between the filtered
         /// faces' vertex-adjacent pairs (raw normals; at most 90 degrees) instead of acos(cos),
         /// so that a noisy surface gets a wider threshold than a clean one's shallow crease

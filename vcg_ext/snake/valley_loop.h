@@ -243,7 +243,7 @@ public:
             for (int fi : faces) bandFaces.push_back(&m.face[fi]);
         const FaceNormals fn = CreaseNormals<MeshType>::Filtered(m, bandFaces, par.creaseFilter);
         for (const auto &ef : edgeFaces) {
-            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.gate);
+            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.signOnly);
             bend[ef.first] = x;
             if (x > 0) concave.push_back(x);
         }
@@ -380,7 +380,7 @@ public:
             const int a = vl[i], b = vl[(i + 1) % vl.size()];
             const VertexType *va = &m.vert[a], *vb = &m.vert[b];
             const double len = vcg::Distance(va->cP(), vb->cP());
-            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.gate) / ref) : 0.0;
+            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.signOnly) / ref) : 0.0;
             eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
             lSum += len;
             cSum += len * (1 - c);
@@ -433,7 +433,7 @@ private:
     /// between them where they turn towards each other across the edge ((n1 - n0) . (b1 - b0)
     /// < 0, b the faces' barycentres), 0 otherwise; the other cases below when fn is empty.
     static double ConcaveAngle(const MeshType &m, const FaceType *f0, const FaceType *f1, int rings, double flat,
-                               const FaceNormals &fn, bool gate)
+                               const FaceNormals &fn, bool signOnly)
     {
         if (fn.empty()) return ConcaveAngle(m, f0, f1, rings, flat);
         if (!f0 || !f1) return 0;
@@ -443,7 +443,7 @@ private:
         if (!(n0.Norm() > 0 && n1.Norm() > 0)) return 0; // a zero-area face keeps no normal: no crease, as unfiltered
         const vcg::Point3d b0 = vcg::Point3d::Construct(vcg::Barycenter(*f0)), b1 = vcg::Point3d::Construct(vcg::Barycenter(*f1));
         if (!((n1 - n0) * (b1 - b0) < 0)) return 0;
-        if (gate) return ConcaveAngle(f0, f1, flat);
+        if (signOnly) return ConcaveAngle(f0, f1, flat);
         return std::acos(std::max(-1.0, std::min(1.0, n0 * n1)));
     }
 
