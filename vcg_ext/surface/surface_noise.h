@@ -1,14 +1,15 @@
 #ifndef VCG_EXT_SURFACE_SURFACE_NOISE_H
 #define VCG_EXT_SURFACE_SURFACE_NOISE_H
 
-// The surface's noise in units of its edge length (session 32): over vertices sampled evenly
-// (interior, VF adjacency), the RMS residual of the least-squares height fit
-// z = ax^2 + bxy + cy^2 + dx + ey + f of the vertex's two rings in the frame of its
-// area-weighted normal, over the one-ring's mean edge length; the median. A quadric follows
-// the curvature of a clean surface to third order (a smooth limb two rings wide leaves
-// little), while noise along the normal stays in the residual: +-0.2 h uniform (rms 0.115 h)
-// leaves ~0.09 h. It gates the crease term's filtered normals (crease_normals.h,
-// docs/method.md "Session 32: the crease filter gated by the surface's noise").
+// The surface's noise in units of its edge length: over vertices sampled evenly (interior, VF
+// adjacency), least-squares height fits z = ax^2 + bxy + cy^2 + dx + ey + f of the vertex's
+// rings in the frame of its area-weighted normal, coordinates over the one-ring's mean edge
+// length; the median. Session 32 (FitResidual): the two rings' RMS residual, noise and the
+// shape finer than two rings together (a scan's detail, a CAD crease). Session 33 (Level): the
+// shape's part grows with the fit's radius and the noise's does not, so the fits of 2, 3 and 4
+// rings separate them and Level reads the noise's rms. It gates the crease term's filtered
+// normals (crease_normals.h; docs/method.md "Session 32: the crease filter gated by the
+// surface's noise" and "Session 33: the noise gate on the noise's rms").
 
 #include <algorithm>
 #include <cmath>
