@@ -67,7 +67,10 @@ public:
         /// about the rms of uniform noise +-0.1 h (0.058 h). Measured: the 9 benchmark meshes
         /// 0-0.041 (the armadillo, a scan, highest), refined / graded <= 0.034, the CAD-like
         /// <= 0.003, the real scans <= 0.047 (armadillo.off); uniform noise +-0.1 h 0.042-0.070,
-        /// +-0.2 h 0.089-0.119, +-0.3 h 0.139-0.173 (docs/method.md, "Session 33: ...").
+        /// +-0.2 h 0.089-0.119, +-0.3 h 0.139-0.173 (docs/method.md, "Session 33: ..."). On
+        /// bench/eval/gs_parts (--energy part --rings 2,3, success_h0): the 9 meshes 168, noise
+        /// 150, refine 154, graded 167, every row as with session 32's gate (0.085 over the
+        /// two-ring residual); CAD-like 20/24 (session 32: 21, its bearings filtered as noisy).
         double noiseMin = 0.06;
         /// The mesh's measures, taken once where a caller prices many sets of faces on one
         /// mesh (Measured: PartBoundaryEnd::FinishRun): SurfaceNoise::Level and MedianAngle.
