@@ -14,13 +14,14 @@
 //           red-green (the faces next to them in 2 or 3, no T-junctions): edge lengths vary ~4x
 //           across the mesh, with slivers at the transition;
 //   noise   every vertex moved along its normal by uniform noise in +-0.2 h (fixed seed), the
-//           connectivity kept.
+//           connectivity kept; noiseA (e.g. noise0.1, noise0.3): in +-A h instead.
 // A split face's children keep its label in every segmentation, and a split edge's midpoint lies
 // on it: a person's cut is the same curve on the refined mesh (the same length).
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <random>
 #include <string>
@@ -128,13 +129,16 @@ inline bool ApplyVariant(CMeshO &m, std::vector<std::vector<int>> &segs, const s
         }
         return true;
     }
-    if (name == "noise") {
+    if (name.compare(0, 5, "noise") == 0) {
+        // "noise" = +-0.2 h; "noiseA" (e.g. noise0.1, noise0.3): +-A h, the same generator (session 33)
+        const double amp = name.size() > 5 ? std::atof(name.c_str() + 5) : 0.2;
+        if (!(amp > 0)) return false;
         const double h = MeanEdgeLength(m);
         vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
         std::mt19937 rng(29); // the raw generator (its output is fixed by the standard), not a distribution
         for (auto &v : m.vert) {
             const double u = 2.0 * (double(rng()) / 4294967296.0) - 1.0; // uniform in [-1, 1)
-            if (!v.IsD()) v.P() += v.cN() * CMeshO::ScalarType(0.2 * h * u);
+            if (!v.IsD()) v.P() += v.cN() * CMeshO::ScalarType(amp * h * u);
         }
         return true;
     }

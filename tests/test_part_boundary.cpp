@@ -1029,8 +1029,8 @@ TEST(ValleyLoop, FollowsTheNoisyCreaseWithARelativeFilterThreshold)
     EXPECT_GT(std::fabs(costB2 - costB), 1e-6 * costB); // the mechanism: the set's own median differs
 }
 
-// The crease filter gated by the surface's noise (session 32, the defaults: creaseFilter.noiseMin
-// 0.085 over SurfaceNoise::Level, 8 passes, the threshold twice the mesh's median
+// The crease filter gated by the surface's noise (sessions 32-33, the defaults: creaseFilter.noiseMin
+// 0.06 over SurfaceNoise::Level, 8 passes, the threshold twice the mesh's median
 // face-to-face angle). The noisy knee tube measures above the gate, and the default loop
 // follows the crease where the raw normals lead it off; the clean knee tube measures below it,
 // and its reference and loop are exactly those without the filter (with the gate at 0 the
@@ -1096,6 +1096,37 @@ TEST(ValleyLoop, FiltersTheCreaseTermOnlyOnANoisySurface)
     EXPECT_EQ(ValleyLoop<CMeshO>::FindAt(c, loopC, facesC, flatC, kKneeStep, mc, refMC, costMC), cd);
     EXPECT_EQ(refMC, refCD);
     EXPECT_EQ(costMC, costCD);
+}
+
+// SurfaceNoise::Level reads the noise's rms, not the shape (session 33): uniform noise +-A h
+// along the normal (tests/part_variants.h's noiseA) reads about its rms A/sqrt(3) whatever the
+// mesh's shape, a clean mesh reads near 0 even where session 32's two-ring fit residual
+// (FitResidual) is high: the bearing's sharp creases (0.094 h, above session 32's gate 0.085)
+// and the armadillo scan's detail.
+TEST(SurfaceNoise, ReadsTheNoiseRmsNotTheShape)
+{
+    for (int id : {161, 381}) {
+        gs_parts::Model clean;
+        ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, id, clean)) << GS_SEGMENTATION_DIR;
+        const double l0 = SurfaceNoise<CMeshO>::Level(clean.mesh);
+        std::printf("model %d: clean %.4f h (fit residual %.4f h)", id, l0, SurfaceNoise<CMeshO>::FitResidual(clean.mesh));
+        EXPECT_LT(l0, 0.02) << id; // measured 0.006 teddy, 0 fourleg
+        for (double a : {0.1, 0.2, 0.3}) {
+            gs_parts::Model md;
+            ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, id, md, "noise" + std::to_string(a).substr(0, 3)));
+            const double l = SurfaceNoise<CMeshO>::Level(md.mesh), rms = a / std::sqrt(3.0);
+            std::printf(", +-%.1f h %.4f (rms %.4f)", a, l, rms);
+            EXPECT_NEAR(l, rms, 0.15 * rms) << id << " +-" << a;
+        }
+        std::printf("\n");
+    }
+    gs_parts::Model bearing;
+    ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 341, bearing)) << GS_SEGMENTATION_DIR;
+    const double lb = SurfaceNoise<CMeshO>::Level(bearing.mesh), rb = SurfaceNoise<CMeshO>::FitResidual(bearing.mesh);
+    std::printf("bearing 341: %.4f h (fit residual %.4f h)\n", lb, rb);
+    EXPECT_GT(rb, 0.085); // the mechanism: a quadric does not fit the creases
+    EXPECT_LT(lb, 0.01);  // measured 0.002
+    EXPECT_LT(lb, ValleyLoop<CMeshO>::Param().creaseFilter.noiseMin);
 }
 
 // The sides of a loop are flooded only as far as the part it cuts off: a cap of 3.5 % of a

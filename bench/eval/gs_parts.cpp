@@ -276,7 +276,7 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    if (!(variant.empty() || variant == "none" || variant == "refine" || variant == "graded" || variant == "noise")) {
+    if (!(variant.empty() || variant == "none" || variant == "refine" || variant == "graded" || variant.compare(0, 5, "noise") == 0)) {
         std::fprintf(stderr, "unknown --variant %s (refine, graded, noise or none)\n", variant.c_str());
         return 2;
     }
@@ -318,8 +318,9 @@ int main(int argc, char **argv)
                 peopleAll.n += int(p.cuts.size()), peopleAll.ok += ok;
                 people << id << ',' << md.category << ',' << p.index << ',' << p.cuts.size() << ',' << ok << '\n';
             }
-        if (std::getenv("GS_PARTS_NOISE")) // session 32: SurfaceNoise::Level, the crease filter's gate
-            std::fprintf(stderr, "noise %d %s: %.4f h\n", id, md.category.c_str(), vcg::tri::SurfaceNoise<CMeshO>::Level(md.mesh));
+        if (std::getenv("GS_PARTS_NOISE")) // SurfaceNoise::Level, the crease filter's gate (session 33), and session 32's
+            std::fprintf(stderr, "noise %d %s: %.4f h (fit residual %.4f h)\n", id, md.category.c_str(),
+                         vcg::tri::SurfaceNoise<CMeshO>::Level(md.mesh), vcg::tri::SurfaceNoise<CMeshO>::FitResidual(md.mesh));
         if (std::getenv("GS_PARTS_NOISE") && std::string(std::getenv("GS_PARTS_NOISE")) == "only") continue;
         for (const std::string &en : energies) {
             auto ty = types.find(en);

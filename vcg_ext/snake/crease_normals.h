@@ -60,17 +60,19 @@ public:
         /// this (radians), at least 1 and at most `iterations`: a rougher surface is filtered
         /// further. 0: the count.
         double passAngle = 0;
-        /// > 0: the filter runs only where the mesh is noisy (session 32): when
-        /// SurfaceNoise::Level(m), the median residual of a quadric height fit over each
-        /// vertex's two rings in units of the local edge length, is below this, the crease
-        /// term reads the raw normals (no pass), so a clean mesh's rows are those without the
-        /// filter. 0: no gate. Measured: the 9 benchmark meshes 0.013-0.069 (the armadillo, a
-        /// scan, highest), their noisy variant (+-0.2 h along the normal) 0.099-0.122, refined /
-        /// graded 0.010-0.045, the CAD-like 0.0000-0.094 (bearings' sharp creases). On
-        /// bench/eval/gs_parts (--energy part --rings 2,3, success_h0) with the defaults: the 9
-        /// meshes 168 (every row the same), refine 154 and graded 167 (the same), noise 102 ->
-        /// 150 (+57 -9), CAD-like 20 -> 21/24.
-        double noiseMin = 0.085;
+        /// > 0: the filter runs only where the mesh is noisy (sessions 32-33): when
+        /// SurfaceNoise::Level(m), the rms of the surface's noise along the normal in units of
+        /// the local edge length (the residual of a quadric fit less the shape's part, which
+        /// grows with the fit's radius), is below this, the crease term reads the raw normals
+        /// (no pass), so a clean mesh's rows are those without the filter. 0: no gate. 0.06 h is
+        /// about the rms of uniform noise +-0.1 h (0.058 h). Measured: the 9 benchmark meshes
+        /// 0-0.041 (the armadillo, a scan, highest), refined / graded <= 0.034, the CAD-like
+        /// <= 0.003, the real scans <= 0.047 (armadillo.off); uniform noise +-0.1 h 0.042-0.070,
+        /// +-0.2 h 0.089-0.119, +-0.3 h 0.139-0.173 (docs/method.md, "Session 33: ..."). On
+        /// bench/eval/gs_parts (--energy part --rings 2,3, success_h0): the 9 meshes 168, noise
+        /// 150, refine 154, graded 167, every row as with session 32's gate (0.085 over the
+        /// two-ring residual); CAD-like 20/24 (session 32: 21, its bearings filtered as noisy).
+        double noiseMin = 0.06;
         /// The mesh's measures, taken once where a caller prices many sets of faces on one
         /// mesh (Measured): SurfaceNoise::Level and MedianAngle. A host takes them once per
         /// mesh (PartBoundaryEnd::Measured: SnakeSession::RunEndParam, gs_parts; session 33),
