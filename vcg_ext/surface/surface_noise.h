@@ -53,31 +53,22 @@ public:
     /// 0 when no vertex qualifies; the mesh's VF adjacency must be current.
     static double Level(const MeshType &m, const Param &par = Param())
     {
-        std::vector<double> res;
-        const size_t step = std::max<size_t>(1, m.vert.size() / size_t(std::max(1, par.samples)));
         std::vector<const VertexType *> seen, front, next;
-        for (size_t vi = 0; vi < m.vert.size(); vi += step) {
-            const VertexType &v = m.vert[vi];
-            vcg::Point3d n;
-            double h = 0;
-            if (!Frame(v, n, h)) continue;
+        return MedianOverSamples(m, par, [&](const VertexType &v, const vcg::Point3d &n, double h) {
             const vcg::Point3d p = vcg::Point3d::Construct(v.cP());
             seen.assign(1, &v), front.assign(1, &v);
             double var[3], rad[3];
-            bool ok = true;
-            for (int k = 1; k <= 4 && ok; ++k) {
+            for (int k = 1; k <= 4; ++k) {
                 Grow(front, seen, next);
                 front.swap(next);
                 if (k < 2) continue;
-                if (k == 2 && int(seen.size()) < par.minPoints) ok = false;
+                if (k == 2 && int(seen.size()) < par.minPoints) return -1.0;
                 const Fit f = FitQuadric(p, n, h, seen);
                 var[k - 2] = f.rss / double(f.n - 6), rad[k - 2] = f.r2;
-                ok = ok && std::isfinite(var[k - 2]) && f.n > 6;
+                if (!(std::isfinite(var[k - 2]) && f.n > 6)) return -1.0;
             }
-            if (!ok) continue;
-            res.push_back(std::sqrt(std::max(0.0, NoiseVariance(var, rad))));
-        }
-        return Median(res);
+            return std::sqrt(std::max(0.0, NoiseVariance(var, rad)));
+        });
     }
 
     /// Session 32's level: the median RMS residual of the two rings' quadric fit, in h. It is the
@@ -85,22 +76,14 @@ public:
     /// limb's curvature: 0.069 h on the armadillo, 0.094 h on the bearings): kept for diagnostics.
     static double FitResidual(const MeshType &m, const Param &par = Param())
     {
-        std::vector<double> res;
-        const size_t step = std::max<size_t>(1, m.vert.size() / size_t(std::max(1, par.samples)));
         std::vector<const VertexType *> seen, front, next;
-        for (size_t vi = 0; vi < m.vert.size(); vi += step) {
-            const VertexType &v = m.vert[vi];
-            vcg::Point3d n;
-            double h = 0;
-            if (!Frame(v, n, h)) continue;
+        return MedianOverSamples(m, par, [&](const VertexType &v, const vcg::Point3d &n, double h) {
             seen.assign(1, &v), front.assign(1, &v);
             for (int k = 1; k <= 2; ++k) Grow(front, seen, next), front.swap(next);
-            if (int(seen.size()) < par.minPoints) continue;
+            if (int(seen.size()) < par.minPoints) return -1.0;
             const Fit f = FitQuadric(vcg::Point3d::Construct(v.cP()), n, h, seen);
-            const double r = std::sqrt(f.rss / f.n);
-            if (std::isfinite(r)) res.push_back(r);
-        }
-        return Median(res);
+            return std::sqrt(f.rss / f.n);
+        });
     }
 
     /// s^2 of v_k = s^2 + c r_k^a for the variances var[] and mean squared radii r2[] of the 2, 3
@@ -182,6 +165,24 @@ private:
         const size_t old = seen.size();
         seen.insert(seen.end(), next.begin(), next.end());
         std::inplace_merge(seen.begin(), seen.begin() + old, seen.end());
+    }
+
+    /// The median of fn(v, its normal, its one-ring mean edge length) over the vertices sampled
+    /// evenly (every vert.size() / samples-th one) that have faces; a value that is not finite
+    /// and >= 0 (fn's -1: too few rings, a singular fit) skips the vertex.
+    template <class Fn>
+    static double MedianOverSamples(const MeshType &m, const Param &par, Fn fn)
+    {
+        std::vector<double> res;
+        const size_t step = std::max<size_t>(1, m.vert.size() / size_t(std::max(1, par.samples)));
+        for (size_t vi = 0; vi < m.vert.size(); vi += step) {
+            vcg::Point3d n;
+            double h = 0;
+            if (!Frame(m.vert[vi], n, h)) continue;
+            const double x = fn(m.vert[vi], n, h);
+            if (std::isfinite(x) && x >= 0) res.push_back(x);
+        }
+        return Median(res);
     }
 
     static double Median(std::vector<double> &res)
