@@ -85,6 +85,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
@@ -111,6 +112,16 @@ typedef GeometricSnake<CMeshO> Snake;
 typedef SnakeSurface<CMeshO> Surface;
 
 namespace {
+
+/// "noise" or "noiseA" with A > 0 the whole rest of the name (tests/part_variants.h: noise +-A h).
+bool NoiseVariant(const std::string &v)
+{
+    if (v.compare(0, 5, "noise") != 0) return false;
+    if (v.size() == 5) return true;
+    char *end = nullptr;
+    const double a = std::strtod(v.c_str() + 5, &end);
+    return *end == 0 && a > 0 && std::isfinite(a);
+}
 
 std::vector<int> IntList(const std::string &s)
 {
@@ -276,8 +287,8 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    if (!(variant.empty() || variant == "none" || variant == "refine" || variant == "graded" || variant.compare(0, 5, "noise") == 0)) {
-        std::fprintf(stderr, "unknown --variant %s (refine, graded, noise or none)\n", variant.c_str());
+    if (!(variant.empty() || variant == "none" || variant == "refine" || variant == "graded" || NoiseVariant(variant))) {
+        std::fprintf(stderr, "unknown --variant %s (refine, graded, noise, noiseA e.g. noise0.1, or none)\n", variant.c_str());
         return 2;
     }
     const std::map<std::string, FeatureEnergyType> types = {
