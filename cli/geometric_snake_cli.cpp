@@ -488,11 +488,10 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
     typedef SnakeController<CMeshO> Controller;
     const ParamValues &v = *job.values;
     const std::vector<int> seeds = SeedListText::Parse(v.Text("Seeds")); // as the filter: first
-    const bool closed = v.Bool("Closed");
-    const SnakeParams p = SnakeParamDefs::ToSnakeParams(v);
-    const int maxOps = v.Int("MaxOperations");
-    const bool useQuality = v.Bool("UseQuality");
-    const int energyType = v.Enum("EnergyType");
+    SnakeBatch<CMeshO>::Settings b = SnakeBatch<CMeshO>::FromValues(v, seeds);
+    const bool closed = b.closed, useQuality = b.useQuality;
+    const int maxOps = b.maxOperations;
+    const SnakeParams &p = b.params;
     std::string source;
     const std::vector<vcg::Point3d> seedPts = SeedPointsWanted(job, seeds, source);
 
@@ -506,17 +505,6 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
 
     const auto t0 = Clock::now();
     Controller ctl(m);
-    SnakeBatch<CMeshO>::Settings b;
-    b.useQuality = useQuality;
-    b.energy = FeatureEnergyType(energyType);
-    b.smoothingSteps = SnakeParamDefs::DefaultSmoothingSteps();
-    b.creaseAngle = v.Real("CreaseAngle");
-    b.params = p;
-    b.seeds = seeds;
-    b.closed = closed;
-    b.maxOperations = maxOps;
-    b.timeLimit = v.Real("TimeLimit");
-    b.completeLoop = v.Bool("CompleteLoop");
     // What MeshLab's updateDataMask(MM_FACEFACETOPO | MM_VERTFACETOPO) does for the filter,
     // run as there while the energy is computed.
     b.adjacency = [&m] {
@@ -549,7 +537,7 @@ json RunSnake(Job &job, CMeshO &m, int mask, json r)
 
     r["closed"] = snake.Closed();
     r["method"] = v.Def("Method").choices[int(p.method)].key;
-    r["energy"] = useQuality ? std::string("quality") : SnakeParamDefs::EnergyChoices()[size_t(energyType)].key;
+    r["energy"] = useQuality ? std::string("quality") : SnakeParamDefs::EnergyChoices()[size_t(b.energy)].key;
     r["samples"] = snake.SampleCount();
     r["operations"] = st.operations;
     r["updates"] = st.updates;

@@ -549,15 +549,13 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	MeshModel &m = *md.mm();
 	const std::vector<int> seeds = tri::SeedListText::Parse(par.getString("Seeds").toStdString());
 	const tri::ParamValues v = readParams(par, tri::SnakeParamDefs::Snake());
-	const bool closed = v.Bool("Closed");
-	const tri::SnakeParams p = tri::SnakeParamDefs::ToSnakeParams(v);
-	const int method = int(p.method);
-	const int maxOps = v.Int("MaxOperations");
-	const bool useQuality = v.Bool("UseQuality");
+	tri::SnakeBatch<CMeshO>::Settings b = tri::SnakeBatch<CMeshO>::FromValues(v, seeds);
+	const bool closed = b.closed, useQuality = b.useQuality;
+	const int method = int(b.params.method);
+	const int maxOps = b.maxOperations;
 	const std::string out = QString::fromStdString(v.Text("OutputFile")).trimmed().toStdString();
 	const std::vector<tri::ProtectedFile> keep = protectedFiles(md);
 	if (!out.empty()) checkOutput(out, keep); // before the work, not after it
-	const int energyType = v.Enum("EnergyType");
 	QString pointSource;
 	const std::vector<vcg::Point3d> seedPts = seedPointsWanted(v, seeds, pointSource);
 
@@ -578,17 +576,6 @@ bool FilterGeometricSnakePlugin::applySnake(MeshDocument &md, const RichParamete
 	QElapsedTimer timer;
 	timer.start();
 	Controller ctl(m.cm);
-	tri::SnakeBatch<CMeshO>::Settings b;
-	b.useQuality = useQuality;
-	b.energy = tri::FeatureEnergyType(energyType);
-	b.smoothingSteps = kDefaultSmoothingSteps;
-	b.creaseAngle = v.Real("CreaseAngle");
-	b.params = p;
-	b.seeds = seeds;
-	b.closed = closed;
-	b.maxOperations = maxOps;
-	b.timeLimit = v.Real("TimeLimit");
-	b.completeLoop = v.Bool("CompleteLoop");
 	// MeshLab's adjacency build runs while the energy is computed (on large meshes, on two cores).
 	b.adjacency = [&m] { m.updateDataMask(MeshModel::MM_FACEFACETOPO | MeshModel::MM_VERTFACETOPO); };
 	if (!seedPts.empty()) {

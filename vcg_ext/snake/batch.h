@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <vcg_ext/session/controller.h>
+#include <vcg_ext/session/param_defs.h>
 #include <vcg_ext/snake/part_boundary_end.h>
 
 namespace vcg {
@@ -59,6 +60,25 @@ public:
         SnakeStop stop = SnakeStop::Running; ///< why the run ended (snake/stop.h)
         std::string stopMessage;
     };
+
+    /// The settings the values of the snake operation's table give (session/param_defs.h): the
+    /// one reading of them for the filter and the program. The hosts add the seed points, their
+    /// adjacency build and their own checks.
+    static Settings FromValues(const ParamValues &v, const std::vector<int> &seeds)
+    {
+        Settings b;
+        b.useQuality = v.Bool("UseQuality");
+        b.energy = FeatureEnergyType(v.Enum("EnergyType"));
+        b.smoothingSteps = SnakeParamDefs::DefaultSmoothingSteps();
+        b.creaseAngle = v.Real("CreaseAngle");
+        b.params = SnakeParamDefs::ToSnakeParams(v);
+        b.seeds = seeds;
+        b.closed = v.Bool("Closed");
+        b.maxOperations = v.Int("MaxOperations");
+        b.timeLimit = v.Real("TimeLimit");
+        b.completeLoop = v.Bool("CompleteLoop");
+        return b;
+    }
 
     /// Configures `ctl` (energy, parameters, seeds), runs its snake and traces the curve.
     /// `progress(op)` is called after every operation; false stops the run. Throws SnakeError.
