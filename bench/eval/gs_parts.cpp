@@ -35,6 +35,10 @@
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
 //   the part, from the nearest vertex, and the mean energy on the loop and on that boundary.
+//   GS_PARTS_NEAR=1 (session 33): per failed loop, success at 1.2 h and 1.5 h (how near, not the
+//   criterion), and against the best-covered person's cut the vertex hops of its vertices from the
+//   loop's and of the loop's from its (counts at 0/1/2/3+ hops; kind ring1: both within 1 hop),
+//   the uncovered cut vertices' mean/max distance and mean incident edge length, in h.
 //   GS_PARTS_GAPS=1: per failed loop, each agreeing person's coverage and the stretches of their
 //   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
 //   success as measured and under the strictest reading of the issue, one person's cut both
@@ -95,6 +99,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include <part_cases.h>
@@ -971,6 +976,78 @@ int main(int argc, char **argv)
                                 }
                             }
                             std::fprintf(stderr, "\n");
+                        }
+                        if (std::getenv("GS_PARTS_NEAR") && !sc.Success()) {
+                            // session 33: how near a failed loop is. Success at 1.2 h and 1.5 h (a
+                            // measure, not the criterion); against the best-covered person's cut (1 h),
+                            // the vertex hops of the cut's vertices from the loop's and of the loop's
+                            // from the cut's (share at 0, 1, 2+ hops; max), the uncovered cut
+                            // vertices' distance and their local (mean incident) edge length, in h
+                            const double h = md.h;
+                            const gs_parts::Score s12 = gs_parts::Measure(loop, p, h, 1.2 * h), s15 = gs_parts::Measure(loop, p, h, 1.5 * h);
+                            size_t best = 0;
+                            double bc = -1;
+                            for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
+                                const double c = gs_parts::Measure(loop, OnePerson(p, p.cuts[ci]), h, h).coverage;
+                                if (c > bc) bc = c, best = ci;
+                            }
+                            const size_t nv = md.mesh.vert.size();
+                            auto hops = [&](const std::vector<int> &src) {
+                                std::vector<int> hop(nv, -1);
+                                std::deque<int> qq;
+                                for (int v : src) if (hop[v] < 0) hop[v] = 0, qq.push_back(v);
+                                while (!qq.empty()) {
+                                    const int v = qq.front();
+                                    qq.pop_front();
+                                    if (hop[v] >= 4) continue;
+                                    vcg::face::VFIterator<CFaceO> vfi(&md.mesh.vert[v]);
+                                    for (; !vfi.End(); ++vfi)
+                                        for (int k = 0; k < 3; ++k) {
+                                            const int w = int(vcg::tri::Index(md.mesh, vfi.F()->V(k)));
+                                            if (hop[w] < 0) hop[w] = hop[v] + 1, qq.push_back(w);
+                                        }
+                                }
+                                return hop;
+                            };
+                            const std::vector<vcg::Point3d> lp = gs_parts::ResampleLoop(loop, 0.25 * h);
+                            std::vector<int> lv, cv;
+                            for (const auto &x : lp) lv.push_back(gs_test::NearestVertex(md.mesh, x));
+                            for (const auto &x : p.cuts[best]) cv.push_back(gs_test::NearestVertex(md.mesh, x));
+                            const std::vector<int> hl = hops(lv), hc = hops(cv);
+                            auto hist = [](const std::vector<int> &vs, const std::vector<int> &hop, int out[4]) {
+                                std::set<int> seen;
+                                for (int v : vs) {
+                                    if (!seen.insert(v).second) continue;
+                                    const int k = hop[v] < 0 ? 3 : std::min(hop[v], 3);
+                                    ++out[k];
+                                }
+                            };
+                            int cut[4] = {0, 0, 0, 0}, lop[4] = {0, 0, 0, 0};
+                            hist(cv, hl, cut);
+                            hist(lv, hc, lop);
+                            auto maxHop = [](const int x[4]) { return x[3] ? 3 : x[2] ? 2 : x[1] ? 1 : 0; };
+                            // uncovered cut vertices: their distance to the loop and local edge, in h
+                            double dmax = 0, dsum = 0, esum = 0;
+                            int nun = 0;
+                            for (size_t k = 0; k < p.cuts[best].size(); ++k) {
+                                const double d = gs_parts::DistToLoop(p.cuts[best][k], lp);
+                                if (d <= h) continue;
+                                const int v = cv[k];
+                                double el = 0;
+                                int ne = 0;
+                                vcg::face::VFIterator<CFaceO> vfi(&md.mesh.vert[v]);
+                                for (; !vfi.End(); ++vfi)
+                                    for (int j = 0; j < 3; ++j)
+                                        if (vfi.F()->V(j) != &md.mesh.vert[v]) el += vcg::Distance(vfi.F()->cP(j), md.mesh.vert[v].cP()), ++ne;
+                                dmax = std::max(dmax, d / h), dsum += d / h, esum += el / std::max(1, ne) / h, ++nun;
+                            }
+                            const int mc = maxHop(cut), ml = maxHop(lop);
+                            std::fprintf(stderr, "NEAR %s %d %d %s %d cap=%.2f cov=%.2f ok12=%d (%.2f/%.2f) ok15=%d (%.2f/%.2f) best=p%zu "
+                                                 "cut@hops %d/%d/%d/%d loop@hops %d/%d/%d/%d kind=%s uncov=%d d=%.2f/%.2f edge=%.2f\n",
+                                         en.c_str(), id, p.index, side > 0 ? "in" : "out", ring, sc.capture, sc.coverage, int(s12.Success()), s12.capture,
+                                         s12.coverage, int(s15.Success()), s15.capture, s15.coverage, best, cut[0], cut[1], cut[2], cut[3], lop[0],
+                                         lop[1], lop[2], lop[3], mc <= 1 && ml <= 1 ? "ring1" : mc <= 2 && ml <= 2 ? "ring2" : "route", nun,
+                                         dsum / std::max(1, nun), dmax, esum / std::max(1, nun));
                         }
                         Tally &t = tally[en][md.category], &all = tally[en]["ALL"];
                         for (Tally *x : {&t, &all}) ++x->n, x->ok += sc.Success(), x->points += point;
