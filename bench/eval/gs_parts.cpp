@@ -35,6 +35,17 @@
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
 //   the part, from the nearest vertex, and the mean energy on the loop and on that boundary.
+//   GS_PARTS_NEAR=1 (session 33): per failed loop, success at 1.2 h and 1.5 h (how near, not the
+//   criterion), and against the best-covered person's cut the vertex hops of its vertices from the
+//   loop's and of the loop's from its (counts at 0/1/2/3+ hops; kind ring1: both within 1 hop),
+//   the uncovered cut vertices' mean/max distance and mean incident edge length, in h.
+//   GS_PARTS_SIDE=1 (session 34, part energy): per loop, passing too, SIDEPROFILE (the mean
+//   concavity H -- a vertex's integrated signed dihedral angle per area, x h, < 0 concave -- and
+//   part energy E of the vertices at each signed hop from the loop's vertices, + on the part's side,
+//   and A the mean signed dihedral angle of the edges along that ring, degrees)
+//   and per agreeing person SIDE: the cut's vertices counted by signed hop (-3..+3, 3 = 3+) with
+//   their mean H and E, and the cut's and the loop's mean signed dihedral angle (degrees); SIDESHIFT:
+//   the row's success with the loop moved one ring toward the part and toward the body (a side rule's ceiling).
 //   GS_PARTS_GAPS=1: per failed loop, each agreeing person's coverage and the stretches of their
 //   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
 //   success as measured and under the strictest reading of the issue, one person's cut both
@@ -95,6 +106,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include <part_cases.h>
@@ -971,6 +983,295 @@ int main(int argc, char **argv)
                                 }
                             }
                             std::fprintf(stderr, "\n");
+                        }
+                        if (std::getenv("GS_PARTS_SIDE") && en == "part") {
+                            // session 34: on which side of the loop every agreeing person's cut lies,
+                            // passing rows too. The loop's vertices (the edge loop's), each vertex's
+                            // hop from them, signed + on the part's side (the component of the mesh
+                            // without the loop's vertices that holds most of the part's vertices);
+                            // per person, the count of cut vertices by signed hop (-3..+3, 3 = 3+),
+                            // the mean concavity at each hop (the vertex's integrated signed dihedral
+                            // angle per area, x h: < 0 concave) and the part energy, and the mean
+                            // signed dihedral angle (degrees, < 0 concave) of the cut's and the loop's edges.
+                            CMeshO &m = md.mesh;
+                            const size_t nv = m.vert.size();
+                            std::vector<int> lv;
+                            double offV = 0;
+                            for (const auto &x : loop) {
+                                const int v = gs_test::NearestVertex(m, x);
+                                offV = std::max(offV, (vcg::Point3d::Construct(m.vert[v].cP()) - x).Norm() / md.h);
+                                if (lv.empty() || lv.back() != v) lv.push_back(v);
+                            }
+                            {
+                                // consecutive loop vertices not adjacent (a loop point off the mesh's
+                                // edges): joined by the fewest-hop path, so the chain separates the mesh
+                                std::vector<int> full;
+                                for (size_t i = 0; i < lv.size(); ++i) {
+                                    const int a = lv[i], b = lv[(i + 1) % lv.size()];
+                                    full.push_back(a);
+                                    std::map<int, int> prev{{a, -1}};
+                                    std::deque<int> q{a};
+                                    while (!q.empty() && !prev.count(b)) {
+                                        const int v = q.front();
+                                        q.pop_front();
+                                        vcg::face::VFIterator<CFaceO> vfi(&m.vert[v]);
+                                        for (; !vfi.End(); ++vfi)
+                                            for (int k = 0; k < 3; ++k) {
+                                                const int w = int(vcg::tri::Index(m, vfi.F()->V(k)));
+                                                if (!prev.count(w)) prev[w] = v, q.push_back(w);
+                                            }
+                                        if (prev.size() > 2000) break;
+                                    }
+                                    if (!prev.count(b)) continue;
+                                    std::vector<int> path;
+                                    for (int v = prev[b]; v != a && v >= 0; v = prev[v]) path.push_back(v);
+                                    full.insert(full.end(), path.rbegin(), path.rend());
+                                }
+                                lv = full;
+                            }
+                            auto fnorm = [&](const CFaceO &f) {
+                                vcg::Point3d a = vcg::Point3d::Construct(f.cP(0)), b = vcg::Point3d::Construct(f.cP(1)), c = vcg::Point3d::Construct(f.cP(2));
+                                vcg::Point3d n = (b - a) ^ (c - a);
+                                const double l = n.Norm();
+                                return l > 0 ? n / l : n;
+                            };
+                            // signed dihedral angle of edge k of face f (< 0 concave)
+                            auto dihedral = [&](CFaceO &f, int k) {
+                                CFaceO *g = f.FFp(k);
+                                if (g == &f) return 0.0;
+                                const vcg::Point3d nf = fnorm(f), ng = fnorm(*g);
+                                const double a = std::acos(std::max(-1.0, std::min(1.0, nf * ng)));
+                                const vcg::Point3d o = vcg::Point3d::Construct(g->cP2(f.FFi(k))) - vcg::Point3d::Construct(f.cP(k));
+                                return o * nf > 0 ? -a : a;
+                            };
+                            std::vector<double> hv(nv, 0), av(nv, 0);
+                            for (auto &f : m.face) {
+                                if (f.IsD()) continue;
+                                const double ar = vcg::DoubleArea(f) / 2;
+                                for (int k = 0; k < 3; ++k) {
+                                    const int a = int(vcg::tri::Index(m, f.V0(k))), b = int(vcg::tri::Index(m, f.V1(k)));
+                                    const double d = dihedral(f, k) * vcg::Distance(f.cP0(k), f.cP1(k)) / 2;
+                                    hv[a] += d, hv[b] += d, av[a] += ar / 3;
+                                }
+                            }
+                            for (size_t v = 0; v < nv; ++v) hv[v] = av[v] > 0 ? hv[v] / av[v] * md.h : 0;
+                            auto edgeAngle = [&](int a, int b) {
+                                vcg::face::VFIterator<CFaceO> vfi(&m.vert[a]);
+                                for (; !vfi.End(); ++vfi)
+                                    for (int k = 0; k < 3; ++k)
+                                        if (vfi.F()->V0(k) == &m.vert[a] && vfi.F()->V1(k) == &m.vert[b]) return dihedral(*vfi.F(), k);
+                                return std::nan("");
+                            };
+                            auto meanAngle = [&](const std::vector<int> &l) {
+                                double s = 0;
+                                int n = 0;
+                                for (size_t i = 0; i < l.size(); ++i) {
+                                    const double x = edgeAngle(l[i], l[(i + 1) % l.size()]);
+                                    const double y = std::isnan(x) ? edgeAngle(l[(i + 1) % l.size()], l[i]) : x;
+                                    if (!std::isnan(y)) s += y, ++n;
+                                }
+                                return n ? s / n * 180 / M_PI : 0.0;
+                            };
+                            std::vector<int> hop(nv, -1), comp(nv, -1);
+                            std::deque<int> qq;
+                            for (int v : lv) hop[v] = 0, qq.push_back(v);
+                            auto nbrs = [&](int v, const std::function<void(int)> &fn) {
+                                vcg::face::VFIterator<CFaceO> vfi(&m.vert[v]);
+                                for (; !vfi.End(); ++vfi)
+                                    for (int k = 0; k < 3; ++k) fn(int(vcg::tri::Index(m, vfi.F()->V(k))));
+                            };
+                            while (!qq.empty()) {
+                                const int v = qq.front();
+                                qq.pop_front();
+                                nbrs(v, [&](int w) { if (hop[w] < 0) hop[w] = hop[v] + 1, qq.push_back(w); });
+                            }
+                            int nc = 0;
+                            for (size_t v0 = 0; v0 < nv; ++v0) {
+                                if (hop[v0] <= 0 || comp[v0] >= 0) continue;
+                                comp[v0] = nc, qq.push_back(int(v0));
+                                while (!qq.empty()) {
+                                    const int v = qq.front();
+                                    qq.pop_front();
+                                    nbrs(v, [&](int w) { if (hop[w] > 0 && comp[w] < 0) comp[w] = nc, qq.push_back(w); });
+                                }
+                                ++nc;
+                            }
+                            std::vector<int> dist, sideOf;
+                            gs_parts::Rings(m, p, dist, sideOf);
+                            std::vector<int> inC(nc + 1, 0);
+                            for (size_t v = 0; v < nv; ++v) if (comp[v] >= 0 && sideOf[v] > 0) ++inC[comp[v]];
+                            const int partComp = int(std::max_element(inC.begin(), inC.end()) - inC.begin());
+                            long lh = 0;
+                            for (int v : lv) lh = lh * 31 + v;
+                            const auto &E = surf->Energy();
+                            // the loop's own profile: mean concavity and energy of the vertices at each signed hop
+                            double lpH[7] = {0}, lpE[7] = {0};
+                            int lpN[7] = {0};
+                            for (size_t v = 0; v < nv; ++v) {
+                                if (hop[v] < 0 || hop[v] > 3) continue;
+                                const int sh = hop[v] == 0 ? 0 : (comp[v] == partComp ? hop[v] : -hop[v]);
+                                lpH[sh + 3] += hv[v], lpE[sh + 3] += E[v], ++lpN[sh + 3];
+                            }
+                            // the mean signed dihedral angle (degrees) of the edges along each ring:
+                            // both ends at the same signed hop (ring 0: the loop's and its chords)
+                            double raA[7] = {0};
+                            int raN[7] = {0};
+                            for (auto &f : m.face) {
+                                if (f.IsD()) continue;
+                                for (int k = 0; k < 3; ++k) {
+                                    const int a = int(vcg::tri::Index(m, f.V0(k))), b = int(vcg::tri::Index(m, f.V1(k)));
+                                    if (a > b || hop[a] != hop[b] || hop[a] > 3 || hop[a] < 0) continue;
+                                    if (hop[a] > 0 && comp[a] != comp[b]) continue;
+                                    const int sh = hop[a] == 0 ? 0 : (comp[a] == partComp ? hop[a] : -hop[a]);
+                                    raA[sh + 3] += dihedral(f, k) * 180 / M_PI, ++raN[sh + 3];
+                                }
+                            }
+                            std::fprintf(stderr, "SIDEPROFILE %d %d %s %d ok=%d loop=%ld nloop=%zu off=%.2f comps=%d angle=%.1f |", id, p.index, side > 0 ? "in" : "out", ring,
+                                         int(sc.Success()), lh, lv.size(), offV, nc, meanAngle(lv));
+                            for (int k = 0; k < 7; ++k)
+                                std::fprintf(stderr, " %+d:H=%.3f,E=%.3f,A=%.1f", k - 3, lpH[k] / std::max(1, lpN[k]), lpE[k] / std::max(1, lpN[k]), raA[k] / std::max(1, raN[k]));
+                            std::fprintf(stderr, "\n");
+                            {
+                                // the ceiling of a side rule: the loop moved one ring toward the part
+                                // (the part side's faces less those touching the loop) and toward the
+                                // body (with the body side's faces touching it), scored as the row
+                                std::vector<char> onPart(m.face.size(), 0), onBody(m.face.size(), 0);
+                                for (size_t f = 0; f < m.face.size(); ++f) {
+                                    if (m.face[f].IsD()) continue;
+                                    bool touch = false, part = false, body = false;
+                                    for (int k = 0; k < 3; ++k) {
+                                        const int v = int(vcg::tri::Index(m, m.face[f].V(k)));
+                                        if (hop[v] == 0) touch = true;
+                                        else if (comp[v] == partComp) part = true;
+                                        else body = true;
+                                    }
+                                    onPart[f] = part && !touch;
+                                    onBody[f] = part || touch;
+                                    (void)body;
+                                }
+                                auto score = [&](const std::vector<char> &in, char &c) {
+                                    const std::vector<int> l = gs_parts::BoundaryLoop(m, in);
+                                    if (l.size() < 3) return c = 'x', void();
+                                    const gs_parts::Score q = gs_parts::Measure(gs_parts::Positions(m, l), p, md.h, md.h);
+                                    c = q.Success() ? '1' : '0';
+                                    std::fprintf(stderr, " %.2f/%.2f", q.capture, q.coverage);
+                                };
+                                char a = 'x', b = 'x';
+                                std::fprintf(stderr, "SIDESHIFT %d %d %s %d ok=%d %.2f/%.2f | part", id, p.index, side > 0 ? "in" : "out", ring, int(sc.Success()),
+                                             sc.capture, sc.coverage);
+                                score(onPart, a);
+                                std::fprintf(stderr, " body");
+                                score(onBody, b);
+                                std::fprintf(stderr, " | okPart=%c okBody=%c\n", a, b);
+                            }
+                            for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
+                                const gs_parts::Score sq = gs_parts::Measure(loop, OnePerson(p, p.cuts[ci]), md.h, md.h);
+                                std::vector<int> cl;
+                                for (const auto &x : p.cuts[ci]) cl.push_back(gs_test::NearestVertex(m, x));
+                                int cnt[7] = {0};
+                                double cH[7] = {0}, cE[7] = {0};
+                                for (int v : cl) {
+                                    const int hh = hop[v] < 0 ? 3 : std::min(hop[v], 3);
+                                    const int sh = hh == 0 ? 0 : (comp[v] == partComp ? hh : -hh);
+                                    ++cnt[sh + 3], cH[sh + 3] += hv[v], cE[sh + 3] += E[v];
+                                }
+                                // a cut vertex one hop off the loop against its mirror: the loop's
+                                // neighbours of it, their neighbours one hop off on the other side
+                                // (mean H and E); more = the cut's vertex is the more concave one
+                                int nm = 0, moreConcave = 0, lowerE = 0;
+                                double dH = 0, dE = 0;
+                                for (int v : cl) {
+                                    if (hop[v] != 1) continue;
+                                    const int sv = comp[v];
+                                    double mh = 0, me = 0;
+                                    int n = 0;
+                                    nbrs(v, [&](int u) {
+                                        if (hop[u] != 0) return;
+                                        nbrs(u, [&](int w) { if (hop[w] == 1 && comp[w] != sv) mh += hv[w], me += E[w], ++n; });
+                                    });
+                                    if (!n) continue;
+                                    mh /= n, me /= n;
+                                    ++nm, dH += hv[v] - mh, dE += E[v] - me, moreConcave += hv[v] < mh, lowerE += E[v] < me;
+                                }
+                                std::fprintf(stderr, "SIDE %d %d %s %d ok=%d loop=%ld p%zu cap=%.2f cov=%.2f n=%zu angle=%.1f |", id, p.index, side > 0 ? "in" : "out", ring,
+                                             int(sc.Success()), lh, ci, sq.capture, sq.coverage, cl.size(), meanAngle(cl));
+                                for (int k = 0; k < 7; ++k)
+                                    std::fprintf(stderr, " %+d:%d,H=%.3f,E=%.3f", k - 3, cnt[k], cH[k] / std::max(1, cnt[k]), cE[k] / std::max(1, cnt[k]));
+                                std::fprintf(stderr, " | mirror n=%d moreConcave=%d lowerE=%d dH=%.3f dE=%.3f", nm, moreConcave, lowerE, dH / std::max(1, nm), dE / std::max(1, nm));
+                                std::fprintf(stderr, "\n");
+                            }
+                        }
+                        if (std::getenv("GS_PARTS_NEAR") && !sc.Success()) {
+                            // session 33: how near a failed loop is. Success at 1.2 h and 1.5 h (a
+                            // measure, not the criterion); against the best-covered person's cut (1 h),
+                            // the vertex hops of the cut's vertices from the loop's and of the loop's
+                            // from the cut's (share at 0, 1, 2+ hops; max), the uncovered cut
+                            // vertices' distance and their local (mean incident) edge length, in h
+                            const double h = md.h;
+                            const gs_parts::Score s12 = gs_parts::Measure(loop, p, h, 1.2 * h), s15 = gs_parts::Measure(loop, p, h, 1.5 * h);
+                            size_t best = 0;
+                            double bc = -1;
+                            for (size_t ci = 0; ci < p.cuts.size(); ++ci) {
+                                const double c = gs_parts::Measure(loop, OnePerson(p, p.cuts[ci]), h, h).coverage;
+                                if (c > bc) bc = c, best = ci;
+                            }
+                            const size_t nv = md.mesh.vert.size();
+                            auto hops = [&](const std::vector<int> &src) {
+                                std::vector<int> hop(nv, -1);
+                                std::deque<int> qq;
+                                for (int v : src) if (hop[v] < 0) hop[v] = 0, qq.push_back(v);
+                                while (!qq.empty()) {
+                                    const int v = qq.front();
+                                    qq.pop_front();
+                                    if (hop[v] >= 4) continue;
+                                    vcg::face::VFIterator<CFaceO> vfi(&md.mesh.vert[v]);
+                                    for (; !vfi.End(); ++vfi)
+                                        for (int k = 0; k < 3; ++k) {
+                                            const int w = int(vcg::tri::Index(md.mesh, vfi.F()->V(k)));
+                                            if (hop[w] < 0) hop[w] = hop[v] + 1, qq.push_back(w);
+                                        }
+                                }
+                                return hop;
+                            };
+                            const std::vector<vcg::Point3d> lp = gs_parts::ResampleLoop(loop, 0.25 * h);
+                            std::vector<int> lv, cv;
+                            for (const auto &x : lp) lv.push_back(gs_test::NearestVertex(md.mesh, x));
+                            for (const auto &x : p.cuts[best]) cv.push_back(gs_test::NearestVertex(md.mesh, x));
+                            const std::vector<int> hl = hops(lv), hc = hops(cv);
+                            auto hist = [](const std::vector<int> &vs, const std::vector<int> &hop, int out[4]) {
+                                std::set<int> seen;
+                                for (int v : vs) {
+                                    if (!seen.insert(v).second) continue;
+                                    const int k = hop[v] < 0 ? 3 : std::min(hop[v], 3);
+                                    ++out[k];
+                                }
+                            };
+                            int cut[4] = {0, 0, 0, 0}, lop[4] = {0, 0, 0, 0};
+                            hist(cv, hl, cut);
+                            hist(lv, hc, lop);
+                            auto maxHop = [](const int x[4]) { return x[3] ? 3 : x[2] ? 2 : x[1] ? 1 : 0; };
+                            // uncovered cut vertices: their distance to the loop and local edge, in h
+                            double dmax = 0, dsum = 0, esum = 0;
+                            int nun = 0;
+                            for (size_t k = 0; k < p.cuts[best].size(); ++k) {
+                                const double d = gs_parts::DistToLoop(p.cuts[best][k], lp);
+                                if (d <= h) continue;
+                                const int v = cv[k];
+                                double el = 0;
+                                int ne = 0;
+                                vcg::face::VFIterator<CFaceO> vfi(&md.mesh.vert[v]);
+                                for (; !vfi.End(); ++vfi)
+                                    for (int j = 0; j < 3; ++j)
+                                        if (vfi.F()->V(j) != &md.mesh.vert[v]) el += vcg::Distance(vfi.F()->cP(j), md.mesh.vert[v].cP()), ++ne;
+                                dmax = std::max(dmax, d / h), dsum += d / h, esum += el / std::max(1, ne) / h, ++nun;
+                            }
+                            const int mc = maxHop(cut), ml = maxHop(lop);
+                            std::fprintf(stderr, "NEAR %s %d %d %s %d cap=%.2f cov=%.2f ok12=%d (%.2f/%.2f) ok15=%d (%.2f/%.2f) best=p%zu "
+                                                 "cut@hops %d/%d/%d/%d loop@hops %d/%d/%d/%d kind=%s uncov=%d d=%.2f/%.2f edge=%.2f\n",
+                                         en.c_str(), id, p.index, side > 0 ? "in" : "out", ring, sc.capture, sc.coverage, int(s12.Success()), s12.capture,
+                                         s12.coverage, int(s15.Success()), s15.capture, s15.coverage, best, cut[0], cut[1], cut[2], cut[3], lop[0],
+                                         lop[1], lop[2], lop[3], mc <= 1 && ml <= 1 ? "ring1" : mc <= 2 && ml <= 2 ? "ring2" : "route", nun,
+                                         dsum / std::max(1, nun), dmax, esum / std::max(1, nun));
                         }
                         Tally &t = tally[en][md.category], &all = tally[en]["ALL"];
                         for (Tally *x : {&t, &all}) ++x->n, x->ok += sc.Success(), x->points += point;
