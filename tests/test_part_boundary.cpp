@@ -2319,3 +2319,118 @@ TEST(PartBoundaryEnd, MovesAShortPartsLoopTowardsTheBodyWithNoise)
     StubEndsOnItsBase({"noise 3 % of the part", false, false, 0, 0.03 * 0.2}, 0.03 * 0.2 + 1e-6, 0.03 * 1.242);
     StubEndsOnItsBase({"noise 3 % of the body", false, false, 0, 0.03 * 1.2}, kStubStep + 0.03 * 1.2, 0.25 * 1.242);
 }
+
+// Session 34: CAD-like parts. A flat-bottomed recess in a block (revolved, 24 vertices a ring):
+// the floor, rings 0.25 apart out to radius 1 at z = 0, meets the wall (one step, 0.25 up) in a
+// right-angle concave crease, the answer; the wall meets the top face (out to radius 2) in a
+// convex edge. The band's concave edges are the crease's 24 and the faceted wall's 24 vertical
+// edges (0.26 rad), so their median is the crease's own angle and twice it gave the crease half a
+// crease's credit: with the energy the same everywhere the floor's ring at radius 0.5 (half as
+// long, flat) was cheaper. Returns the index of the crease ring's first vertex.
+static int MakeRecessInABlock(CMeshO &m, int n)
+{
+    const double step = 0.25;
+    gs_test::MakeRevolvedProfile(m, {{0.0, 0.0, 0}, {1.0, 0.0, 4}, {1.0, step, 1}, {2.0, step, 4}, {2.0, -1.0, 0}, {0.0, -1.0, 0}},
+                                 n, step, 1.0, 1);
+    for (size_t v = 0; v < m.vert.size(); ++v) // the first vertex of the ring at radius 1 on the floor
+        if (std::fabs(m.vert[v].cP()[2]) < 1e-9 && std::fabs(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]) - 1.0) < 1e-9)
+            return int(v);
+    return -1;
+}
+
+static void RingRadii(const CMeshO &m, const std::vector<int> &l, double &rMin, double &rMax, double &zAbs)
+{
+    rMin = 1e9, rMax = -1e9, zAbs = 0;
+    for (int v : l) {
+        const double r = std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]);
+        rMin = std::min(rMin, r), rMax = std::max(rMax, r), zAbs = std::max(zAbs, std::fabs(double(m.vert[v].cP()[2])));
+    }
+}
+
+// ValleyLoop::Param::creaseAngle: the concavity reference is at most a right angle, so an edge
+// that turns a right angle inwards is a full crease (c = 1) whatever the band's median. The
+// band round the crease ring holds the floor's rings at 0.75 and 0.5 and the top face's at 1.25
+// and 1.5; the loop is the crease ring exactly (the 24-gon of radius 1). Without the bound the
+// reference is pi and the floor's ring at 0.5 is taken (checked: the second half asserts it).
+TEST(ValleyLoop, TakesARightAngleConcaveCreaseAsAFullCreaseWhateverTheBandsMedian)
+{
+    CMeshO m;
+    const int n = 24;
+    const int c0 = MakeRecessInABlock(m, n);
+    ASSERT_GE(c0, 0);
+    std::vector<P3> guide;
+    std::vector<int> faces;
+    for (int k = 0; k < n; ++k) {
+        guide.push_back(P3::Construct(m.vert[c0 + k].cP()));
+        PartSalience<CMeshO>::ForFaces(m, c0 + k, [&](const CFaceO *f, int) { faces.push_back(int(f - &m.face[0])); });
+    }
+    const std::vector<double> energy(m.vert.size(), 0.5);
+    const double h = 0.25;
+    const PartBoundaryEnd<CMeshO>::Param par = PartBoundaryEnd<CMeshO>::Measured(m, PartBoundaryEnd<CMeshO>::Param());
+    for (bool bound : {true, false}) {
+        ValleyLoop<CMeshO>::Param vp = par.valley;
+        if (!bound) vp.creaseAngle = 0; // the default bounds it (a right angle)
+        double ref = -1, cost = 0;
+        const std::vector<int> l = ValleyLoop<CMeshO>::FindAt(m, guide, faces, energy, h, vp, ref, cost);
+        double rMin, rMax, zAbs;
+        RingRadii(m, l, rMin, rMax, zAbs);
+        std::printf("recess, crease bound %d: reference %.3f rad, loop of %zu vertices at r %.3f..%.3f, |z| <= %.3f, %.3f long\n",
+                    int(bound), ref, l.size(), rMin, rMax, zAbs, ValleyLoop<CMeshO>::LengthOf(m, l));
+        ASSERT_EQ(int(l.size()), n);
+        if (bound) {
+            EXPECT_NEAR(ref, 0.5 * M_PI, 1e-6);
+            EXPECT_NEAR(rMin, 1.0, 1e-6);
+            EXPECT_NEAR(rMax, 1.0, 1e-6);
+            EXPECT_LT(zAbs, 1e-6);
+            EXPECT_NEAR(ValleyLoop<CMeshO>::LengthOf(m, l), n * 2 * std::sin(M_PI / n), 1e-4);
+        } else { // the premise: without the bound the crease loses to the floor's shorter ring
+            EXPECT_NEAR(ref, M_PI, 1e-3);
+            EXPECT_NEAR(rMax, 0.5, 1e-6);
+        }
+    }
+}
+
+// PartBoundaryEnd::Param::endAtMaxOperations (off by default): a Run that ran out of operations
+// ends on its valley loop as a converged one does (on CAD meshes a snake between the two vertex rings of a strip of
+// long faces, whose energy is linear across each face, hops and never converges: bearing 341
+// part 1 outside 2). Seeded on the recess's top face at radius 1.25 and stopped after 3
+// operations, it ends on the crease ring; without the rule FinishRun leaves it where it stopped.
+TEST(PartBoundaryEnd, EndsARunThatRanOutOfOperationsOnItsValleyLoop)
+{
+    CMeshO m;
+    const int n = 24;
+    ASSERT_GE(MakeRecessInABlock(m, n), 0);
+    for (auto &v : m.vert) v.Q() = 0.5;
+    auto surf = std::make_shared<Surface>(m, 0); // the energy: the vertices' quality
+    std::vector<int> seeds;
+    for (size_t v = 0; v < m.vert.size(); ++v)
+        if (std::fabs(m.vert[v].cP()[2] - 0.25) < 1e-9 && std::fabs(std::hypot(m.vert[v].cP()[0], m.vert[v].cP()[1]) - 1.25) < 1e-9 &&
+            (v % 3) == 0)
+            seeds.push_back(int(v));
+    ASSERT_GE(seeds.size(), 6u);
+    PartBoundaryEnd<CMeshO>::Param par; // off by default: a Run cut short is left as it is
+    for (bool rule : {true, false}) {
+        par.endAtMaxOperations = rule;
+        Snake s(surf);
+        s.InitFromSeeds(seeds, true);
+        s.Run(3);
+        ASSERT_EQ(s.Stats().stop, SnakeStop::MaxOperations);
+        const std::vector<P3> before = s.PolylinePositions();
+        const bool replaced = PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, par);
+        const std::vector<P3> after = s.PolylinePositions();
+        double rMin = 1e9, rMax = -1e9, zAbs = 0;
+        for (const P3 &x : after)
+            rMin = std::min(rMin, std::hypot(x[0], x[1])), rMax = std::max(rMax, std::hypot(x[0], x[1])), zAbs = std::max(zAbs, std::fabs(x[2]));
+        std::printf("recess, ran out of operations, rule %d: replaced %d, loop at r %.3f..%.3f, |z| <= %.3f\n", int(rule), int(replaced),
+                    rMin, rMax, zAbs);
+        if (rule) {
+            EXPECT_TRUE(replaced);
+            EXPECT_NEAR(rMin, 1.0 * std::cos(M_PI / n), 1e-4); // on the 24-gon's edges
+            EXPECT_NEAR(rMax, 1.0, 1e-6);
+            EXPECT_LT(zAbs, 1e-6);
+        } else {
+            EXPECT_FALSE(replaced);
+            EXPECT_EQ(before, after);
+        }
+    }
+}

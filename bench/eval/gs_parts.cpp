@@ -30,7 +30,9 @@
 //   iterations, cos, signOnly (only the sign from the filtered normals, the angle raw), session 31
 //   (--valley-cfilter-gate: its name until session 33); --valley-cfilter-rel k, --valley-cfilter-whole 0|1, --valley-cfilter-min
 //   DEGREES, --valley-cfilter-pass DEGREES: its relative, relativeWhole, relativeMin, passAngle;
-//   --valley-cfilter-noise X: its noiseMin, session 32)
+//   --valley-cfilter-noise X: its noiseMin, session 32; --valley-crease A: creaseAngle, the concavity
+//   reference at most A rad, 0 = off, session 34; --end-max-ops 0|1: PartBoundaryEnd::Param::
+//   endAtMaxOperations, a Run that ran out of operations ends on its valley loop too, session 34)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -245,6 +247,8 @@ int main(int argc, char **argv)
         else if (a == "--variant") variant = next();
         else if (a == "--seeded-shrink") vlpArgs.seededShrink = std::stod(next());
         else if (a == "--no-toward-body") vlpArgs.towardBody = false;
+        else if (a == "--end-max-ops") vlpArgs.endAtMaxOperations = std::stoi(next()) != 0;
+        else if (a == "--valley-crease") vlpArgs.valley.creaseAngle = std::stod(next());
         else if (a == "--alpha") alpha = std::stod(next());
         else if (a == "--beta") beta = std::stod(next());
         else if (a == "--ext") ext = std::stod(next());

@@ -90,6 +90,19 @@ public:
         /// (FinishFrom's round the snake's loop, its last band's; the descent and salience do not
         /// change it), next to valley.record's loops. Empty: nothing is recorded, nothing changes.
         std::function<void(double)> recordReference;
+        /// A Run that ran out of operations (SnakeStop::MaxOperations) ends on its valley loop as a
+        /// converged one does (session 34). On a CAD mesh a loop on a strip of long faces (an
+        /// annulus or a chamfer one face wide: two vertex rings, the energy linear across each
+        /// face) has no rest between the rings and hops, never passing the convergence test,
+        /// although it lies in the valley's band: bearing 341 part 1 outside 2 ran its 400
+        /// operations on the annulus beside the groove's crease (capture 0.89) and was left there.
+        /// The Run's end's searches keep only a cheaper loop, as after convergence. On
+        /// bench/eval/gs_parts (--end-max-ops 1) it gains that row and moves no other (no row of
+        /// the 9 meshes or the variants runs out of operations; collapsed loops stop otherwise).
+        /// Left off (false) for the lead: a Run cut short by its budget has been left as it is
+        /// by design (ValleyLoop.EndsAConvergedLoopOnTheValleysEdgesAndKeepsTheRun, a Run of one
+        /// operation), and a host may stop a Run to be continued (docs/method.md, session 34).
+        bool endAtMaxOperations = false;
     };
 
     /// The loop a Run started from (its polyline and its samples' faces), kept by the host
@@ -119,16 +132,18 @@ public:
         return par;
     }
 
-    /// A closed snake that converged on the part-boundary energy ends on the cheapest loop of
-    /// edges round it. Returns true when the snake was replaced by that loop (it is kept as it
-    /// is when the band holds no loop, or only one shorter than half the snake).
+    /// A closed snake that converged on the part-boundary energy (or ran out of operations,
+    /// Param::endAtMaxOperations) ends on the cheapest loop of edges round it. Returns true when
+    /// the snake was replaced by that loop (it is kept as it is when the band holds no loop, or
+    /// only one shorter than half the snake).
     /// `seeded`: the loop the Run started from (Seeded::Of before the Run), or null.
     template <class SnakeType>
     static bool FinishRun(SnakeType &s, FeatureEnergyType type, bool energyFromQuality, const Param &parIn = Param(),
                           const Seeded *seeded = nullptr)
     {
+        const SnakeStop stop = s.Stats().stop;
         if (!s.Closed() || energyFromQuality || type != FeatureEnergyType::PartBoundary ||
-            s.Stats().stop != SnakeStop::Converged)
+            !(stop == SnakeStop::Converged || (parIn.endAtMaxOperations && stop == SnakeStop::MaxOperations)))
             return false;
         const MeshType &m = s.GetSurface().Mesh(); // its VF adjacency is current (SnakeSurface)
         const auto &energy = s.GetSurface().Energy();

@@ -74,6 +74,18 @@ public:
         /// 54-55, 59-60, 57-58 %.
         double concavityWeight = 2.0;
         double concavityScale = 2.0;
+        /// The reference (concavityScale x the median) at most this angle, rad (session 34): an
+        /// edge where the surface turns a right angle inwards is a full crease (c = 1) whatever
+        /// the band's median. On a CAD part the band's concave edges are mostly its sharp
+        /// creases (faces are planar or cylinders, whose edges are flat or convex), so the median
+        /// is the crease's own angle and twice it gave the crease half a crease's credit, no more
+        /// than a shallow fold's: on bearing 341 (part 0 inside 2) the Run's end took a loop of
+        /// chords across the flange's flat top (47.2 h) instead of the right-angle crease people
+        /// cut along (46.2 h at c = 0.5, 26.3 at c = 1). It binds only where the median
+        /// concave angle exceeds 45 degrees: on bench/eval/gs_parts (--energy part --rings 2,3)
+        /// no row of the 9 meshes nor of the refine, graded and noise variants moves at all; the
+        /// CAD-like ids 327-342 gain 341 part 0 inside 2 (docs/method.md, session 34). 0: off.
+        double creaseAngle = 0.5 * M_PI;
         /// The scale at which an edge must be concave to count (session 29): c is the edge's
         /// own dihedral angle (one ring: the crease people follow, to the edge) but only where
         /// the surface also bends inwards across the edge at the scale of `concavityRings`
@@ -253,6 +265,7 @@ public:
             if (!concave.empty()) {
                 std::nth_element(concave.begin(), concave.begin() + concave.size() / 2, concave.end());
                 ref = par.concavityScale * concave[concave.size() / 2];
+                if (par.creaseAngle > 0) ref = std::min(ref, par.creaseAngle);
             }
             refIo = ref;
         }
