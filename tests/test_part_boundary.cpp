@@ -2319,3 +2319,67 @@ TEST(PartBoundaryEnd, MovesAShortPartsLoopTowardsTheBodyWithNoise)
     StubEndsOnItsBase({"noise 3 % of the part", false, false, 0, 0.03 * 0.2}, 0.03 * 0.2 + 1e-6, 0.03 * 1.242);
     StubEndsOnItsBase({"noise 3 % of the body", false, false, 0, 0.03 * 1.2}, kStubStep + 0.03 * 1.2, 0.25 * 1.242);
 }
+
+// A loop round a part is a simple cycle that separates the surface (session 34, loop_topology.h,
+// ValleyLoop::Param::separating). On a torus a loop round the tube (a meridian) is simple but
+// separates nothing: the band round it holds only such loops, and the cheapest of them, which
+// the valley loop returned before, is no part's boundary (the benchmark's octopus, genus 1: the
+// snake round a tentacle ran through a handle beside its base and every stage of the Run's end
+// kept a loop through it). A vertex's one-ring on the torus separates; a loop with a vertex
+// twice is no simple cycle.
+TEST(ValleyLoop, KeepsNoLoopThatSeparatesNothing)
+{
+    CMeshO m;
+    vcg::tri::Torus(m, 1.0f, 0.3f, 48, 16);
+    gs_test::EnableSnakeAdjacency(m);
+    // the meridian in the plane y = 0, x > 0: its vertices in order round the tube
+    std::vector<std::pair<double, int>> mer;
+    for (size_t v = 0; v < m.vert.size(); ++v) {
+        const P3 p = P3::Construct(m.vert[v].cP());
+        if (std::abs(p[1]) < 1e-4 && p[0] > 0) mer.push_back({std::atan2(p[2], p[0] - 1.0), int(v)});
+    }
+    ASSERT_EQ(mer.size(), 16u);
+    std::sort(mer.begin(), mer.end());
+    std::vector<int> vl;
+    std::vector<P3> loop;
+    std::vector<int> faces;
+    for (const auto &x : mer) {
+        vl.push_back(x.second);
+        loop.push_back(P3::Construct(m.vert[x.second].cP()));
+        faces.push_back(int(vcg::tri::Index(m, m.vert[x.second].cVFp())));
+    }
+    typedef LoopTopology<CMeshO> LT;
+    EXPECT_FALSE(LT::SimpleSeparating(m, vl)); // simple, separates nothing
+    // a vertex's one-ring (the faces round it in order) separates it
+    std::vector<int> ring;
+    {
+        CVertexO *c = &m.vert[vl[0]];
+        vcg::face::Pos<CFaceO> p(c->VFp(), c);
+        const CVertexO *first = p.VFlip();
+        do {
+            ring.push_back(int(vcg::tri::Index(m, p.VFlip())));
+            p.FlipE(), p.FlipF();
+        } while (p.VFlip() != first);
+    }
+    ASSERT_GE(ring.size(), 3u);
+    EXPECT_TRUE(LT::SimpleSeparating(m, ring));
+    std::vector<int> twice = ring;
+    twice.insert(twice.end(), ring.begin(), ring.end()); // round it twice: a vertex twice
+    EXPECT_FALSE(LT::SimpleSeparating(m, twice));
+    // the valley loop round the meridian: none when it must separate, a meridian before
+    const std::vector<double> flat(m.vert.size(), 0.5);
+    const double h = gs_test::MedianEdgeLength(m);
+    ValleyLoop<CMeshO>::Param sep, any;
+    any.separating = false;
+    const std::vector<int> before = ValleyLoop<CMeshO>::Find(m, loop, faces, flat, h, any);
+    ASSERT_GE(before.size(), 3u);
+    EXPECT_FALSE(LT::SimpleSeparating(m, before));
+    EXPECT_TRUE(ValleyLoop<CMeshO>::Find(m, loop, faces, flat, h, sep).empty());
+    // a loop round a bump on the tube (a contractible ring of the band) is still found
+    std::vector<P3> small;
+    std::vector<int> smallFaces;
+    for (int v : ring) small.push_back(P3::Construct(m.vert[v].cP())), smallFaces.push_back(int(vcg::tri::Index(m, m.vert[v].cVFp())));
+    const std::vector<int> round = ValleyLoop<CMeshO>::Find(m, small, smallFaces, flat, 0.5 * h, sep);
+    EXPECT_GE(round.size(), 3u);
+    if (round.size() >= 3) EXPECT_TRUE(LT::SimpleSeparating(m, round));
+}

@@ -32,6 +32,7 @@
 
 #include <vcg_ext/snake/crease_normals.h>
 #include <vcg_ext/snake/error.h>
+#include <vcg_ext/snake/loop_topology.h>
 #include <vcg_ext/snake/part_salience.h>
 
 namespace vcg {
@@ -116,6 +117,11 @@ public:
         /// 20 bands 143 (6 loops gained, none lost); accepting by total cost alone 142 (8
         /// gained, 3 lost: bird wing loops slid up the tapering wing, same ground, shorter).
         int iterations = 8;
+        /// The loop found is the cheapest that is a simple cycle separating the surface
+        /// (loop_topology.h, session 34): on a surface with a handle beside the part the band's
+        /// cheapest loop may run through the handle and cut nothing off. false: the cheapest
+        /// loop, as before.
+        bool separating = true;
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
         /// Run's end finds and the stage that found it ("band", "descent", "salience",
         /// "profile", "across": the bend's candidates); an empty loop marks where the searches
@@ -287,7 +293,8 @@ public:
         std::vector<double> dist(2 * nb);
         std::vector<int> prev(2 * nb);
         typedef std::pair<double, int> QE;
-        for (int s : starts) {
+        // the cheapest loop through start s: its cost, when below bound, else inf
+        auto search = [&](int s, double bound, std::vector<int> &path) {
             std::fill(dist.begin(), dist.end(), inf);
             std::fill(prev.begin(), prev.end(), -1);
             std::priority_queue<QE, std::vector<QE>, std::greater<QE>> q;
@@ -297,7 +304,7 @@ public:
             while (!q.empty()) {
                 const QE e = q.top();
                 q.pop();
-                if (e.first > dist[e.second] || e.first >= bestCost) continue;
+                if (e.first > dist[e.second] || e.first >= bound) continue;
                 if (e.second == target) break;
                 const int a = e.second % nb, sheet = e.second / nb;
                 for (const auto &ab : adj[a]) {
@@ -310,13 +317,34 @@ public:
                     if (c < dist[to]) dist[to] = c, prev[to] = e.second, q.push({c, to});
                 }
             }
-            if (dist[target] < bestCost) {
-                bestCost = dist[target];
-                best.clear();
-                for (int x = prev[target]; x >= 0 && x != s; x = prev[x]) best.push_back(vert[x % nb]);
-                best.push_back(vert[s]);
-                std::reverse(best.begin(), best.end());
+            if (!(dist[target] < bound)) return inf;
+            path.clear();
+            for (int x = prev[target]; x >= 0 && x != s; x = prev[x]) path.push_back(vert[x % nb]);
+            path.push_back(vert[s]);
+            std::reverse(path.begin(), path.end());
+            return dist[target];
+        };
+        std::vector<int> path;
+        for (int s : starts) {
+            const double c = search(s, bestCost, path);
+            if (c < bestCost) bestCost = c, best = path;
+        }
+        // Param::separating: the cheapest loop that is a simple cycle separating the surface
+        // (a loop through a handle beside the part is none); every start's loop searched again
+        // only when the cheapest is not
+        if (par.separating && !best.empty() && !LoopTopology<MeshType>::SimpleSeparating(m, best)) {
+            std::vector<std::pair<double, std::vector<int>>> all;
+            for (int s : starts) {
+                const double c = search(s, inf, path);
+                if (c < inf) all.push_back({c, path});
             }
+            std::stable_sort(all.begin(), all.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
+            bestCost = inf, best.clear();
+            for (auto &x : all)
+                if (LoopTopology<MeshType>::SimpleSeparating(m, x.second)) {
+                    bestCost = x.first, best = std::move(x.second);
+                    break;
+                }
         }
         cost = bestCost;
         return best;
