@@ -32,7 +32,11 @@ public:
     /// True when vertex loop l (closed, consecutive vertices joined by edges) is a simple cycle
     /// that separates the surface. False for a loop with a vertex twice, two consecutive
     /// vertices not joined by an edge, or one whose two sides are joined (a handle).
-    static bool SimpleSeparating(const MeshType &m, const std::vector<int> &l)
+    /// across (when given and the loop is simple but separates nothing): the edges, as vertex
+    /// pairs, that a path of faces from one side of the loop to the other and back across its
+    /// first edge crosses (each once; mod 2). A loop that crosses them an even number of times
+    /// meets that closed path evenly, as a separating loop does (ValleyLoop::FindAt's second search).
+    static bool SimpleSeparating(const MeshType &m, const std::vector<int> &l, std::vector<std::pair<int, int>> *across = nullptr)
     {
         const int n = int(l.size());
         if (n < 3) return false;
@@ -51,6 +55,7 @@ public:
         });
         if (start.size() != 2) return false; // no edge, a border or a non-manifold edge
         std::unordered_map<const FaceType *, int> side;
+        std::unordered_map<const FaceType *, std::pair<const FaceType *, long long>> from; // the flood's tree
         std::vector<const FaceType *> queue[2];
         size_t head[2] = {0, 0};
         for (int s = 0; s < 2; ++s) side[start[s]] = s, queue[s].push_back(start[s]);
@@ -61,17 +66,30 @@ public:
                 for (int k = 0; k < 3; ++k) {
                     const int a = index(m, f->cV(k)), b = index(m, f->cV((k + 1) % 3));
                     if (edges.count(key(a, b))) continue;
-                    bool met = false;
+                    const FaceType *met = nullptr;
                     ForFaces(m, a, [&](const FaceType *g) {
                         if (g == f || met) return;
                         bool hasB = false;
                         for (int j = 0; j < 3; ++j) hasB = hasB || index(m, g->cV(j)) == b;
                         if (!hasB) return;
                         const auto it = side.find(g);
-                        if (it == side.end()) side[g] = s, queue[s].push_back(g);
-                        else if (it->second != s) met = true;
+                        if (it == side.end()) side[g] = s, from[g] = {f, key(a, b)}, queue[s].push_back(g);
+                        else if (it->second != s) met = g;
                     });
-                    if (met) return false; // the two sides are one
+                    if (!met) continue;
+                    // the two sides are one: the closed path f .. start[s], start[1-s] .. met, f
+                    if (across) {
+                        std::unordered_set<long long> odd;
+                        auto toggle = [&](long long e) {
+                            if (!odd.erase(e)) odd.insert(e);
+                        };
+                        toggle(key(a, b)), toggle(key(l[0], l[1]));
+                        for (const FaceType *x : {f, met})
+                            for (auto it = from.find(x); it != from.end(); it = from.find(it->second.first)) toggle(it->second.second);
+                        across->clear();
+                        for (long long e : odd) across->push_back({int(e / nv), int(e % nv)});
+                    }
+                    return false;
                 }
             }
         }

@@ -293,6 +293,9 @@ public:
         std::vector<double> dist(2 * nb);
         std::vector<int> prev(2 * nb);
         typedef std::pair<double, int> QE;
+        // the second search's edges (band pair keys) whose crossings are counted mod 2 (a third
+        // index bit: the node (parity * 2 + sheet) * nb + v); empty: none, two sheets
+        std::unordered_map<long long, char> parityEdges;
         // the cheapest loop through start s: its cost, when below bound, else inf
         auto search = [&](int s, double bound, std::vector<int> &path) {
             std::fill(dist.begin(), dist.end(), inf);
@@ -306,14 +309,15 @@ public:
                 q.pop();
                 if (e.first > dist[e.second] || e.first >= bound) continue;
                 if (e.second == target) break;
-                const int a = e.second % nb, sheet = e.second / nb;
+                const int a = e.second % nb, sheet = (e.second / nb) & 1, parity = e.second / (2 * nb);
                 for (const auto &ab : adj[a]) {
                     const int b = ab.first;
                     const int ns = sheet + cross(a, b);
                     if (ns < 0 || ns > 1) continue;
+                    const int np = parityEdges.empty() ? 0 : parity ^ int(parityEdges.count(key(a, b)));
                     const double len = vcg::Distance(m.vert[vert[a]].cP(), m.vert[vert[b]].cP());
                     const double c = e.first + len * (0.5 * (double(energy[vert[a]]) + double(energy[vert[b]])) + ab.second);
-                    const int to = ns * nb + b;
+                    const int to = (np * 2 + ns) * nb + b;
                     if (c < dist[to]) dist[to] = c, prev[to] = e.second, q.push({c, to});
                 }
             }
@@ -332,7 +336,16 @@ public:
         // Param::separating: the cheapest loop that is a simple cycle separating the surface
         // (a loop through a handle beside the part is none); every start's loop searched again
         // only when the cheapest is not
-        if (par.separating && !best.empty() && !LoopTopology<MeshType>::SimpleSeparating(m, best)) {
+        std::vector<std::pair<int, int>> across;
+        if (par.separating && !best.empty() && !LoopTopology<MeshType>::SimpleSeparating(m, best, &across)) {
+            // a separating loop meets every closed path evenly: the one across the loop found
+            // through the handle (LoopTopology's) too. The search again, its crossings of that
+            // path counted: the loops that meet it evenly (round the handle's other side)
+            for (const auto &e : across) {
+                const int a = idOf(&m.vert[e.first]), b = idOf(&m.vert[e.second]);
+                if (a >= 0 && b >= 0) parityEdges[key(a, b)] = 1;
+            }
+            if (!parityEdges.empty()) dist.resize(4 * nb), prev.resize(4 * nb);
             std::vector<std::pair<double, std::vector<int>>> all;
             for (int s : starts) {
                 const double c = search(s, inf, path);
