@@ -47,6 +47,12 @@
 //   and per agreeing person SIDE: the cut's vertices counted by signed hop (-3..+3, 3 = 3+) with
 //   their mean H and E, and the cut's and the loop's mean signed dihedral angle (degrees); SIDESHIFT:
 //   the row's success with the loop moved one ring toward the part and toward the body (a side rule's ceiling).
+//   (The loop's vertices: the Run's end's own vertex loop when it replaced the snake, else the
+//   samples' nearest vertices joined by the fewest hops, session 34.) GS_PARTS_TOPO=1 (session 34):
+//   per loop, each stage's edge loop as FinishRun records it with n, rep (vertices twice), twice
+//   (edges twice), gap (consecutive vertices not joined), comps (face components across the edges
+//   off it: 2 = it separates) and min (the smaller's faces), and the part's boundary loops and Euler
+//   characteristic; GS_PARTS_TOPO_DUMP=DIR: the final loop as DIR/loop_ID_PART_SIDE_RING.obj.
 //   GS_PARTS_GAPS=1: per failed loop, each agreeing person's coverage and the stretches of their
 //   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
 //   success as measured and under the strictest reading of the issue, one person's cut both
