@@ -24,6 +24,7 @@
 //   before session 22; --valley-band, --valley-lambda, --valley-cscale: its bandWidth, lambda
 //   and concavityScale; --valley-crings K: concavityRings, 0 = the one-ring sign alone;
 //   --valley-flat K: flatTolerance, an edge flat within K times the scalar's rounding, 0 = off;
+//   --valley-separating 0|1: separating, the loop a simple cycle that separates the surface (session 34);
 //   --part-flat K: PartBoundaryEnergy::Param::flatTolerance, a vertex flat where its concavity is
 //   within K times the curvature the coordinates' rounding can give its fit, 0 = off, session 32;
 //   --valley-cfilter K, --valley-cfilter-cos C, --valley-cfilter-sign-only 0|1: creaseFilter's (CreaseNormals::Param)
@@ -48,6 +49,12 @@
 //   and per agreeing person SIDE: the cut's vertices counted by signed hop (-3..+3, 3 = 3+) with
 //   their mean H and E, and the cut's and the loop's mean signed dihedral angle (degrees); SIDESHIFT:
 //   the row's success with the loop moved one ring toward the part and toward the body (a side rule's ceiling).
+//   (The loop's vertices: the Run's end's own vertex loop when it replaced the snake, else the
+//   samples' nearest vertices joined by the fewest hops, session 34.) GS_PARTS_TOPO=1 (session 34):
+//   per loop, each stage's edge loop as FinishRun records it with n, rep (vertices twice), twice
+//   (edges twice), gap (consecutive vertices not joined), comps (face components across the edges
+//   off it: 2 = it separates) and min (the smaller's faces), and the part's boundary loops and Euler
+//   characteristic; GS_PARTS_TOPO_DUMP=DIR: the final loop as DIR/loop_ID_PART_SIDE_RING.obj.
 //   GS_PARTS_GAPS=1: per failed loop, each agreeing person's coverage and the stretches of their
 //   cut farther than 1 h from the loop, as length@farthest in h. GS_PARTS_JOINT=1: per loop,
 //   success as measured and under the strictest reading of the issue, one person's cut both
@@ -261,6 +268,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-cscale") vlpArgs.valley.concavityScale = std::stod(next());
         else if (a == "--valley-crings") vlpArgs.valley.concavityRings = std::stoi(next());
         else if (a == "--valley-flat") vlpArgs.valley.flatTolerance = std::stod(next());
+        else if (a == "--valley-separating") vlpArgs.valley.separating = std::stoi(next()) != 0;
         else if (a == "--part-flat") partPar.flatTolerance = partFlat = std::stod(next());
         else if (a == "--valley-cfilter") vlpArgs.valley.creaseFilter.iterations = std::stoi(next());
         else if (a == "--valley-cfilter-cos") vlpArgs.valley.creaseFilter.cos = std::stod(next());
@@ -544,9 +552,16 @@ int main(int argc, char **argv)
                         std::vector<std::pair<std::string, std::vector<int>>> chain;
                         double chainRef = -1; // the concavity reference FinishRun priced with (session 32)
                         if (chainOn) run.recordReference = [&](double r) { chainRef = r; };
-                        if (oracleOut || chainOn)
+                        // GS_PARTS_TOPO (session 34): the loops FinishRun records at its stages, for
+                        // their topology (TOPO line below)
+                        const bool topoOn = std::getenv("GS_PARTS_TOPO") && valleyLoop;
+                        const bool topoRec = (topoOn || std::getenv("GS_PARTS_SIDE")) && valleyLoop; // SIDE reads the final vertex loop
+                        std::vector<std::pair<std::string, std::vector<int>>> topoChain;
+                        if (oracleOut || chainOn || topoRec)
                             run.valley.record = [&](const char *st, const std::vector<int> &l) {
                                 const std::string x = st;
+                                if (topoRec && x.compare(0, 4, "end:") == 0) topoChain.push_back({x, l});
+                                if (!oracleOut && !chainOn) return;
                                 if (x.compare(0, 4, "end:") == 0) {
                                     for (const auto &c : chain)
                                         if (c.first == x) return;
@@ -565,6 +580,94 @@ int main(int argc, char **argv)
                         const double L1 = gs_parts::LoopLength(loop);
                         const gs_parts::Score sc = gs_parts::Measure(loop, p, md.h, md.h);
                         const bool point = L1 < 0.25 * L0 || s.Stats().stopped;
+                        if (topoOn) {
+                            // session 34: is each stage's edge loop a simple cycle that separates the
+                            // surface? rep: repeated vertices, twice: edges walked twice, gap: consecutive
+                            // vertices not adjacent, comps: the face components across the edges off the
+                            // loop (2 = separates) with their face counts (the smaller first)
+                            CMeshO &m = md.mesh;
+                            auto topo = [&](const std::vector<int> &l) {
+                                std::map<std::pair<int, int>, int> ec;
+                                std::map<int, int> vc;
+                                int gap = 0;
+                                for (size_t i = 0; i < l.size(); ++i) {
+                                    const int a = l[i], b = l[(i + 1) % l.size()];
+                                    ++vc[a], ++ec[{std::min(a, b), std::max(a, b)}];
+                                    bool adj = false;
+                                    for (vcg::face::VFIterator<CFaceO> vfi(&m.vert[a]); !vfi.End() && !adj; ++vfi)
+                                        for (int k = 0; k < 3; ++k) adj = adj || vfi.F()->V(k) == &m.vert[b];
+                                    gap += !adj;
+                                }
+                                int rep = 0, twice = 0;
+                                for (const auto &x : vc) rep += x.second > 1;
+                                for (const auto &x : ec) twice += x.second > 1;
+                                std::vector<int> fc(m.face.size(), -1), sizes;
+                                for (size_t f0 = 0; f0 < m.face.size(); ++f0) {
+                                    if (m.face[f0].IsD() || fc[f0] >= 0) continue;
+                                    const int c = int(sizes.size());
+                                    sizes.push_back(0);
+                                    std::vector<int> st{int(f0)};
+                                    fc[f0] = c;
+                                    while (!st.empty()) {
+                                        const int f = st.back();
+                                        st.pop_back();
+                                        ++sizes[c];
+                                        for (int k = 0; k < 3; ++k) {
+                                            const int a = int(vcg::tri::Index(m, m.face[f].V0(k))), b = int(vcg::tri::Index(m, m.face[f].V1(k)));
+                                            if (ec.count({std::min(a, b), std::max(a, b)})) continue;
+                                            const int g = int(vcg::tri::Index(m, m.face[f].FFp(k)));
+                                            if (fc[g] < 0) fc[g] = c, st.push_back(g);
+                                        }
+                                    }
+                                }
+                                std::sort(sizes.begin(), sizes.end());
+                                char buf[256];
+                                std::snprintf(buf, sizeof buf, "n=%zu rep=%d twice=%d gap=%d comps=%zu min=%d", l.size(), rep, twice, gap, sizes.size(),
+                                              sizes.empty() ? 0 : sizes[0]);
+                                return std::string(buf);
+                            };
+                            // the part's own region: its boundary edges' components (1: one cut) and its
+                            // Euler characteristic V - E + F (1: a disc)
+                            int partLoops = 0, partChi = 0;
+                            {
+                                std::set<std::pair<int, int>> be, pe;
+                                std::set<int> pv;
+                                int pf = 0;
+                                for (size_t f = 0; f < m.face.size(); ++f) {
+                                    if (m.face[f].IsD() || !p.inside[f]) continue;
+                                    ++pf;
+                                    for (int k = 0; k < 3; ++k) {
+                                        const int a = int(vcg::tri::Index(m, m.face[f].V0(k))), b = int(vcg::tri::Index(m, m.face[f].V1(k)));
+                                        pv.insert(a), pe.insert({std::min(a, b), std::max(a, b)});
+                                        if (!p.inside[vcg::tri::Index(m, m.face[f].FFp(k))]) be.insert({std::min(a, b), std::max(a, b)});
+                                    }
+                                }
+                                partChi = int(pv.size()) - int(pe.size()) + pf;
+                                std::map<int, int> par;
+                                std::function<int(int)> find = [&](int x) { return par[x] == x ? x : par[x] = find(par[x]); };
+                                for (const auto &e : be) par.emplace(e.first, e.first), par.emplace(e.second, e.second);
+                                for (const auto &e : be) par[find(e.first)] = find(e.second);
+                                for (const auto &x : par) partLoops += find(x.first) == x.first;
+                            }
+                            std::fprintf(stderr, "TOPO %d %d %s %d ok=%d stop=%d replaced=%d partLoops=%d partChi=%d |", id, p.index, side > 0 ? "in" : "out", ring,
+                                         int(sc.Success()), int(s.Stats().stop), int(replaced), partLoops, partChi);
+                            for (const auto &c : topoChain)
+                                if (c.second.size() >= 3) std::fprintf(stderr, " %s %s |", c.first.c_str() + 4, topo(c.second).c_str());
+                                else std::fprintf(stderr, " %s none |", c.first.c_str() + 4);
+                            std::fprintf(stderr, "\n");
+                            if (const char *dir = std::getenv("GS_PARTS_TOPO_DUMP")) {
+                                // the final loop as an .obj polyline and the final vertex loop's ids
+                                char fn[512];
+                                std::snprintf(fn, sizeof fn, "%s/loop_%d_%d_%s_%d.obj", dir, id, p.index, side > 0 ? "in" : "out", ring);
+                                std::ofstream o(fn);
+                                for (const auto &x : loop) o << "v " << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
+                                o << 'l';
+                                for (size_t i = 0; i <= loop.size(); ++i) o << ' ' << (i % loop.size()) + 1;
+                                o << '\n';
+                                if (!topoChain.empty())
+                                    for (int v : topoChain.back().second) o << "# vl " << v << '\n';
+                            }
+                        }
                         if (chainOn) {
                             // session 30: the loops FinishRun makes, in its order: the snake's own loop,
                             // the valley loop after the band and the descent (salience off), after salience,
@@ -1006,7 +1109,13 @@ int main(int argc, char **argv)
                                 offV = std::max(offV, (vcg::Point3d::Construct(m.vert[v].cP()) - x).Norm() / md.h);
                                 if (lv.empty() || lv.back() != v) lv.push_back(v);
                             }
-                            {
+                            // session 34 (helper 5): the Run's end's own vertex loop when it replaced the
+                            // snake (the nearest vertices of its samples, mid-edge points among them,
+                            // could pinch off a vertex or miss a ring: armadillo 281 part 1's loop
+                            // split the mesh in 3 that way); else the nearest vertices' chain
+                            const bool own = replaced && !topoChain.empty() && topoChain.back().first == "end:bend" && topoChain.back().second.size() >= 3;
+                            if (own) lv = topoChain.back().second;
+                            else {
                                 // consecutive loop vertices not adjacent (a loop point off the mesh's
                                 // edges): joined by the fewest-hop path, so the chain separates the mesh
                                 std::vector<int> full;
