@@ -25,6 +25,7 @@
 #include <vcg_ext/energy/part_boundary_energy.h>
 #include <vcg_ext/surface/surface_noise.h>
 #include <vcg/complex/algorithms/create/marching_cubes.h>
+#include <vcg/complex/append.h>
 #include <vcg/complex/algorithms/create/mc_trivial_walker.h>
 #include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/create/platonic.h>
@@ -2497,6 +2498,42 @@ TEST(ValleyLoop, KeepsNoLoopThatSeparatesNothing)
     const std::vector<int> round = ValleyLoop<CMeshO>::Find(m, small, smallFaces, flat, 0.5 * h, sep);
     EXPECT_GE(round.size(), 3u);
     if (round.size() >= 3) EXPECT_TRUE(LT::SimpleSeparating(m, round));
+}
+
+// Whether a surface has a handle, from its Euler characteristic (LoopTopology::Planar): where it
+// has none every simple cycle separates, and the valley loop skips the flood (the measure is
+// taken once per mesh, PartBoundaryEnd::Measured). A sphere, a sphere with holes and two spheres
+// are planar; a torus, and a sphere joined to a torus, are not.
+TEST(LoopTopology, PlanarOnlyWithoutAHandle)
+{
+    typedef LoopTopology<CMeshO> LT;
+    CMeshO sphere, holes, two, torus, both;
+    vcg::tri::Sphere(sphere, 3);
+    gs_test::EnableSnakeAdjacency(sphere);
+    EXPECT_TRUE(LT::Planar(sphere));
+    vcg::tri::Sphere(holes, 3);
+    for (size_t i = 0; i < holes.face.size(); i += 97) vcg::tri::Allocator<CMeshO>::DeleteFace(holes, holes.face[i]);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(holes);
+    gs_test::EnableSnakeAdjacency(holes);
+    EXPECT_TRUE(LT::Planar(holes));
+    vcg::tri::Sphere(two, 2);
+    CMeshO other;
+    vcg::tri::Sphere(other, 2);
+    for (auto &v : other.vert) v.P() += vcg::Point3f(3, 0, 0);
+    vcg::tri::Append<CMeshO, CMeshO>::Mesh(two, other);
+    gs_test::EnableSnakeAdjacency(two);
+    EXPECT_TRUE(LT::Planar(two));
+    vcg::tri::Torus(torus, 1.0f, 0.3f, 48, 16);
+    gs_test::EnableSnakeAdjacency(torus);
+    EXPECT_FALSE(LT::Planar(torus));
+    vcg::tri::Sphere(both, 2);
+    for (auto &v : torus.vert) v.P() += vcg::Point3f(4, 0, 0);
+    vcg::tri::Append<CMeshO, CMeshO>::Mesh(both, torus);
+    gs_test::EnableSnakeAdjacency(both);
+    EXPECT_FALSE(LT::Planar(both));
+    // the Run's end's measure of the mesh
+    EXPECT_EQ(PartBoundaryEnd<CMeshO>::Measured(sphere, PartBoundaryEnd<CMeshO>::Param()).valley.planar, 1);
+    EXPECT_EQ(PartBoundaryEnd<CMeshO>::Measured(torus, PartBoundaryEnd<CMeshO>::Param()).valley.planar, 0);
 }
 
 // The benchmark's octopus (segmentation id 121, genus 1: a tunnel of a few faces beside tentacle

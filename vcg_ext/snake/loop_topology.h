@@ -39,10 +39,7 @@ public:
     static bool SimpleSeparating(const MeshType &m, const std::vector<int> &l, std::vector<std::pair<int, int>> *across = nullptr)
     {
         const int n = int(l.size());
-        if (n < 3) return false;
-        std::unordered_set<int> seen;
-        for (int v : l)
-            if (!seen.insert(v).second) return false;
+        if (!Simple(l)) return false;
         std::unordered_set<long long> edges;
         const long long nv = (long long)m.vert.size();
         auto key = [nv](int a, int b) { return (long long)std::min(a, b) * nv + std::max(a, b); };
@@ -93,6 +90,68 @@ public:
                 }
             }
         }
+    }
+
+    /// True when the loop has at least 3 vertices and none twice (the part of SimpleSeparating
+    /// that needs no flood).
+    static bool Simple(const std::vector<int> &l)
+    {
+        if (l.size() < 3) return false;
+        std::unordered_set<int> seen;
+        for (int v : l)
+            if (!seen.insert(v).second) return false;
+        return true;
+    }
+
+    /// True when every connected component of the surface has genus 0 (a sphere, or a disc with
+    /// holes): there every simple cycle of edges separates the surface (the Jordan curve
+    /// theorem), so SimpleSeparating's flood can be skipped. By the Euler characteristic,
+    /// V - E + F = sum over the components of 2 - 2 g - b (b: boundary loops, the components of
+    /// the border edges). Reads the FF adjacency, which must be current (SnakeSurface's). False
+    /// when in doubt: no FF adjacency, a non-manifold edge (a pinched vertex reads as a handle).
+    static bool Planar(const MeshType &m)
+    {
+        if (!tri::HasFFAdjacency(m) || m.face.empty()) return false;
+        const int nv = int(m.vert.size()), nf = int(m.face.size());
+        std::vector<char> used(nv, 0), reached(nf, 0);
+        std::vector<int> root(nv, -1); // union-find over the border edges' vertices
+        auto find = [&](int v) {
+            while (root[v] != v) v = root[v] = root[root[v]];
+            return v;
+        };
+        long long F = 0, border = 0, V = 0, components = 0, loops = 0;
+        std::vector<const FaceType *> stack;
+        for (int i = 0; i < nf; ++i) {
+            const FaceType &f0 = m.face[i];
+            if (f0.IsD() || reached[i]) continue;
+            ++components;
+            reached[i] = 1;
+            stack.assign(1, &f0);
+            while (!stack.empty()) {
+                const FaceType *f = stack.back();
+                stack.pop_back();
+                ++F;
+                for (int k = 0; k < 3; ++k) {
+                    const int a = index(m, f->cV(k)), b = index(m, f->cV((k + 1) % 3));
+                    used[a] = 1;
+                    const FaceType *g = f->cFFp(k);
+                    if (g == f) { // a border edge: its vertices in one boundary loop
+                        ++border;
+                        for (int v : {a, b})
+                            if (root[v] < 0) root[v] = v, ++loops;
+                        const int ra = find(a), rb = find(b);
+                        if (ra != rb) root[ra] = rb, --loops;
+                        continue;
+                    }
+                    if (g == nullptr || g->IsD() || g->cFFp(f->cFFi(k)) != f) return false;
+                    const int j = int(g - &m.face[0]);
+                    if (!reached[j]) reached[j] = 1, stack.push_back(g);
+                }
+            }
+        }
+        for (char u : used) V += u;
+        const long long E = (3 * F + border) / 2;
+        return 2 * components - loops - (V - E + F) == 0;
     }
 
 private:

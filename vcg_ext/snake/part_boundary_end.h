@@ -122,13 +122,15 @@ public:
     };
 
     /// par with the measures of mesh m that the crease filter reads filled in (those still < 0:
-    /// CreaseNormals::Measured, the noise level and the median face angle). They are the mesh's,
+    /// CreaseNormals::Measured, the noise level and the median face angle), and whether the
+    /// surface has a handle (ValleyLoop::Param::planar). They are the mesh's,
     /// not the Run's (~20 ms on bunny00's 70k faces, session 33): a host takes them once per
     /// mesh (SnakeSession::RunEndParam, bench/eval/gs_parts) and passes them to every FinishRun
     /// on it; FinishRun takes those still missing itself.
     static Param Measured(const MeshType &m, Param par)
     {
         par.valley.creaseFilter = CreaseNormals<MeshType>::Measured(m, par.valley.creaseFilter);
+        if (par.valley.separating && par.valley.planar < 0) par.valley.planar = LoopTopology<MeshType>::Planar(m) ? 1 : 0;
         return par;
     }
 

@@ -142,6 +142,11 @@ public:
         /// without the second search (none when the cheapest does not separate) 168, 157 (+3),
         /// 167 (+1 -1), 151 (+1). false: the cheapest loop, as before.
         bool separating = true;
+        /// The surface has no handle, every component genus 0 (LoopTopology::Planar, a measure of
+        /// the mesh: PartBoundaryEnd::Measured takes it once per mesh): every simple cycle then
+        /// separates, and `separating` needs no flood (on a 1.2M-face mesh the floods at a Run's
+        /// end cost about as much as the rest of it). -1: not measured, the flood runs.
+        int planar = -1;
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
         /// Run's end finds and the stage that found it ("band", "descent", "salience",
         /// "profile", "across": the bend's candidates); an empty loop marks where the searches
@@ -358,7 +363,11 @@ public:
         // (a loop through a handle beside the part is none); every start's loop searched again
         // only when the cheapest is not
         std::vector<std::pair<int, int>> across;
-        if (par.separating && !best.empty() && !LoopTopology<MeshType>::SimpleSeparating(m, best, &across)) {
+        typedef LoopTopology<MeshType> LT;
+        auto isBoundary = [&](const std::vector<int> &l, std::vector<std::pair<int, int>> *x) {
+            return par.planar > 0 ? LT::Simple(l) : LT::SimpleSeparating(m, l, x);
+        };
+        if (par.separating && !best.empty() && !isBoundary(best, &across)) {
             // a separating loop meets every closed path evenly: the one across the loop found
             // through the handle (LoopTopology's) too. The search again, its crossings of that
             // path counted: the loops that meet it evenly (round the handle's other side)
@@ -375,7 +384,7 @@ public:
             std::stable_sort(all.begin(), all.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
             bestCost = inf, best.clear();
             for (auto &x : all)
-                if (LoopTopology<MeshType>::SimpleSeparating(m, x.second)) {
+                if (isBoundary(x.second, nullptr)) {
                     bestCost = x.first, best = std::move(x.second);
                     break;
                 }
