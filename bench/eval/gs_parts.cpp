@@ -144,6 +144,54 @@ bool NoiseVariant(const std::string &v)
     return *end == 0 && a > 0 && std::isfinite(a);
 }
 
+/// A vertex loop's sides (the GS_PARTS_NEAR and GS_PARTS_SIDE diagnostics): each vertex's hops
+/// from the loop's vertices (0 on it, -1 not reached), the components of the vertices off it that
+/// are reached (-1 elsewhere), and the component holding most of the part's side (gs_parts::Rings).
+struct LoopSides
+{
+    std::vector<int> hop, comp;
+    int components = 0, partComp = 0;
+};
+
+/// fn(w) for each vertex w of the faces round vertex v (v itself too), over the VF adjacency.
+template <class Fn>
+void ForNeighbours(CMeshO &m, int v, Fn &&fn)
+{
+    vcg::face::VFIterator<CFaceO> vfi(&m.vert[v]);
+    for (; !vfi.End(); ++vfi)
+        for (int k = 0; k < 3; ++k) fn(int(vcg::tri::Index(m, vfi.F()->V(k))));
+}
+
+LoopSides SidesOf(CMeshO &m, const gs_parts::Part &p, const std::vector<int> &lv)
+{
+    const size_t nv = m.vert.size();
+    LoopSides r;
+    r.hop.assign(nv, -1), r.comp.assign(nv, -1);
+    std::deque<int> q;
+    auto flood = [&](auto &&visit) { // breadth first from q's vertices over the VF adjacency
+        while (!q.empty()) {
+            const int v = q.front();
+            q.pop_front();
+            ForNeighbours(m, v, [&](int w) { visit(v, w); });
+        }
+    };
+    for (int v : lv) r.hop[v] = 0, q.push_back(v);
+    flood([&](int v, int w) { if (r.hop[w] < 0) r.hop[w] = r.hop[v] + 1, q.push_back(w); });
+    for (size_t v0 = 0; v0 < nv; ++v0) {
+        if (r.hop[v0] <= 0 || r.comp[v0] >= 0) continue;
+        r.comp[v0] = r.components, q.push_back(int(v0));
+        flood([&](int, int w) { if (r.hop[w] > 0 && r.comp[w] < 0) r.comp[w] = r.components, q.push_back(w); });
+        ++r.components;
+    }
+    std::vector<int> dist, side;
+    gs_parts::Rings(m, p, dist, side);
+    std::vector<int> inC(r.components + 1, 0);
+    for (size_t v = 0; v < nv; ++v)
+        if (r.comp[v] >= 0 && side[v] > 0) ++inC[r.comp[v]];
+    r.partComp = int(std::max_element(inC.begin(), inC.end()) - inC.begin());
+    return r;
+}
+
 std::vector<int> IntList(const std::string &s)
 {
     std::vector<int> out;
@@ -1006,36 +1054,9 @@ int main(int argc, char **argv)
                             // the best-covered person's uncovered cut vertices: hop distance from the
                             // loop, signed + on the part's side, and their energy against the loop's
                             {
-                                const size_t nv = md.mesh.vert.size();
-                                std::vector<int> hop(nv, -1), comp(nv, -1);
-                                std::deque<int> qq;
-                                for (int v : vl) hop[v] = 0, qq.push_back(v);
-                                auto nbrs = [&](int v, const std::function<void(int)> &fn) {
-                                    vcg::face::VFIterator<CFaceO> vfi(&md.mesh.vert[v]);
-                                    for (; !vfi.End(); ++vfi)
-                                        for (int k = 0; k < 3; ++k) fn(int(vcg::tri::Index(md.mesh, vfi.F()->V(k))));
-                                };
-                                while (!qq.empty()) {
-                                    const int v = qq.front();
-                                    qq.pop_front();
-                                    nbrs(v, [&](int w) { if (hop[w] < 0) hop[w] = hop[v] + 1, qq.push_back(w); });
-                                }
-                                int nc = 0;
-                                for (size_t v0 = 0; v0 < nv; ++v0) {
-                                    if (hop[v0] == 0 || comp[v0] >= 0) continue;
-                                    comp[v0] = nc, qq.push_back(int(v0));
-                                    while (!qq.empty()) {
-                                        const int v = qq.front();
-                                        qq.pop_front();
-                                        nbrs(v, [&](int w) { if (hop[w] != 0 && comp[w] < 0) comp[w] = nc, qq.push_back(w); });
-                                    }
-                                    ++nc;
-                                }
-                                std::vector<int> dist, sideOf;
-                                gs_parts::Rings(md.mesh, p, dist, sideOf);
-                                std::vector<int> inC(nc + 1, 0);
-                                for (size_t v = 0; v < nv; ++v) if (comp[v] >= 0 && sideOf[v] > 0) ++inC[comp[v]];
-                                const int partComp = int(std::max_element(inC.begin(), inC.end()) - inC.begin());
+                                const LoopSides ls = SidesOf(md.mesh, p, vl);
+                                const std::vector<int> &hop = ls.hop, &comp = ls.comp;
+                                const int partComp = ls.partComp;
                                 double eLoop = 0;
                                 for (int v : vl) eLoop += surf->Energy()[v] / vl.size();
                                 size_t best = 0;
@@ -1185,35 +1206,9 @@ int main(int argc, char **argv)
                                 }
                                 return n ? s / n * 180 / M_PI : 0.0;
                             };
-                            std::vector<int> hop(nv, -1), comp(nv, -1);
-                            std::deque<int> qq;
-                            for (int v : lv) hop[v] = 0, qq.push_back(v);
-                            auto nbrs = [&](int v, const std::function<void(int)> &fn) {
-                                vcg::face::VFIterator<CFaceO> vfi(&m.vert[v]);
-                                for (; !vfi.End(); ++vfi)
-                                    for (int k = 0; k < 3; ++k) fn(int(vcg::tri::Index(m, vfi.F()->V(k))));
-                            };
-                            while (!qq.empty()) {
-                                const int v = qq.front();
-                                qq.pop_front();
-                                nbrs(v, [&](int w) { if (hop[w] < 0) hop[w] = hop[v] + 1, qq.push_back(w); });
-                            }
-                            int nc = 0;
-                            for (size_t v0 = 0; v0 < nv; ++v0) {
-                                if (hop[v0] <= 0 || comp[v0] >= 0) continue;
-                                comp[v0] = nc, qq.push_back(int(v0));
-                                while (!qq.empty()) {
-                                    const int v = qq.front();
-                                    qq.pop_front();
-                                    nbrs(v, [&](int w) { if (hop[w] > 0 && comp[w] < 0) comp[w] = nc, qq.push_back(w); });
-                                }
-                                ++nc;
-                            }
-                            std::vector<int> dist, sideOf;
-                            gs_parts::Rings(m, p, dist, sideOf);
-                            std::vector<int> inC(nc + 1, 0);
-                            for (size_t v = 0; v < nv; ++v) if (comp[v] >= 0 && sideOf[v] > 0) ++inC[comp[v]];
-                            const int partComp = int(std::max_element(inC.begin(), inC.end()) - inC.begin());
+                            const LoopSides ls = SidesOf(m, p, lv);
+                            const std::vector<int> &hop = ls.hop, &comp = ls.comp;
+                            const int nc = ls.components, partComp = ls.partComp;
                             long lh = 0;
                             for (int v : lv) lh = lh * 31 + v;
                             const auto &E = surf->Energy();
@@ -1298,9 +1293,9 @@ int main(int argc, char **argv)
                                     const int sv = comp[v];
                                     double mh = 0, me = 0;
                                     int n = 0;
-                                    nbrs(v, [&](int u) {
+                                    ForNeighbours(m, v, [&](int u) {
                                         if (hop[u] != 0) return;
-                                        nbrs(u, [&](int w) { if (hop[w] == 1 && comp[w] != sv) mh += hv[w], me += E[w], ++n; });
+                                        ForNeighbours(m, u, [&](int w) { if (hop[w] == 1 && comp[w] != sv) mh += hv[w], me += E[w], ++n; });
                                     });
                                     if (!n) continue;
                                     mh /= n, me /= n;
