@@ -1148,12 +1148,7 @@ int main(int argc, char **argv)
                                     while (!q.empty() && !prev.count(b)) {
                                         const int v = q.front();
                                         q.pop_front();
-                                        vcg::face::VFIterator<CFaceO> vfi(&m.vert[v]);
-                                        for (; !vfi.End(); ++vfi)
-                                            for (int k = 0; k < 3; ++k) {
-                                                const int w = int(vcg::tri::Index(m, vfi.F()->V(k)));
-                                                if (!prev.count(w)) prev[w] = v, q.push_back(w);
-                                            }
+                                        ForNeighbours(m, v, [&](int w) { if (!prev.count(w)) prev[w] = v, q.push_back(w); });
                                         if (prev.size() > 2000) break;
                                     }
                                     if (!prev.count(b)) continue;
