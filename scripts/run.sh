@@ -12,8 +12,10 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
 bash scripts/setup.sh "$here/build"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j2
+# the same configuration as scripts/test.sh (one build folder serves both commands); only what
+# is installed is built here, the tests and benchmarks are scripts/test.sh's
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGS_UNITY_BUILD=ON >/dev/null
+cmake --build build -j2 --target installable
 $SUDO cmake --install build
 echo "[run] plugins installed in $(grep -E '^GS_MESHLAB_PLUGIN_DIR' build/CMakeCache.txt | cut -d= -f2)"
 
