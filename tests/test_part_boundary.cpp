@@ -1660,6 +1660,75 @@ TEST(PartBoundaryEnd, TakesALoopThatBendsMoreAndCostsNoMorePerLength)
     EXPECT_NEAR(zMax, 2 * kLimbStep, 1e-4);
 }
 
+// A loop on convex ground (issue 33, session 35; human 3 part 1 seeded inside 2 rings off): a
+// roof meets a cylinder through two convex turns of its profile, a gentle one (13 degrees, ring
+// A, where the loop settled) and 2 rings below a sharp one (55 degrees, ring B). The energy is
+// 0.5 but on A (0.3) and B (0.28): A is the cheapest ring in total (it is shorter), B per length.
+// The surface bends outwards across both, across B more: the bend rules (a loop that bends more)
+// keep A. Nothing bends inwards across A, so the bend does not hold it there: the neighbour
+// cheapest per length, B, replaces it (PartBoundaryEnd::Param::crossConvex).
+TEST(PartBoundaryEnd, TakesTheCheapestNeighbourPerLengthOfALoopConvexAcross)
+{
+    CMeshO m;
+    const int n = 126;
+    const double step = 0.1, t = 35 * M_PI / 180;
+    const double rA = 2.0, zA = 2.2, rB = rA + 2 * step * std::cos(t), zB = zA - 2 * step * std::sin(t);
+    gs_test::MakeRevolvedProfile(m,
+                                 {{0.0, 3.0, 0},
+                                  {rA, zA, 0},  // the roof, 21.8 degrees below horizontal
+                                  {rB, zB, 2},  // 35 degrees down, 2 rings
+                                  {rB, -1.0, 0}, // the cylinder
+                                  {0.0, -1.0, 0}},
+                                 n, step, -1, 0);
+    auto firstAt = [&](double r, double z) {
+        for (int v = 0; v < int(m.vert.size()); ++v) {
+            const auto &p = m.vert[v].cP();
+            if (std::fabs(std::hypot(p[0], p[1]) - r) < 1e-4 && std::fabs(p[2] - z) < 1e-4) return v;
+        }
+        return -1;
+    };
+    const int a = firstAt(rA, zA), b = firstAt(rB, zB);
+    ASSERT_GE(a, 0);
+    ASSERT_GE(b, 0);
+    for (auto &v : m.vert) v.Q() = v.cP()[2] > 3.0 - 1e-6 ? 1.0 : (v.cP()[2] < -1.0 + 1e-6 ? 0.0 : 0.5); // the range
+    for (int k = 0; k < n; ++k) m.vert[a + k].Q() = 0.3, m.vert[b + k].Q() = 0.28;
+    auto surf = std::make_shared<Surface>(m, 0);
+    std::vector<int> seeds;
+    for (int k = 0; k < n; k += 6) seeds.push_back(a + k);
+    PartBoundaryEnd<CMeshO>::Param par;
+    par.valley.concavityWeight = 0; // the convex turns would decide alone
+    par.salience.exponent = 0;      // salience's candidates towards the body would too
+    // rings 0.1 apart on the profile: the level loops of steps of 1 unit lie within 1.5 units of
+    // A, whose band still holds A; steps of 1.5 units put the second level loop below B
+    par.crossStep = 1.5;
+    auto endAt = [&](const PartBoundaryEnd<CMeshO>::Param &p, double &zMin, double &zMax) {
+        Snake s(surf);
+        s.InitFromSeeds(seeds, true);
+        s.EndRun(SnakeStop::Converged); // a Run that converged on ring A
+        EXPECT_TRUE(PartBoundaryEnd<CMeshO>::FinishRun(s, FeatureEnergyType::PartBoundary, false, p));
+        zMin = 1e9, zMax = -1e9;
+        for (const P3 &x : s.PolylinePositions()) zMin = std::min(zMin, x[2]), zMax = std::max(zMax, x[2]);
+    };
+    std::vector<int> ra, rb;
+    for (int k = 0; k < n; ++k) ra.push_back(a + k), rb.push_back(b + k);
+    Snake s0(surf);
+    s0.InitFromSeeds(seeds, true);
+    const double h = s0.LengthScale(), bA = LoopBend<CMeshO>::Bend(m, ra, h, 2.0), bB = LoopBend<CMeshO>::Bend(m, rb, h, 2.0);
+    std::printf("roof on a cylinder: h %.4f, bend across A %.3f, across B %.3f\n", h, bA, bB);
+    EXPECT_LT(bA, 0.0); // convex across both, more across B
+    EXPECT_LT(bB, bA);
+    double zMin, zMax;
+    endAt(par, zMin, zMax);
+    std::printf("  the Run ends at z %.3f..%.3f (A %.3f, B %.3f)\n", zMin, zMax, zA, zB);
+    EXPECT_NEAR(zMin, zB, 1e-4);
+    EXPECT_NEAR(zMax, zB, 1e-4);
+    par.crossConvex = false; // the mechanism: without it ring A stays
+    endAt(par, zMin, zMax);
+    std::printf("  without crossConvex: z %.3f..%.3f\n", zMin, zMax);
+    EXPECT_NEAR(zMin, zA, 1e-4);
+    EXPECT_NEAR(zMax, zA, 1e-4);
+}
+
 // The profile's level-set lengths for all levels in one pass (session 27) are ContourLength's at
 // each level, bit for bit (the same terms added in the same order), and on the tube of the limb
 // above the perimeter of its ring polygon: the depth below z = 0.3 as the distance, the levels

@@ -83,6 +83,12 @@ public:
         /// needs none; no threshold). On bench/eval/gs_parts (--energy part --rings 2,3) against
         /// 167/220: 168 (+1 -0: hand 181 part 3 inside 3; 10 rows change loop). false: off.
         bool crossDominant = true;
+        /// Session 35: a loop convex across (bend below 0, no valley across it by LoopBend) gives
+        /// the bend rules nothing to hold it by; when neither took a candidate, the one of its
+        /// neighbours cheapest per length, below the loop's own, replaces it (the valley loop's
+        /// own choice among them). On bench/eval/gs_parts (--energy part --rings 2,3) against
+        /// 171/220: 172 (+1 -0: human 3 part 1 inside 2). false: off.
+        bool crossConvex = true;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_CHAIN, session 32): called once per FinishRun
@@ -339,6 +345,10 @@ public:
             for (size_t i = 0; i < cands.size(); ++i)
                 if (bp[i].second <= p1 && bp[i].first > bestBend) best = int(i), bestBend = bp[i].first;
         }
+        // Param::crossConvex: nothing bends across the loop kept, so the price decides
+        if (par.crossConvex && best < 0 && b0 < 0)
+            for (size_t i = 0, n = cands.size(); i < n; ++i)
+                if (bp[i].second < (best < 0 ? p0 : bp[best].second)) best = int(i);
         return best < 0 ? vl : std::move(cands[best]);
     }
 
