@@ -219,8 +219,8 @@ struct Tally
     int n = 0, ok = 0, points = 0;
 };
 
-/// GS_PARTS_ORACLE: one edge loop the Run's end found, where it came from ("own", "seeded" or
-/// "toward", then the stage: band, descent, salience, salience+descent, profile).
+/// GS_PARTS_ORACLE: one edge loop the Run's end found, where it came from ("own", "seeded",
+/// "toward" or "widened", then the stage: band, descent, salience, salience+descent, profile).
 struct Candidate
 {
     std::string stage;
@@ -301,6 +301,7 @@ int main(int argc, char **argv)
         else if (a == "--people") peopleOut = next();
         else if (a == "--variant") variant = next();
         else if (a == "--seeded-shrink") vlpArgs.seededShrink = std::stod(next());
+        else if (a == "--end-handle-widen") vlpArgs.handleWiden = std::stod(next());
         else if (a == "--no-toward-body") vlpArgs.towardBody = false;
         else if (a == "--end-max-ops") vlpArgs.endAtMaxOperations = std::stoi(next()) != 0;
         else if (a == "--valley-crease") vlpArgs.valley.creaseAngle = std::stod(next());
@@ -616,7 +617,7 @@ int main(int argc, char **argv)
                                     return chain.push_back({x, l});
                                 }
                                 if (!oracleOut) return;
-                                if (l.empty() && (x == "seeded" || x == "toward")) return (void)(origin = x);
+                                if (l.empty() && (x == "seeded" || x == "toward" || x == "widened")) return (void)(origin = x);
                                 if (x == "crossfrom") return (void)(crossFrom = l);
                                 if (x != "descent") last = x;
                                 if (l.size() >= 3)
@@ -732,8 +733,8 @@ int main(int argc, char **argv)
                             const double ref = chainRef;
                             const int rep = DeepestVertex(md.mesh, p);
                             const gs_parts::Score so = gs_parts::Measure(own.loop, p, md.h, md.h);
-                            std::fprintf(stderr, "CHAIN %d %d %s %d row=%d | snake %d L=%.1fh", id, p.index, side > 0 ? "in" : "out", ring,
-                                         int(sc.Success()), int(so.Success()), gs_parts::LoopLength(own.loop) / md.h);
+                            std::fprintf(stderr, "CHAIN %d %d %s %d row=%d unit=%.3fh | snake %d L=%.1fh", id, p.index, side > 0 ? "in" : "out", ring,
+                                         int(sc.Success()), hs / md.h, int(so.Success()), gs_parts::LoopLength(own.loop) / md.h);
                             std::vector<char> in;
                             for (const auto &c : chain) {
                                 const char *name = c.first.c_str() + 4; // without "end:"
