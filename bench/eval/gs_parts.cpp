@@ -33,7 +33,9 @@
 //   DEGREES, --valley-cfilter-pass DEGREES: its relative, relativeWhole, relativeMin, passAngle;
 //   --valley-cfilter-noise X: its noiseMin, session 32; --valley-crease A: creaseAngle, the concavity
 //   reference at most A rad, 0 = off, session 34; --end-max-ops 0|1: PartBoundaryEnd::Param::
-//   endAtMaxOperations, a Run that ran out of operations ends on its valley loop too, session 34)
+//   endAtMaxOperations, a Run that ran out of operations ends on its valley loop too, session 34;
+//   --end-handle-widen F: handleWiden, the band F times as wide beside a handle when no band holds a
+//   separating ring, 1 = off, session 35)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
