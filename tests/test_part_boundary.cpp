@@ -2641,3 +2641,46 @@ TEST(ValleyLoop, GoesRoundAHandleBesideThePartOnTheOctopus)
     EXPECT_TRUE(LT::SimpleSeparating(m, b));
     EXPECT_GT(sb.coverage, sa.coverage);
 }
+
+// The benchmark's octopus again (genus 1, the tunnel beside tentacle 1's base): seeded 2 rings
+// outside tentacle 1 (gs_parts part 1 outside 2), the snake converges beside the tunnel, and no
+// band round its loop nor round the seeded one holds a separating ring (their loops all run through
+// the tunnel); FinishRun kept the snake's own loop (1.00/0.84). PartBoundaryEnd::Param::
+// handleWiden (session 35) searches round it again in a band 1.5 times as wide, which reaches round
+// the tunnel's other side: a separating loop on the people's cut (1.00/0.95).
+TEST(PartBoundaryEnd, WidensTheBandBesideAHandleWhenNoRingSeparates)
+{
+    gs_parts::Model md;
+    ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 121, md)) << GS_SEGMENTATION_DIR;
+    CMeshO &m = md.mesh;
+    ASSERT_EQ(m.vert.size(), 5944u);
+    const gs_parts::Part *part = nullptr;
+    for (const auto &p : md.parts)
+        if (p.index == 1) part = &p;
+    ASSERT_TRUE(part);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const std::vector<int> seeds = gs_parts::Seeds(m, *part, 2, -1, 8);
+    ASSERT_GE(seeds.size(), 3u);
+    typedef PartBoundaryEnd<CMeshO> End;
+    const End::Param measured = End::Measured(m, End::Param());
+    EXPECT_EQ(measured.valley.planar, 0); // the octopus has a handle
+    gs_parts::Score score[2];
+    bool replaced[2];
+    for (int widen : {0, 1}) {
+        End::Param par = measured;
+        if (!widen) par.handleWiden = 1;
+        Snake s(surf);
+        s.InitFromSeeds(seeds, true);
+        const auto seeded = End::Seeded::Of(s);
+        s.Run(400);
+        ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
+        replaced[widen] = End::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &seeded);
+        score[widen] = gs_parts::Measure(s.PolylinePositions(), *part, md.h, md.h);
+        std::printf("octopus tentacle 1 seeded outside beside the handle, widen %d: replaced %d, %.2f/%.2f\n", widen,
+                    int(replaced[widen]), score[widen].capture, score[widen].coverage);
+    }
+    EXPECT_FALSE(replaced[0]); // the mechanism: no band held a separating ring
+    EXPECT_FALSE(score[0].Success());
+    EXPECT_TRUE(replaced[1]);
+    EXPECT_TRUE(score[1].Success());
+}

@@ -33,7 +33,9 @@
 //   DEGREES, --valley-cfilter-pass DEGREES: its relative, relativeWhole, relativeMin, passAngle;
 //   --valley-cfilter-noise X: its noiseMin, session 32; --valley-crease A: creaseAngle, the concavity
 //   reference at most A rad, 0 = off, session 34; --end-max-ops 0|1: PartBoundaryEnd::Param::
-//   endAtMaxOperations, a Run that ran out of operations ends on its valley loop too, session 34)
+//   endAtMaxOperations, a Run that ran out of operations ends on its valley loop too, session 34;
+//   --end-handle-widen F: handleWiden, the band F times as wide beside a handle when no band holds a
+//   separating ring, 1 = off, session 35)
 //   (GS_PARTS_DIAG=1: per part, the mean energy on each ring off the boundary, and how many
 //   people's cuts pass the success criterion against the other people's. GS_PARTS_WHERE=1: per
 //   loop, where it ends: its points' signed ring off the representative person's boundary, + on
@@ -219,8 +221,8 @@ struct Tally
     int n = 0, ok = 0, points = 0;
 };
 
-/// GS_PARTS_ORACLE: one edge loop the Run's end found, where it came from ("own", "seeded" or
-/// "toward", then the stage: band, descent, salience, salience+descent, profile).
+/// GS_PARTS_ORACLE: one edge loop the Run's end found, where it came from ("own", "seeded",
+/// "toward" or "widened", then the stage: band, descent, salience, salience+descent, profile).
 struct Candidate
 {
     std::string stage;
@@ -301,6 +303,7 @@ int main(int argc, char **argv)
         else if (a == "--people") peopleOut = next();
         else if (a == "--variant") variant = next();
         else if (a == "--seeded-shrink") vlpArgs.seededShrink = std::stod(next());
+        else if (a == "--end-handle-widen") vlpArgs.handleWiden = std::stod(next());
         else if (a == "--no-toward-body") vlpArgs.towardBody = false;
         else if (a == "--end-max-ops") vlpArgs.endAtMaxOperations = std::stoi(next()) != 0;
         else if (a == "--valley-crease") vlpArgs.valley.creaseAngle = std::stod(next());
@@ -617,7 +620,7 @@ int main(int argc, char **argv)
                                     return chain.push_back({x, l});
                                 }
                                 if (!oracleOut) return;
-                                if (l.empty() && (x == "seeded" || x == "toward")) return (void)(origin = x);
+                                if (l.empty() && (x == "seeded" || x == "toward" || x == "widened")) return (void)(origin = x);
                                 if (x == "crossfrom") return (void)(crossFrom = l);
                                 if (x != "descent") last = x;
                                 if (l.size() >= 3)
@@ -733,8 +736,8 @@ int main(int argc, char **argv)
                             const double ref = chainRef;
                             const int rep = DeepestVertex(md.mesh, p);
                             const gs_parts::Score so = gs_parts::Measure(own.loop, p, md.h, md.h);
-                            std::fprintf(stderr, "CHAIN %d %d %s %d row=%d | snake %d L=%.1fh", id, p.index, side > 0 ? "in" : "out", ring,
-                                         int(sc.Success()), int(so.Success()), gs_parts::LoopLength(own.loop) / md.h);
+                            std::fprintf(stderr, "CHAIN %d %d %s %d row=%d unit=%.3fh | snake %d L=%.1fh", id, p.index, side > 0 ? "in" : "out", ring,
+                                         int(sc.Success()), hs / md.h, int(so.Success()), gs_parts::LoopLength(own.loop) / md.h);
                             std::vector<char> in;
                             for (const auto &c : chain) {
                                 const char *name = c.first.c_str() + 4; // without "end:"

@@ -150,7 +150,8 @@ public:
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
         /// Run's end finds and the stage that found it ("band", "descent", "salience",
         /// "profile", "across": the bend's candidates); an empty loop marks where the searches
-        /// from the seeded loop ("seeded") and TowardBody ("toward") begin, and "crossfrom" is
+        /// from the seeded loop ("seeded"), TowardBody ("toward") and in the wider band beside a
+        /// handle ("widened", PartBoundaryEnd::Param::handleWiden) begin, and "crossfrom" is
         /// the loop the bend across starts from. PartBoundaryEnd's stages record their loop (empty:
         /// none) as "end:descent" (each FinishFrom: the band and the descent, salience off),
         /// "end:salience", "end:seeded" (the seeded search and TowardBody) and "end:bend" (the
