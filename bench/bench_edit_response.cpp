@@ -17,9 +17,11 @@
 //                  mesh's faces (bunny00 as scanned, and subdivided to 1.2M: the ratio shows
 //                  what grows with the mesh rather than with the band). Session 33: with the
 //                  mesh's measures the crease filter reads taken once per mesh, as the hosts
-//                  do (SnakeSession::RunEndParam), not in the Run's end
+//                  do (SnakeSession::RunEndParam), not in the Run's end. arg 1: 1 = read as a mesh
+//                  with a handle (ValleyLoop::Param::planar 0 before PartBoundaryEnd::Measured:
+//                  the separation test of every loop found, LoopTopology; bunny00 has none)
 // BM_RunEndMeasures those measures (PartBoundaryEnd::Measured: SurfaceNoise::Level, the median
-//                  face angle), once per mesh and energy; arg as BM_ValleyLoop
+//                  face angle), once per mesh and energy; args as BM_ValleyLoop
 // BM_ValleyLoopSeeded the same end when the loop converged shorter than half its seeded loop
 //                  (PartBoundaryEnd::Param::seededShrink, session 25: a second search round the
 //                  seeded loop), on a tall bump on a sphere (icosphere 6, 81920 faces; its rim a
@@ -225,9 +227,28 @@ ValleyCase &Valley(int faces)
     return k;
 }
 
+/// The Run's end's parameters before the mesh's measures: with `handle`, as on a mesh with a
+/// handle (ValleyLoop::Param::planar 0, so that Measured does not read it as planar).
+PartBoundaryEnd<CMeshO>::Param HandleIn(bool handle)
+{
+    PartBoundaryEnd<CMeshO>::Param p;
+    if (handle) p.valley.planar = 0;
+    return p;
+}
+
+/// The Run's end's parameters on case k's mesh read as one with a handle, measured once.
+const PartBoundaryEnd<CMeshO>::Param &HandleParam(ValleyCase &k)
+{
+    static std::map<const ValleyCase *, PartBoundaryEnd<CMeshO>::Param> measured;
+    auto it = measured.find(&k);
+    if (it == measured.end()) it = measured.emplace(&k, PartBoundaryEnd<CMeshO>::Measured(k.c->Mesh(), HandleIn(true))).first;
+    return it->second;
+}
+
 void BM_ValleyLoop(benchmark::State &state)
 {
     ValleyCase &k = Valley(int(state.range(0)));
+    const PartBoundaryEnd<CMeshO>::Param par = state.range(1) ? HandleParam(k) : k.c->RunEndParam();
     auto *s = k.c->SelectedSnake();
     int replaced = 0;
     for (auto _ : state) {
@@ -235,7 +256,7 @@ void BM_ValleyLoop(benchmark::State &state)
         s->InitFromSamples(k.samples, true, k.unit);
         s->EndRun(SnakeStop::Converged); // as a Run that converged there
         state.ResumeTiming();
-        replaced += PartBoundaryEnd<CMeshO>::FinishRun(*s, FeatureEnergyType::PartBoundary, false, k.c->RunEndParam());
+        replaced += PartBoundaryEnd<CMeshO>::FinishRun(*s, FeatureEnergyType::PartBoundary, false, par);
     }
     state.counters["faces"] = k.c->Mesh().fn;
     state.counters["samples"] = double(k.samples.size());
@@ -248,7 +269,7 @@ void BM_RunEndMeasures(benchmark::State &state)
     ValleyCase &k = Valley(int(state.range(0)));
     double noise = 0;
     for (auto _ : state) {
-        const PartBoundaryEnd<CMeshO>::Param p = PartBoundaryEnd<CMeshO>::Measured(k.c->Mesh(), PartBoundaryEnd<CMeshO>::Param());
+        const PartBoundaryEnd<CMeshO>::Param p = PartBoundaryEnd<CMeshO>::Measured(k.c->Mesh(), HandleIn(state.range(1)));
         noise = p.valley.creaseFilter.noiseLevel;
         benchmark::DoNotOptimize(noise);
     }
@@ -442,8 +463,8 @@ BENCHMARK(BM_Prepare)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(
 BENCHMARK(BM_Click)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(40);
 BENCHMARK(BM_Build)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(5);
 BENCHMARK(BM_BuildCold)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK(BM_ValleyLoop)->Arg(0)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
-BENCHMARK(BM_RunEndMeasures)->Arg(0)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
+BENCHMARK(BM_ValleyLoop)->Args({0, 0})->Args({1200000, 0})->Args({0, 1})->Args({1200000, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
+BENCHMARK(BM_RunEndMeasures)->Args({0, 0})->Args({1200000, 0})->Args({0, 1})->Args({1200000, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(BM_ValleyLoopSeeded)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(BM_PartEndTowardBody)->Arg(0)->Arg(100000)->Arg(1200000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <unordered_map>
 #include <random>
 #include <string>
@@ -2603,6 +2604,99 @@ TEST(LoopTopology, PlanarOnlyWithoutAHandle)
     // the Run's end's measure of the mesh
     EXPECT_EQ(PartBoundaryEnd<CMeshO>::Measured(sphere, PartBoundaryEnd<CMeshO>::Param()).valley.planar, 1);
     EXPECT_EQ(PartBoundaryEnd<CMeshO>::Measured(torus, PartBoundaryEnd<CMeshO>::Param()).valley.planar, 0);
+}
+
+// The loops round the border of a set of faces, each as its vertices in order (a vertex where
+// the border meets itself is passed twice: no simple cycle).
+std::vector<std::vector<int>> BorderLoops(const CMeshO &m, const std::vector<char> &in)
+{
+    std::multimap<int, int> next; // a -> b along each edge with `in` on its left
+    for (size_t i = 0; i < m.face.size(); ++i) {
+        const CFaceO &f = m.face[i];
+        if (f.IsD() || !in[i]) continue;
+        for (int k = 0; k < 3; ++k) {
+            const CFaceO *g = f.cFFp(k);
+            if (g != &f && !in[vcg::tri::Index(m, g)])
+                next.insert({int(vcg::tri::Index(m, f.cV(k))), int(vcg::tri::Index(m, f.cV((k + 1) % 3)))});
+        }
+    }
+    std::vector<std::vector<int>> loops;
+    while (!next.empty()) {
+        std::vector<int> l(1, next.begin()->first);
+        for (auto it = next.begin(); it != next.end(); it = next.find(l.back())) {
+            const int b = it->second;
+            next.erase(it);
+            if (b == l[0]) break;
+            l.push_back(b);
+        }
+        loops.push_back(l);
+    }
+    return loops;
+}
+
+// LoopTopology's test by homology (made once per mesh on a surface with a handle, session 35)
+// answers as the flood (LoopTopology::SimpleSeparating) on every loop, the closed path across a
+// non-separating loop too: the borders of balls of faces growing on a torus (contractible
+// rings, then the two meridians round the tube once the ball wraps round it, then rings round
+// the hole), the torus with holes (loops through a border vertex: the flood answers), a torus
+// joined to a sphere, a sphere and the benchmark's octopus. The generators: 2 g + b - 1 (g the
+// genus, b the boundary loops).
+TEST(LoopTopology, HomologyAnswersAsTheFlood)
+{
+    typedef LoopTopology<CMeshO> LT;
+    CMeshO torus, holes, sphere, both;
+    vcg::tri::Torus(torus, 1.0f, 0.3f, 48, 16);
+    vcg::tri::Torus(holes, 1.0f, 0.3f, 48, 16);
+    for (size_t i = 5; i < holes.face.size(); i += 211) vcg::tri::Allocator<CMeshO>::DeleteFace(holes, holes.face[i]);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(holes);
+    vcg::tri::Sphere(sphere, 3);
+    vcg::tri::Sphere(both, 2);
+    CMeshO ring;
+    vcg::tri::Torus(ring, 1.0f, 0.3f, 24, 12);
+    for (auto &v : ring.vert) v.P() += vcg::Point3f(4, 0, 0);
+    vcg::tri::Append<CMeshO, CMeshO>::Mesh(both, ring);
+    gs_parts::Model octopus; // the benchmark's (genus 1)
+    ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 121, octopus)) << GS_SEGMENTATION_DIR;
+    int separating = 0, not_ = 0, tested = 0;
+    for (CMeshO *m : {&torus, &holes, &sphere, &both, &octopus.mesh}) {
+        gs_test::EnableSnakeAdjacency(*m);
+        const LT topo(*m);
+        ASSERT_GE(topo.Generators(), 0);
+        const int nf = int(m->face.size());
+        for (int seed = 0; seed < nf; seed += nf / 7) {
+            // a ball of faces round face `seed`, one ring of faces more at every step
+            std::vector<char> in(nf, 0);
+            std::vector<int> front(1, seed);
+            in[seed] = 1;
+            for (int step = 0; step < 60 && !front.empty(); ++step) {
+                for (const auto &l : BorderLoops(*m, in)) {
+                    std::vector<std::pair<int, int>> a, b;
+                    const bool flood = LT::SimpleSeparating(*m, l, &a);
+                    EXPECT_EQ(topo.Separating(*m, l, &b), flood);
+                    std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
+                    EXPECT_EQ(a, b);
+                    if (LT::Simple(l)) (flood ? separating : not_)++;
+                    ++tested;
+                }
+                std::vector<int> next;
+                for (int f : front)
+                    for (int k = 0; k < 3; ++k) {
+                        const int g = int(vcg::tri::Index(*m, m->face[f].cFFp(k)));
+                        if (!in[g]) in[g] = 1, next.push_back(g);
+                    }
+                front.swap(next);
+            }
+        }
+    }
+    std::printf("%d loops, simple: %d separating, %d not\n", tested, separating, not_);
+    EXPECT_GT(separating, 100);
+    EXPECT_GT(not_, 20);
+    EXPECT_EQ(LT(torus).Generators(), 2);
+    EXPECT_EQ(LT(sphere).Generators(), 0);
+    EXPECT_EQ(LT(both).Generators(), 2);
+    EXPECT_EQ(LT(octopus.mesh).Generators(), 2);
+    // every hole apart from one a generator more (the torus's deleted faces are apart)
+    EXPECT_EQ(LT(holes).Generators(), 2 + int((torus.face.size() - 5 + 210) / 211) - 1);
 }
 
 // The benchmark's octopus (segmentation id 121, genus 1: a tunnel of a few faces beside tentacle

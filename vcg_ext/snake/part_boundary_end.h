@@ -15,6 +15,7 @@
 // this class is the choice of where to search and which loop to keep.
 
 #include <functional>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -139,7 +140,7 @@ public:
 
     /// par with the measures of mesh m that the crease filter reads filled in (those still < 0:
     /// CreaseNormals::Measured, the noise level and the median face angle), and whether the
-    /// surface has a handle (ValleyLoop::Param::planar). They are the mesh's,
+    /// surface has a handle (ValleyLoop::Param::planar; then its LoopTopology, ::topology). They are the mesh's,
     /// not the Run's (~20 ms on bunny00's 70k faces, session 33): a host takes them once per
     /// mesh (SnakeSession::RunEndParam, bench/eval/gs_parts) and passes them to every FinishRun
     /// on it; FinishRun takes those still missing itself.
@@ -147,6 +148,8 @@ public:
     {
         par.valley.creaseFilter = CreaseNormals<MeshType>::Measured(m, par.valley.creaseFilter);
         if (par.valley.separating && par.valley.planar < 0) par.valley.planar = LoopTopology<MeshType>::Planar(m) ? 1 : 0;
+        if (par.valley.separating && par.valley.planar == 0 && !par.valley.topology)
+            par.valley.topology = std::make_shared<const LoopTopology<MeshType>>(m);
         return par;
     }
 

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <unordered_map>
 #include <vector>
@@ -147,6 +148,10 @@ public:
         /// separates, and `separating` needs no flood (on a 1.2M-face mesh the floods at a Run's
         /// end cost about as much as the rest of it). -1: not measured, the flood runs.
         int planar = -1;
+        /// The surface's closed paths (LoopTopology, made once per mesh by PartBoundaryEnd::
+        /// Measured when it has a handle): `separating` then tests a loop by homology, in the
+        /// loop's length, instead of flooding its smaller side (the same answers). Null: the flood.
+        std::shared_ptr<const LoopTopology<MeshType>> topology;
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_ORACLE): called with every edge loop the
         /// Run's end finds and the stage that found it ("band", "descent", "salience",
         /// "profile", "across": the bend's candidates); an empty loop marks where the searches
@@ -366,7 +371,7 @@ public:
         std::vector<std::pair<int, int>> across;
         typedef LoopTopology<MeshType> LT;
         auto isBoundary = [&](const std::vector<int> &l, std::vector<std::pair<int, int>> *x) {
-            return par.planar > 0 ? LT::Simple(l) : LT::SimpleSeparating(m, l, x);
+            return par.planar > 0 ? LT::Simple(l) : par.topology ? par.topology->Separating(m, l, x) : LT::SimpleSeparating(m, l, x);
         };
         if (par.separating && !best.empty() && !isBoundary(best, &across)) {
             // a separating loop meets every closed path evenly: the one across the loop found
