@@ -1298,7 +1298,7 @@ TEST(ValleyLoop, CostPartsPriceALoopAsTheSearchDoes)
 }
 
 // The filtered crease term gives an edge next to a zero-area face no crease, as the unfiltered
-// one does (session 32's last fix, ValleyLoop's ConcaveAngle with CreaseNormals::Filtered's
+// one does (session 32's last fix, EdgeConcavity::Angle with CreaseNormals::Filtered's
 // normals): the zero-area face keeps a zero filtered normal, and before the fix the edge was
 // priced acos(0) = 90 degrees concave whenever the sign test ((n1 - n0) . (b1 - b0) < 0) tipped
 // with the neighbour's filtered normal. A flat grid whose cell (a, b, c) is flattened to zero

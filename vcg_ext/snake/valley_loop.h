@@ -32,6 +32,7 @@
 #include <vcg/complex/complex.h>
 
 #include <vcg_ext/snake/crease_normals.h>
+#include <vcg_ext/snake/edge_concavity.h>
 #include <vcg_ext/snake/error.h>
 #include <vcg_ext/snake/loop_topology.h>
 #include <vcg_ext/snake/part_salience.h>
@@ -280,7 +281,7 @@ public:
             for (int fi : faces) bandFaces.push_back(&m.face[fi]);
         const FaceNormals fn = CreaseNormals<MeshType>::Filtered(m, bandFaces, par.creaseFilter);
         for (const auto &ef : edgeFaces) {
-            const double x = ConcaveAngle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.signOnly);
+            const double x = EdgeConcavity<MeshType>::Angle(m, ef.second.first, ef.second.second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.signOnly);
             bend[ef.first] = x;
             if (x > 0) concave.push_back(x);
         }
@@ -457,7 +458,7 @@ public:
             const int a = vl[i], b = vl[(i + 1) % vl.size()];
             const VertexType *va = &m.vert[a], *vb = &m.vert[b];
             const double len = vcg::Distance(va->cP(), vb->cP());
-            const double c = ref > 0 ? std::min(1.0, ConcaveAngle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.signOnly) / ref) : 0.0;
+            const double c = ref > 0 ? std::min(1.0, EdgeConcavity<MeshType>::Angle(m, ef[i].first, ef[i].second, par.concavityRings, par.flatTolerance, fn, par.creaseFilter.signOnly) / ref) : 0.0;
             eSum += len * 0.5 * (double(energy[a]) + double(energy[b]));
             lSum += len;
             cSum += len * (1 - c);
@@ -504,91 +505,6 @@ public:
 
     /// Unit face normals by face (CreaseNormals::Filtered); empty: the faces' own.
     typedef typename CreaseNormals<MeshType>::Normals FaceNormals;
-
-private:
-    /// ConcaveAngle with the normals of fn (CreaseNormals::Filtered) when it has the faces: the angle
-    /// between them where they turn towards each other across the edge ((n1 - n0) . (b1 - b0)
-    /// < 0, b the faces' barycentres), 0 otherwise; the other cases below when fn is empty.
-    static double ConcaveAngle(const MeshType &m, const FaceType *f0, const FaceType *f1, int rings, double flat,
-                               const FaceNormals &fn, bool signOnly)
-    {
-        if (fn.empty()) return ConcaveAngle(m, f0, f1, rings, flat);
-        if (!f0 || !f1) return 0;
-        const auto i0 = fn.find(f0), i1 = fn.find(f1);
-        if (i0 == fn.end() || i1 == fn.end()) return ConcaveAngle(m, f0, f1, rings, flat);
-        const vcg::Point3d &n0 = i0->second, &n1 = i1->second;
-        if (!(n0.Norm() > 0 && n1.Norm() > 0)) return 0; // a zero-area face keeps no normal: no crease, as unfiltered
-        const vcg::Point3d b0 = vcg::Point3d::Construct(vcg::Barycenter(*f0)), b1 = vcg::Point3d::Construct(vcg::Barycenter(*f1));
-        if (!((n1 - n0) * (b1 - b0) < 0)) return 0;
-        if (signOnly) return ConcaveAngle(f0, f1, flat);
-        return std::acos(std::max(-1.0, std::min(1.0, n0 * n1)));
-    }
-
-    /// ConcaveAngle where the surface is concave across the edge at a scale as well: with
-    /// rings > 0, 0 unless f0's and f1's normals, each averaged by area over the faces within
-    /// `rings` rings (sharing a vertex, repeatedly), turn towards each other across the edge
-    /// ((n1 - n0) . (b1 - b0) < 0, b the faces' barycentres: the sign of the normal curvature
-    /// across it).
-    static double ConcaveAngle(const MeshType &m, const FaceType *f0, const FaceType *f1, int rings, double flat)
-    {
-        if (rings <= 0) return ConcaveAngle(f0, f1, flat);
-        if (!f0 || !f1) return 0;
-        vcg::Point3d n0 = SmoothNormal(m, f0, rings), n1 = SmoothNormal(m, f1, rings);
-        if (!(n0.Norm() > 0 && n1.Norm() > 0)) return 0;
-        n0.Normalize(), n1.Normalize();
-        const vcg::Point3d b0 = vcg::Point3d::Construct(vcg::Barycenter(*f0)), b1 = vcg::Point3d::Construct(vcg::Barycenter(*f1));
-        if (!((n1 - n0) * (b1 - b0) < 0)) return 0;
-        return ConcaveAngle(f0, f1, flat);
-    }
-
-    /// Sum of the (area-weighted) normals of the faces within `rings` rings of f (VF adjacency).
-    static vcg::Point3d SmoothNormal(const MeshType &m, const FaceType *f, int rings)
-    {
-        std::vector<const FaceType *> seen{f}, front{f}, next;
-        for (int r = 0; r < rings; ++r) {
-            next.clear();
-            for (const FaceType *g : front)
-                for (int k = 0; k < 3; ++k)
-                    PartSalience<MeshType>::ForFaces(m, int(g->cV(k) - &m.vert[0]), [&](const FaceType *h, int) {
-                        if (std::find(seen.begin(), seen.end(), h) == seen.end()) seen.push_back(h), next.push_back(h);
-                    });
-            front.swap(next);
-        }
-        vcg::Point3d n(0, 0, 0);
-        for (const FaceType *g : seen) n += vcg::Point3d::Construct(vcg::TriangleNormal(*g));
-        return n;
-    }
-
-    /// The dihedral angle at the edge shared by f0 and f1 when the surface bends inwards there
-    /// (f1's third vertex above f0's plane, outward normals), 0 when it is convex or flat or
-    /// the edge has one face, or when the apex lies within `flat` times the scalar's rounding of
-    /// f0's plane (Param::flatTolerance). (Not vcg::face::DihedralAngleRad: that one is in the
-    /// mesh's scalar, float for CMeshO, and needs FF adjacency.)
-    static double ConcaveAngle(const FaceType *f0, const FaceType *f1, double flat)
-    {
-        if (!f0 || !f1) return 0;
-        vcg::Point3d n0 = vcg::Point3d::Construct(vcg::TriangleNormal(*f0));
-        vcg::Point3d n1 = vcg::Point3d::Construct(vcg::TriangleNormal(*f1));
-        if (!(n0.Norm() > 0 && n1.Norm() > 0)) return 0;
-        n0.Normalize(), n1.Normalize();
-        for (int k = 0; k < 3; ++k) {
-            const VertexType *c = f1->cV(k);
-            if (c == f0->cV(0) || c == f0->cV(1) || c == f0->cV(2)) continue;
-            const double up = n0 * (vcg::Point3d::Construct(c->cP()) - vcg::Point3d::Construct(f0->cP(0)));
-            double tol = 0;
-            if (flat > 0) {
-                // the rounding of a coordinate of this magnitude in the mesh's scalar
-                double mag = 0;
-                for (int j = 0; j < 3; ++j)
-                    for (int d = 0; d < 3; ++d) mag = std::max(mag, std::abs(double(f0->cP(j)[d])));
-                for (int d = 0; d < 3; ++d) mag = std::max(mag, std::abs(double(c->cP()[d])));
-                typedef typename MeshType::ScalarType S;
-                tol = flat * double(std::numeric_limits<S>::epsilon()) * mag;
-            }
-            return up > tol ? std::acos(std::max(-1.0, std::min(1.0, n0 * n1))) : 0.0;
-        }
-        return 0;
-    }
 
 };
 
