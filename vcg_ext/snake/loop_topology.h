@@ -193,7 +193,7 @@ public:
                 stack.pop_back();
                 ++F;
                 for (int k = 0; k < 3; ++k) {
-                    const int a = index(m, f->cV(k)), b = index(m, f->cV((k + 1) % 3));
+                    const int a = int(tri::Index(m, f->cV(k))), b = int(tri::Index(m, f->cV((k + 1) % 3)));
                     used[a] = 1;
                     const FaceType *g = f->cFFp(k);
                     if (g == f) { // a border edge: its vertices in one boundary loop
@@ -225,8 +225,8 @@ private:
     std::vector<std::pair<int, int>> generator;  // the two faces of each left edge
     std::unordered_map<int, int> left;   // face edge -> its generator
 
-    int fi(const FaceType *f) const { return int(f - &mesh->face[0]); }
-    int vi(const VertexType *v) const { return int(v - &mesh->vert[0]); }
+    int fi(const FaceType *f) const { return int(tri::Index(*mesh, f)); }
+    int vi(const VertexType *v) const { return int(tri::Index(*mesh, v)); }
     bool Below(int f, const FaceType *top) const { return tin[fi(top)] <= tin[f] && tin[f] < tout[fi(top)]; }
 
     /// Every edge between two faces that see each other across it (or a border), every
@@ -285,7 +285,7 @@ private:
         std::vector<const FaceType *> start;
         ForFaces(m, l[0], [&](const FaceType *f) {
             for (int k = 0; k < 3; ++k)
-                if (index(m, f->cV(k)) == l[1]) start.push_back(f);
+                if (int(tri::Index(m, f->cV(k))) == l[1]) start.push_back(f);
         });
         if (start.size() != 2) return false; // no edge, a border or a non-manifold edge
         std::unordered_map<const FaceType *, int> side;
@@ -298,13 +298,13 @@ private:
                 if (head[s] == queue[s].size()) return true; // one side ended: it is cut off
                 const FaceType *f = queue[s][head[s]++];
                 for (int k = 0; k < 3; ++k) {
-                    const int a = index(m, f->cV(k)), b = index(m, f->cV((k + 1) % 3));
+                    const int a = int(tri::Index(m, f->cV(k))), b = int(tri::Index(m, f->cV((k + 1) % 3)));
                     if (edges.count(key(a, b))) continue;
                     const FaceType *met = nullptr;
                     ForFaces(m, a, [&](const FaceType *g) {
                         if (g == f || met) return;
                         bool hasB = false;
-                        for (int j = 0; j < 3; ++j) hasB = hasB || index(m, g->cV(j)) == b;
+                        for (int j = 0; j < 3; ++j) hasB = hasB || int(tri::Index(m, g->cV(j))) == b;
                         if (!hasB) return;
                         const auto it = side.find(g);
                         if (it == side.end()) side[g] = s, from[g] = {f, key(a, b)}, queue[s].push_back(g);
@@ -329,7 +329,6 @@ private:
         }
     }
 
-    static int index(const MeshType &m, const VertexType *v) { return int(v - &m.vert[0]); }
     template <class Fn>
     static void ForFaces(const MeshType &m, int v, Fn fn)
     {

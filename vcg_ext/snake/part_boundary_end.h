@@ -143,12 +143,14 @@ public:
     /// surface has a handle (ValleyLoop::Param::planar; then its LoopTopology, ::topology). They are the mesh's,
     /// not the Run's (~20 ms on bunny00's 70k faces, session 33): a host takes them once per
     /// mesh (SnakeSession::RunEndParam, bench/eval/gs_parts) and passes them to every FinishRun
-    /// on it; FinishRun takes those still missing itself.
-    static Param Measured(const MeshType &m, Param par)
+    /// on it; FinishRun takes those still missing itself, all but the LoopTopology (`topology`
+    /// false): it only makes the separation test faster, and building it (~1 s on 1.2M faces)
+    /// pays only over the many Runs of one mesh; without it the flood gives the same answers.
+    static Param Measured(const MeshType &m, Param par, bool topology = true)
     {
         par.valley.creaseFilter = CreaseNormals<MeshType>::Measured(m, par.valley.creaseFilter);
         if (par.valley.separating && par.valley.planar < 0) par.valley.planar = LoopTopology<MeshType>::Planar(m) ? 1 : 0;
-        if (par.valley.separating && par.valley.planar == 0 && !par.valley.topology)
+        if (topology && par.valley.separating && par.valley.planar == 0 && !par.valley.topology)
             par.valley.topology = std::make_shared<const LoopTopology<MeshType>>(m);
         return par;
     }
@@ -171,7 +173,7 @@ public:
         const double h = s.LengthScale();
         // the crease filter's measures of the mesh (its noise, its median angle), for every
         // search below: the host's (Measured, once per mesh), else taken here
-        const Param par = Measured(m, parIn);
+        const Param par = Measured(m, parIn, false);
         const Seeded own = Seeded::Of(s); // the loop where the Run ended
         double ref = -1, cost = 0;
         std::vector<int> vl = FinishFrom(m, own.loop, own.faces, energy, h, par, ref, cost);
