@@ -333,6 +333,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-iterations") vlpArgs.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlpArgs.crossBend = std::stod(next());
         else if (a == "--cross-price") vlpArgs.crossPrice = std::stod(next());
+        else if (a == "--cross-total") vlpArgs.crossTotal = std::stod(next());
         else if (a == "--cross-dominant") vlpArgs.crossDominant = std::stoi(next()) != 0;
         else if (a == "--cross-convex") vlpArgs.crossConvex = std::stoi(next()) != 0;
         else if (a == "--cross-steps") vlpArgs.crossSteps = std::stoi(next());
