@@ -2778,3 +2778,46 @@ TEST(PartBoundaryEnd, WidensTheBandBesideAHandleWhenNoRingSeparates)
     EXPECT_TRUE(replaced[1]);
     EXPECT_TRUE(score[1].Success());
 }
+
+// The benchmark's hand (issue 33, session 36): finger 1 seeded 2 rings outside (gs_parts part 1
+// outside 2). The descent ends on the people's ring round the finger's base (28.1 h, 1.00/0.99,
+// bend across 0.60); the bend rule then takes the loop round the level loop towards the body
+// (31.8 h, 0.87/0.88): it bends more (0.79) and is 1 % cheaper per length, but only because it is
+// longer, 12 % dearer in all. PartBoundaryEnd::Param::crossTotal (1.1) keeps a loop across no
+// dearer in all than 1.1 times the loop's: the ring at the base stays.
+TEST(PartBoundaryEnd, KeepsTheLoopWhenTheOneAcrossCostsMoreInAll)
+{
+    gs_parts::Model md;
+    ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 181, md)) << GS_SEGMENTATION_DIR;
+    CMeshO &m = md.mesh;
+    const gs_parts::Part *part = nullptr;
+    for (const auto &p : md.parts)
+        if (p.index == 1) part = &p;
+    ASSERT_TRUE(part);
+    auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
+    const std::vector<int> seeds = gs_parts::Seeds(m, *part, 2, -1, 8);
+    ASSERT_GE(seeds.size(), 3u);
+    typedef PartBoundaryEnd<CMeshO> End;
+    const End::Param measured = End::Measured(m, End::Param());
+    gs_parts::Score score[2];
+    double len[2];
+    for (int total : {0, 1}) {
+        End::Param par = measured;
+        if (!total) par.crossTotal = 0;
+        SnakeParams sp;
+        sp.balloon = 0; // as bench/eval/gs_parts
+        Snake s(surf, sp);
+        s.InitFromSeeds(seeds, true);
+        const auto seeded = End::Seeded::Of(s);
+        s.Run(400);
+        ASSERT_EQ(s.Stats().stop, SnakeStop::Converged);
+        EXPECT_TRUE(End::FinishRun(s, FeatureEnergyType::PartBoundary, false, par, &seeded));
+        score[total] = gs_parts::Measure(s.PolylinePositions(), *part, md.h, md.h);
+        len[total] = gs_parts::LoopLength(s.PolylinePositions()) / md.h;
+        std::printf("hand finger 1 seeded outside, crossTotal %d: %.1f h, %.2f/%.2f\n", total, len[total], score[total].capture,
+                    score[total].coverage);
+    }
+    EXPECT_FALSE(score[0].Success()); // the mechanism: the longer loop towards the body
+    EXPECT_GT(len[0], len[1]);
+    EXPECT_TRUE(score[1].Success());
+}

@@ -13,9 +13,10 @@
 //            [--salience-width E] [--salience-width-reach R] [--salience-width-radius F]
 //            [--salience-width-samples N] [--sdf-rays N]
 //            [--cross-bend F] [--cross-gain G] [--cross-price P] [--cross-steps N] [--cross-step S]
-//            [--cross-dist D] [--cross-dirs 1|2|3] [--cross-dominant 0|1] [--cross-convex 0|1]
+//            [--cross-dist D] [--cross-dirs 1|2|3] [--cross-dominant 0|1] [--cross-convex 0|1] [--cross-total T]
 //   (PartBoundaryEnd::Param's crossBend ... crossDirs, the bend across the loop at the Run's end,
-//   session 28; --cross-bend 0 turns it off)
+//   session 28; --cross-bend 0 turns it off; --cross-total T: crossTotal, a loop across at most T
+//   times the loop's whole cost, session 36, 0 = off)
 //   (--salience-width E: PartSalience::Param::widthExponent, the shape-diameter ratio's
 //   exponent, 0 = off; the others its widthReach, widthRadius, widthSamples and sdf.rays)
 //   (--no-valley-loop: the snake's own loop, without the cheapest edge loop round it that every
@@ -333,6 +334,7 @@ int main(int argc, char **argv)
         else if (a == "--valley-iterations") vlpArgs.valley.iterations = std::stoi(next());
         else if (a == "--cross-bend") vlpArgs.crossBend = std::stod(next());
         else if (a == "--cross-price") vlpArgs.crossPrice = std::stod(next());
+        else if (a == "--cross-total") vlpArgs.crossTotal = std::stod(next());
         else if (a == "--cross-dominant") vlpArgs.crossDominant = std::stoi(next()) != 0;
         else if (a == "--cross-convex") vlpArgs.crossConvex = std::stoi(next()) != 0;
         else if (a == "--cross-steps") vlpArgs.crossSteps = std::stoi(next());

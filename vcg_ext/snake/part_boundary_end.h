@@ -90,6 +90,14 @@ public:
         /// own choice among them). On bench/eval/gs_parts (--energy part --rings 2,3) against
         /// 171/220: 172 (+1 -0: human 3 part 1 inside 2). false: off.
         bool crossConvex = true;
+        /// Session 36: a loop across costs at most crossTotal times the loop's whole cost, not
+        /// only per length: towards the body a loop grows, and a longer one may be cheaper per
+        /// length and bend more while dearer in all (hand 181 finger 1 seeded outside 2: 31.8 h
+        /// against the people's 28.1 h ring, 0.99x per length, 1.12x in all). On bench/eval/
+        /// gs_parts (--energy part --rings 2,3; success_h0 on the variants) against 173/220: 1.1
+        /// 174 (+1 -0: that row), graded 170 (+1 -0: the same row); 1.05 171 (+1 -3: the bend's
+        /// own gains, hand 181 part 0 inside, 1.06x in all, and human 3 part 1 inside 2). 0: off.
+        double crossTotal = 1.1;
         /// Part salience after the descent (part_salience.h); its exponent 0 turns it off.
         typename PartSalience<MeshType>::Param salience;
         /// Diagnostics (bench/eval/gs_parts GS_PARTS_CHAIN, session 32): called once per FinishRun
@@ -356,6 +364,7 @@ public:
                 if (cand.size() < 3) continue;
                 const double L = VL::LengthOf(m, cand);
                 if (!(L > 0.5 * L0) || L > par.salience.growth * L0 || !(c / L <= par.crossPrice * p0)) continue;
+                if (par.crossTotal > 0 && !(c <= par.crossTotal * p0 * L0)) continue;
                 const double b = LB::Bend(m, cand, h, par.crossDist, &ok);
                 if (!ok) continue;
                 cands.push_back(std::move(cand));
