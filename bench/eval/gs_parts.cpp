@@ -80,7 +80,8 @@
 //   chosen, capture/coverage, cost per length and salience score (without and with the width term); a
 //   summary on stderr: how many failed loops had a successful candidate (the choice's ceiling);
 //   session 29's support columns: times found, mutual captures among the row's loops,
-//   GS_PARTS_SUPPORT=R,S sets the capture's radius in h and share (1,0.8). With GS_PARTS_MODE=1
+//   GS_PARTS_SUPPORT=R,S sets the capture's radius in h and share (1,0.8); session 36's `verts`,
+//   the loop's vertices sorted (';'), names one loop across a part's four seedings. With GS_PARTS_MODE=1
 //   too, a MODE line per loop: the valley loop searched again from perturbed guides and
 //   settings, whether the loop found most often succeeds, against the chosen one.)
 //   (Session 30, noise: with GS_PARTS_DIAG=1 a CONCAVITY line per mesh, the part energy's share of
@@ -387,7 +388,7 @@ int main(int argc, char **argv)
     if (oracleOut) {
         oracle.open(oracleOut);
         oracle << "energy,id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
-                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body,mult,sup,sup_m,sup_soft,sup_own,sup_seed,bend,xfrom\n";
+                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body,mult,sup,sup_m,sup_soft,sup_own,sup_seed,bend,xfrom,verts\n";
     }
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
     const auto t0 = std::chrono::steady_clock::now();
@@ -810,7 +811,7 @@ int main(int argc, char **argv)
                                        << int(ts.Success()) << ',' << ts.capture << ',' << ts.coverage << ','
                                        << gs_parts::LoopLength(pl) / h << ',' << rest << '\n';
                             };
-                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,,,,,,,,,");
+                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,,,,,,,,,,");
                             bool anyOk = false;
                             int chosenIdx = -1;
                             std::vector<char> in;
@@ -903,7 +904,10 @@ int main(int argc, char **argv)
                                               dOwn, agree, std::sqrt(rms) / h, turn, eS[0] / nS[0], eS[1] / std::max(1.0, nS[1]),
                                               eS[2] / std::max(1.0, nS[2]), mult[ci], sup, supM, soft, supOwn, supSeed,
                                               bok ? std::to_string(bend).c_str() : "", int(k1 == k2));
-                                row(ci + 1, uniq[ci].stage, chosen, pl, ts, rest);
+                                // the loop's vertices (sorted): the same loop across a part's seedings
+                                std::string verts;
+                                for (int v : k1) verts += (verts.empty() ? "" : ";") + std::to_string(v);
+                                row(ci + 1, uniq[ci].stage, chosen, pl, ts, std::string(rest) + "," + verts);
                             }
                             if (std::getenv("GS_PARTS_MODE")) {
                                 // session 29, a diagnostic: the valley loop searched again from perturbed
