@@ -7,9 +7,10 @@
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
 //            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--valley-crings K] [--valley-flat K] [--part-flat K] [--out FILE.csv]
-//            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B]
+//            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B] [--salience-dominant P]
 //   (the width profile's PartProfile::Param slope, minTube and PartSalience::Param profilePrice,
-//   profileBand; --profile-slope 0 turns it off)
+//   profileBand; --profile-slope 0 turns it off; --salience-dominant P: PartSalience::Param::
+//   dominantPrice, session 36, 0 = off)
 //            [--salience-width E] [--salience-width-reach R] [--salience-width-radius F]
 //            [--salience-width-samples N] [--sdf-rays N]
 //            [--cross-bend F] [--cross-gain G] [--cross-price P] [--cross-steps N] [--cross-step S]
@@ -348,6 +349,7 @@ int main(int argc, char **argv)
         else if (a == "--profile-slope") vlpArgs.salience.profile.slope = std::stod(next());
         else if (a == "--profile-tube") vlpArgs.salience.profile.minTube = std::stod(next());
         else if (a == "--profile-price") vlpArgs.salience.profilePrice = std::stod(next());
+        else if (a == "--salience-dominant") vlpArgs.salience.dominantPrice = std::stod(next());
         else if (a == "--profile-band") vlpArgs.salience.profileBand = std::stod(next());
         else if (a == "--salience-width") vlpArgs.salience.widthExponent = std::stod(next());
         else if (a == "--salience-width-reach") vlpArgs.salience.widthReach = std::stod(next());
