@@ -58,7 +58,13 @@ public:
         /// and Singh 1997) -- replaces it when it costs at most dominantPrice x the best's per
         /// length: the score trades the two against the valley's depth, and a loop that cuts a
         /// larger part off with a shorter cut lies on the part's neck, where the loop farther up
-        /// the part is only a little deeper per length. 0: off.
+        /// the part is only a little deeper per length. Within the band the descent searched too
+        /// (it chose there by total cost, not by the part). On bench/eval/gs_parts (--energy part
+        /// --rings 2,3) against 173/220: 175 (+2 -0: fish 221 part 3 inside 2 and 3, 0.77/0.57 ->
+        /// 0.97/0.96, no other row moves; graded 169 -> 171, the same two rows; noise and CAD-like
+        /// no row moves). Replayed on the recorded candidates (GS_PARTS_ORACLE): margin 0.95 with
+        /// prices 1.1-1.2 +2 -0; no margin on the length at 1.05-1.1: armadillo 281 parts 5 and 7
+        /// lost (candidates 1.5 % shorter round a part 5 % larger). 0: off.
         double dominantPrice = 1.15;
         /// The part's side is at most this share of the mesh's area: a loop that halves the
         /// mesh (a waist) cuts off no part (without it the generated waist with edge lengths
