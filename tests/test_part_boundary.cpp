@@ -1226,6 +1226,67 @@ TEST(PartSalience, PartAreaStopsWhereTheLargerSideIsNoPart)
     EXPECT_EQ(a.ended.size(), 1u);
 }
 
+// Part salience's dominance (PartSalience::Param::dominantPrice, session 36): a bulb (radius 0.5)
+// on a neck (radius 0.45, z 1.5-1.7) on a wide body, the loop round the bulb at z = 1.9, 1 per
+// length; a guide into the body reaches a ring of the neck, 10 % shorter round a part 30-60 %
+// larger, at 1.10 per length (every other ring 2). Its score, 1.10 x (0.9 / sqrt(1.3))^0.5 = 0.97
+// of the loop's, is not below the margin (0.95): salience alone keeps the loop, the dominance takes
+// a ring of the neck, and not when it costs more than dominantPrice x the loop's per length.
+TEST(PartSalience, TakesAShorterCutRoundALargerPart)
+{
+    CMeshO m;
+    const double step = 0.1, h = 0.1;
+    gs_test::MakeRevolvedProfile(m,
+                                 {{0.0, 3.0, 0},
+                                  {0.5, 2.0, 0},  // the bulb's tip
+                                  {0.5, 1.8, 0},  // the bulb
+                                  {0.45, 1.7, 1}, // into the neck
+                                  {0.45, 1.5, 0}, // the neck
+                                  {2.0, 1.5, 0},  // the body's top
+                                  {2.0, 0.0, 0},
+                                  {0.0, 0.0, 0}},
+                                 48, step, 0.45, 0);
+    typedef vcg::tri::PartSalience<CMeshO> PS;
+    auto rho = [&](int v) { return std::hypot(double(m.vert[v].cP()[0]), double(m.vert[v].cP()[1])); };
+    auto ringAt = [&](double r, double z) { // the ring of radius r at height z, sorted
+        std::vector<int> l;
+        for (int v = 0; v < int(m.vert.size()); ++v)
+            if (std::fabs(rho(v) - r) < 1e-4 && std::fabs(m.vert[v].cP()[2] - z) < 1e-4) l.push_back(v);
+        return l;
+    };
+    const std::vector<int> loop = ringAt(0.5, 1.9);
+    const std::vector<std::vector<int>> neck = {ringAt(0.45, 1.7), ringAt(0.45, 1.6), ringAt(0.45, 1.5)};
+    ASSERT_EQ(loop.size(), 48u);
+    for (const auto &r : neck) ASSERT_EQ(r.size(), 48u);
+    auto onNeck = [&](const std::vector<int> &l) { return std::find(neck.begin(), neck.end(), l) != neck.end(); };
+    // a candidate: the ring nearest the guide's mean (rho, z), the neck's at 1.10 per length
+    auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &, double &c, bool) {
+        double r = 0, z = 0;
+        for (const auto &p : guide) r += std::hypot(p[0], p[1]) / guide.size(), z += p[2] / guide.size();
+        int best = -1;
+        double d = 1e30;
+        for (int v = 0; v < int(m.vert.size()); ++v)
+            if (rho(v) > 1e-9 && std::hypot(rho(v) - r, m.vert[v].cP()[2] - z) < d) d = std::hypot(rho(v) - r, m.vert[v].cP()[2] - z), best = v;
+        const std::vector<int> ring = ringAt(rho(best), m.vert[best].cP()[2]);
+        c = (onNeck(ring) ? 1.10 : 2.0) * PS::Length(m, ring);
+        return ring;
+    };
+    auto inBand = [](const vcg::Point3d &) { return false; };
+    PS::Param par;
+    par.widthExponent = 0; // the score's own factors alone
+    const double cost = PS::Length(m, loop);
+    auto chosen = [&]() {
+        std::vector<int> got = PS::Choose(m, loop, cost, h, par, find, inBand);
+        std::sort(got.begin(), got.end());
+        return got;
+    };
+    EXPECT_TRUE(onNeck(chosen()));
+    par.dominantPrice = 0; // off: salience's score keeps the loop
+    EXPECT_EQ(chosen(), loop);
+    par.dominantPrice = 1.05; // dearer per length than that
+    EXPECT_EQ(chosen(), loop);
+}
+
 // A short part whose top lies within the valley loop's band (2.5 length units) of its base: a low
 // bump 14 edges round (a fourleg's stubby leg, an ant's foot). The band round a loop on its rim
 // covers the top and is no ring: its cheapest "loop" circles the top's middle (6.4 edges long

@@ -7,9 +7,10 @@
 //            [--balloon B] [--alpha A] [--beta B] [--ext W] [--smoothing K] [--capture C]
 //            [--max-ops N] [--no-valley-loop] [--valley-concavity W]
 //            [--valley-band B] [--valley-lambda L] [--valley-cscale S] [--valley-crings K] [--valley-flat K] [--part-flat K] [--out FILE.csv]
-//            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B]
+//            [--profile-slope S] [--profile-tube T] [--profile-price P] [--profile-band B] [--salience-dominant P]
 //   (the width profile's PartProfile::Param slope, minTube and PartSalience::Param profilePrice,
-//   profileBand; --profile-slope 0 turns it off)
+//   profileBand; --profile-slope 0 turns it off; --salience-dominant P: PartSalience::Param::
+//   dominantPrice, session 36, 0 = off)
 //            [--salience-width E] [--salience-width-reach R] [--salience-width-radius F]
 //            [--salience-width-samples N] [--sdf-rays N]
 //            [--cross-bend F] [--cross-gain G] [--cross-price P] [--cross-steps N] [--cross-step S]
@@ -81,7 +82,8 @@
 //   chosen, capture/coverage, cost per length and salience score (without and with the width term); a
 //   summary on stderr: how many failed loops had a successful candidate (the choice's ceiling);
 //   session 29's support columns: times found, mutual captures among the row's loops,
-//   GS_PARTS_SUPPORT=R,S sets the capture's radius in h and share (1,0.8). With GS_PARTS_MODE=1
+//   GS_PARTS_SUPPORT=R,S sets the capture's radius in h and share (1,0.8); session 36's `verts`,
+//   the loop's vertices sorted (';'), names one loop across a part's four seedings. With GS_PARTS_MODE=1
 //   too, a MODE line per loop: the valley loop searched again from perturbed guides and
 //   settings, whether the loop found most often succeeds, against the chosen one.)
 //   (Session 30, noise: with GS_PARTS_DIAG=1 a CONCAVITY line per mesh, the part energy's share of
@@ -349,6 +351,7 @@ int main(int argc, char **argv)
         else if (a == "--profile-slope") vlpArgs.salience.profile.slope = std::stod(next());
         else if (a == "--profile-tube") vlpArgs.salience.profile.minTube = std::stod(next());
         else if (a == "--profile-price") vlpArgs.salience.profilePrice = std::stod(next());
+        else if (a == "--salience-dominant") vlpArgs.salience.dominantPrice = std::stod(next());
         else if (a == "--profile-band") vlpArgs.salience.profileBand = std::stod(next());
         else if (a == "--salience-width") vlpArgs.salience.widthExponent = std::stod(next());
         else if (a == "--salience-width-reach") vlpArgs.salience.widthReach = std::stod(next());
@@ -389,7 +392,7 @@ int main(int argc, char **argv)
     if (oracleOut) {
         oracle.open(oracleOut);
         oracle << "energy,id,category,part,side,ring,row_ok,cand,stage,chosen,success,capture,coverage,L_h,cpl,e_pl,c_pl,"
-                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body,mult,sup,sup_m,sup_soft,sup_own,sup_seed,bend,xfrom\n";
+                  "area_share,sal,sal_w,d_own_h,own_agree,plane_h,turn,e_loop,e_part,e_body,mult,sup,sup_m,sup_soft,sup_own,sup_seed,bend,xfrom,verts\n";
     }
     std::map<std::string, std::map<std::string, Tally>> tally; // energy -> category -> tally
     const auto t0 = std::chrono::steady_clock::now();
@@ -812,7 +815,7 @@ int main(int argc, char **argv)
                                        << int(ts.Success()) << ',' << ts.capture << ',' << ts.coverage << ','
                                        << gs_parts::LoopLength(pl) / h << ',' << rest << '\n';
                             };
-                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,,,,,,,,,");
+                            row(0, "snake", !replaced, ownSeed.loop, gs_parts::Measure(ownSeed.loop, p, h, h), ",,,,,,,1,,,,,,,,,,,,,,");
                             bool anyOk = false;
                             int chosenIdx = -1;
                             std::vector<char> in;
@@ -905,7 +908,10 @@ int main(int argc, char **argv)
                                               dOwn, agree, std::sqrt(rms) / h, turn, eS[0] / nS[0], eS[1] / std::max(1.0, nS[1]),
                                               eS[2] / std::max(1.0, nS[2]), mult[ci], sup, supM, soft, supOwn, supSeed,
                                               bok ? std::to_string(bend).c_str() : "", int(k1 == k2));
-                                row(ci + 1, uniq[ci].stage, chosen, pl, ts, rest);
+                                // the loop's vertices (sorted): the same loop across a part's seedings
+                                std::string verts;
+                                for (int v : k1) verts += (verts.empty() ? "" : ";") + std::to_string(v);
+                                row(ci + 1, uniq[ci].stage, chosen, pl, ts, std::string(rest) + "," + verts);
                             }
                             if (std::getenv("GS_PARTS_MODE")) {
                                 // session 29, a diagnostic: the valley loop searched again from perturbed

@@ -91,6 +91,8 @@ def main():
         replay(rows, flatter, f'flatter x{p}, at most x{t} per length')
     if any(c['bend'] == c['bend'] for v in rows.values() for c in v[1:]):
         bend_rules(rows)
+    if any(c.get('verts') for v in rows.values() for c in v[1:]):
+        seeding_rules(rows)
     if not any(c['mult'] == c['mult'] for v in rows.values() for c in v[1:]):
         return
     # support (session 29, after Golovinskiy and Funkhouser's randomized cuts: cut where many cuts agree)
@@ -107,6 +109,26 @@ def main():
                 cs = [c for c in e if c['cpl'] <= t * ch['cpl'] and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']] + [ch]
                 return max(cs, key=lambda c: (f(c), c is ch, -c['cpl']))
             replay(rows, tie, f'  near ties (x{t} per length) to the most support ({lab})')
+
+
+def seeding_rules(rows):
+    """Session 36: the part's four seedings (inside/outside, rings 2 and 3) as votes: how many of them
+    found each loop (`verts` names it) and how many chose it. Cross-row, so a ceiling for a Run's end
+    that would search from the other side too, not a rule one Run can apply."""
+    reach, chose = collections.Counter(), collections.Counter()
+    for k, v in rows.items():
+        for c in v[1:]:
+            reach[(k[0], k[2], c['verts'])] += 1
+            chose[(k[0], k[2], c['verts'])] += c['chosen']
+    for k, v in rows.items():
+        for c in v[1:]:
+            c['reach'], c['chose'] = reach[(k[0], k[2], c['verts'])], chose[(k[0], k[2], c['verts'])]
+    for f in ('chose', 'reach'):
+        for t in (1.0, 1.02, 1.05, 1.1, 1.3):
+            def most(e, ch, f=f, t=t):
+                cs = [c for c in e if c['cpl'] <= t * ch['cpl'] and 0.5 * ch['L_h'] < c['L_h'] < 2 * ch['L_h']] + [ch]
+                return max(cs, key=lambda c: (c[f], c is ch, -c['cpl']))
+            replay(rows, most, f'the loop most seedings {"chose" if f == "chose" else "found"}, at most x{t} per length')
 
 
 def bend_rules(rows):
