@@ -2797,6 +2797,23 @@ TEST(ValleyLoop, GoesRoundAHandleBesideThePartOnTheOctopus)
     EXPECT_GT(sb.coverage, sa.coverage);
 }
 
+namespace {
+/// A row of bench/eval/gs_parts: part `index` of benchmark model `id` and its 8 seeds `ring`
+/// rings off it on `side` (+1 on the part, -1 outside). False when the data or the part is
+/// missing or fewer than 3 seeds are found.
+bool BenchmarkRow(int id, int index, int ring, int side, gs_parts::Model &md, const gs_parts::Part *&part,
+                  std::vector<int> &seeds)
+{
+    part = nullptr;
+    if (!gs_parts::LoadModel(GS_SEGMENTATION_DIR, id, md)) return false;
+    for (const auto &p : md.parts)
+        if (p.index == index) part = &p;
+    if (!part) return false;
+    seeds = gs_parts::Seeds(md.mesh, *part, ring, side, 8);
+    return seeds.size() >= 3;
+}
+} // namespace
+
 // The benchmark's octopus again (genus 1, the tunnel beside tentacle 1's base): seeded 2 rings
 // outside tentacle 1 (gs_parts part 1 outside 2), the snake converges beside the tunnel, and no
 // band round its loop nor round the seeded one holds a separating ring (their loops all run through
@@ -2806,16 +2823,12 @@ TEST(ValleyLoop, GoesRoundAHandleBesideThePartOnTheOctopus)
 TEST(PartBoundaryEnd, WidensTheBandBesideAHandleWhenNoRingSeparates)
 {
     gs_parts::Model md;
-    ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 121, md)) << GS_SEGMENTATION_DIR;
+    const gs_parts::Part *part = nullptr;
+    std::vector<int> seeds;
+    ASSERT_TRUE(BenchmarkRow(121, 1, 2, -1, md, part, seeds)) << GS_SEGMENTATION_DIR;
     CMeshO &m = md.mesh;
     ASSERT_EQ(m.vert.size(), 5944u);
-    const gs_parts::Part *part = nullptr;
-    for (const auto &p : md.parts)
-        if (p.index == 1) part = &p;
-    ASSERT_TRUE(part);
     auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
-    const std::vector<int> seeds = gs_parts::Seeds(m, *part, 2, -1, 8);
-    ASSERT_GE(seeds.size(), 3u);
     typedef PartBoundaryEnd<CMeshO> End;
     const End::Param measured = End::Measured(m, End::Param());
     EXPECT_EQ(measured.valley.planar, 0); // the octopus has a handle
@@ -2849,15 +2862,11 @@ TEST(PartBoundaryEnd, WidensTheBandBesideAHandleWhenNoRingSeparates)
 TEST(PartBoundaryEnd, KeepsTheLoopWhenTheOneAcrossCostsMoreInAll)
 {
     gs_parts::Model md;
-    ASSERT_TRUE(gs_parts::LoadModel(GS_SEGMENTATION_DIR, 181, md)) << GS_SEGMENTATION_DIR;
-    CMeshO &m = md.mesh;
     const gs_parts::Part *part = nullptr;
-    for (const auto &p : md.parts)
-        if (p.index == 1) part = &p;
-    ASSERT_TRUE(part);
+    std::vector<int> seeds;
+    ASSERT_TRUE(BenchmarkRow(181, 1, 2, -1, md, part, seeds)) << GS_SEGMENTATION_DIR;
+    CMeshO &m = md.mesh;
     auto surf = WithEnergy(m, FeatureEnergyType::PartBoundary);
-    const std::vector<int> seeds = gs_parts::Seeds(m, *part, 2, -1, 8);
-    ASSERT_GE(seeds.size(), 3u);
     typedef PartBoundaryEnd<CMeshO> End;
     const End::Param measured = End::Measured(m, End::Param());
     gs_parts::Score score[2];
