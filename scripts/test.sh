@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The test command: setup (apt packages + MeshLab source), build in build/, install the
-# plugins into MeshLab's plugin folder, run every CTest test (unit + host), then the hardening
-# stage (scripts/test_sanitize.sh: ASan + UBSan unit tests and the fuzzers, in build-asan/;
-# ~10 min on 2 cores). Exits non-zero on any failure. Runs as root in CI (no display needed: xvfb-run).
+# plugins into MeshLab's plugin folder, run every CTest test of build/ (host, program, GUI, the
+# Debian roots, PyMeshLab), then the hardening stage (scripts/test_sanitize.sh, in build-asan/):
+# the unit tests under ASan + UBSan, the fuzzers, TSan. Exits non-zero on any failure. Runs as
+# root in CI (no display needed: xvfb-run).
 #   usage: scripts/test.sh [extra ctest args, e.g. -L host]
-#   The hardening stage is skipped when ctest args are given, or with GS_SANITIZE=0.
+#   The hardening stage is skipped when ctest args are given, or with GS_SANITIZE=0; build/ then
+#   holds the unit tests too (Release), so `scripts/test.sh -L unit` runs them there.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
@@ -24,8 +26,12 @@ if [ "$(id -u)" -eq 0 ] && [ $# -eq 0 ]; then
 fi
 echo "[test] configure + build (build/)"
 # No benchmarks here (no test runs them; ~6 min of a fresh CI's build): scripts/eval.sh builds
-# its own, and -DGS_BUILD_BENCH=ON adds them to build/.
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGS_UNITY_BUILD=ON -DGS_BUILD_BENCH=OFF
+# its own, and -DGS_BUILD_BENCH=ON adds them to build/. The unit tests are compiled once: in
+# build-asan/ when the hardening stage runs (asserts on, every ASan/UBSan report fails them),
+# else here.
+harden=0 unit=ON
+if [ "${GS_SANITIZE:-1}" != 0 ] && [ $# -eq 0 ]; then harden=1 unit=OFF; fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGS_UNITY_BUILD=ON -DGS_BUILD_BENCH=OFF -DGS_BUILD_UNIT_TESTS=$unit
 cmake --build build -j2
 echo "[test] install plugins"
 $SUDO cmake --install build
@@ -34,7 +40,7 @@ echo "[test] ctest"
 cd build
 ctest --output-on-failure -j2 "$@"
 cd "$here"
-if [ "${GS_SANITIZE:-1}" != 0 ] && [ $# -eq 0 ]; then
+if [ "$harden" = 1 ]; then
   bash scripts/test_sanitize.sh
 fi
 echo "[test] all tests passed"
