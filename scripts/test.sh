@@ -10,6 +10,9 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 cd "$here"
+# Each stage's line says how far in it starts (seconds since this script began): what CI's time goes to.
+export GS_TEST_T0=${GS_TEST_T0:-$(date +%s)}
+at() { echo "[test] $* (at $(( $(date +%s) - GS_TEST_T0 )) s)"; }
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
@@ -24,7 +27,7 @@ if [ "$(id -u)" -eq 0 ] && [ $# -eq 0 ]; then
     roots+=($!)
   done
 fi
-echo "[test] configure + build (build/)"
+at "configure + build (build/)"
 # No benchmarks here (no test runs them; ~6 min of a fresh CI's build): scripts/eval.sh builds
 # its own, and -DGS_BUILD_BENCH=ON adds them to build/. The unit tests are compiled once: in
 # build-asan/ when the hardening stage runs (asserts on, every ASan/UBSan report fails them),
@@ -33,14 +36,14 @@ harden=0 unit=ON
 if [ "${GS_SANITIZE:-1}" != 0 ] && [ $# -eq 0 ]; then harden=1 unit=OFF; fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGS_UNITY_BUILD=ON -DGS_BUILD_BENCH=OFF -DGS_BUILD_UNIT_TESTS=$unit
 cmake --build build -j2
-echo "[test] install plugins"
+at "install plugins"
 $SUDO cmake --install build
 for p in "${roots[@]}"; do wait "$p" || true; done # a failure shows in *_prepare (its log: build/root-*.log)
-echo "[test] ctest"
+at "ctest"
 cd build
 ctest --output-on-failure -j2 "$@"
 cd "$here"
 if [ "$harden" = 1 ]; then
   bash scripts/test_sanitize.sh
 fi
-echo "[test] all tests passed"
+at "all tests passed"
