@@ -101,6 +101,13 @@ public:
         /// region is most of the price.
         double widthRadius = 0.5;
         typename ShapeDiameter<MeshType>::Param sdf;
+        /// Session 37: a candidate's descent stops at the first step dearer per length, which
+        /// guards the descent's own choice by total cost (a loop on a tapering part slides up
+        /// it); that refused step, cheaper in total and no shorter than the descent allows, is
+        /// scored as a candidate too: salience has its own measure of the part (cost per length
+        /// x (L / sqrt A)^exponent x width) and may prefer the longer loop round a larger part.
+        /// On bench/eval/gs_parts (--energy part --rings 2,3) against 176/220: FIGURES.
+        bool refusedSteps = true;
     };
 
     /// The sides of a loop of vertex indices (loop_sides.h).
@@ -108,11 +115,13 @@ public:
 
     /// The most salient loop among `loop` (vertex indices, cost `cost` as ValleyLoop prices it)
     /// and candidates round the same part moved into the body. h: the length unit.
-    /// find(guide, guideFaces, cost, narrow): the cheapest edge loop round a guide polyline
-    /// (empty if none), descended; narrow: in a band of Param::profileBand units, not descended
-    /// (the width profile's ring). inBand(p): p lies in the band the loop was already chosen in
-    /// (candidates mostly there are left to that choice). The mesh's VF adjacency must be
-    /// current; the cost follows the part and the steps x stepLength units searched, not the mesh.
+    /// find(guide, guideFaces, cost, narrow, refused, refusedCost): the cheapest edge loop round a
+    /// guide polyline (empty if none), descended; narrow: in a band of Param::profileBand units,
+    /// not descended (the width profile's ring). refused (when not null): the descent's step
+    /// refused only for being dearer per length (ValleyLoop::Descend), with its cost, or empty.
+    /// inBand(p): p lies in the band the loop was already chosen in (candidates mostly there are
+    /// left to that choice). The mesh's VF adjacency must be current; the cost follows the part
+    /// and the steps x stepLength units searched, not the mesh.
     template <class Finder, class InBand>
     static std::vector<int> Choose(const MeshType &m, const std::vector<int> &loop, double cost, double h, const Param &par,
                                    Finder find, InBand inBand)
@@ -185,6 +194,32 @@ public:
             return c != -1 && (c == -2 || c == body);
         };
         const std::unordered_map<int, double> dist = DistanceFrom(m, loop, isBody, reach);
+        // a candidate (cost c) against the best so far
+        auto consider = [&](const std::vector<int> &cand, double c) {
+            if (cand.size() < 3) return;
+            int within = 0;
+            for (int v : cand) within += inBand(vcg::Point3d::Construct(m.vert[v].cP()));
+            const double L = Length(m, cand);
+            if (!(L > 0.5 * L0) || L > par.growth * L0) return;
+            // Param::dominantPrice: shorter round a larger part, each by the margin, not much
+            // dearer per length; within the band too (the descent chose there by total cost,
+            // which favours the shorter loop anyway: this one is also the larger part's)
+            const bool shorter = L < par.margin * bestL && c / L <= par.dominantPrice * bestCpl;
+            const bool beyond = 2 * within < int(cand.size()); // within the band, the descent's choice stands
+            if (!beyond && !shorter) return;
+            Sides sc(m, cand);
+            double A = 0;
+            if (!PartArea(sc, rep, s0, mp, A)) return;
+            const bool dominant = shorter && par.margin * A > bestA;
+            if (!beyond && !dominant) return;
+            double sc2 = score(c, L, A);
+            if (par.widthExponent > 0) {
+                ensureSdf();
+                const int pc = sc.Side(rep);
+                sc2 *= width(cand, [&](int v) { return sc.Side(v) == pc; });
+            }
+            if ((beyond && sc2 < par.margin * bestScore) || dominant) bestScore = sc2, best = cand, bestCpl = c / L, bestL = L, bestA = A;
+        };
         std::vector<int> nb;
         for (int k = 1; k <= par.steps; ++k) {
             // the guide: the edge loop at distance d into the body where it is one loop (session
@@ -210,31 +245,11 @@ public:
             Guide(m, gv, guide, guideFaces);
             if (guide.size() < 3) break;
             if (PolyLength(guide) > 1.5 * par.growth * L0) break; // the body widens: farther guides only get longer
-            double c = 0;
-            const std::vector<int> cand = find(guide, guideFaces, c, false);
-            if (cand.size() < 3) continue;
-            int within = 0;
-            for (int v : cand) within += inBand(vcg::Point3d::Construct(m.vert[v].cP()));
-            const double L = Length(m, cand);
-            if (!(L > 0.5 * L0) || L > par.growth * L0) continue;
-            // Param::dominantPrice: shorter round a larger part, each by the margin, not much
-            // dearer per length; within the band too (the descent chose there by total cost,
-            // which favours the shorter loop anyway: this one is also the larger part's)
-            const bool shorter = L < par.margin * bestL && c / L <= par.dominantPrice * bestCpl;
-            const bool beyond = 2 * within < int(cand.size()); // within the band, the descent's choice stands
-            if (!beyond && !shorter) continue;
-            Sides sc(m, cand);
-            double A = 0;
-            if (!PartArea(sc, rep, s0, mp, A)) continue;
-            const bool dominant = shorter && par.margin * A > bestA;
-            if (!beyond && !dominant) continue;
-            double sc2 = score(c, L, A);
-            if (par.widthExponent > 0) {
-                ensureSdf();
-                const int pc = sc.Side(rep);
-                sc2 *= width(cand, [&](int v) { return sc.Side(v) == pc; });
-            }
-            if ((beyond && sc2 < par.margin * bestScore) || dominant) bestScore = sc2, best = cand, bestCpl = c / L, bestL = L, bestA = A;
+            double c = 0, rc = 0;
+            std::vector<int> refused; // Param::refusedSteps
+            const std::vector<int> cand = find(guide, guideFaces, c, false, par.refusedSteps ? &refused : nullptr, &rc);
+            consider(cand, c);
+            consider(refused, rc);
         }
         // the width profile (session 26): the ring before the part's perimeter jumps, where a
         // limb of even width meets the body, when the loop sits farther up the limb
@@ -245,7 +260,7 @@ public:
             Guide(m, LevelLoop(m, isBody, dist, dj), guide, guideFaces);
             double c = 0, A = 0;
             std::vector<int> cand;
-            if (guide.size() >= 3) cand = find(guide, guideFaces, c, true);
+            if (guide.size() >= 3) cand = find(guide, guideFaces, c, true, nullptr, nullptr);
             const double L = cand.size() >= 3 ? Length(m, cand) : 0;
             if (L > 0.5 * L0 && L <= par.growth * L0 && c / L < par.profilePrice * bestCpl) {
                 Sides sp(m, cand);
