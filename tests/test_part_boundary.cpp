@@ -1260,7 +1260,8 @@ TEST(PartSalience, TakesAShorterCutRoundALargerPart)
     for (const auto &r : neck) ASSERT_EQ(r.size(), 48u);
     auto onNeck = [&](const std::vector<int> &l) { return std::find(neck.begin(), neck.end(), l) != neck.end(); };
     // a candidate: the ring nearest the guide's mean (rho, z), the neck's at 1.10 per length
-    auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &, double &c, bool) {
+    auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &, double &c, bool, std::vector<int> *,
+                    double *) {
         double r = 0, z = 0;
         for (const auto &p : guide) r += std::hypot(p[0], p[1]) / guide.size(), z += p[2] / guide.size();
         int best = -1;
@@ -1284,6 +1285,66 @@ TEST(PartSalience, TakesAShorterCutRoundALargerPart)
     par.dominantPrice = 0; // off: salience's score keeps the loop
     EXPECT_EQ(chosen(), loop);
     par.dominantPrice = 1.05; // dearer per length than that
+    EXPECT_EQ(chosen(), loop);
+}
+
+// Part salience scores the descent's refused step (PartSalience::Param::refusedSteps, session 37):
+// the bulb on a neck of TakesAShorterCutRoundALargerPart, the loop round the bulb at z = 1.9, 1 per
+// length. Every guide into the body finds (descended) a ring on the body's top, radius ~0.9, 1 per
+// length: twice as long round a part not twice as large, it scores worse than the loop. The
+// descent's last step, to the neck's ring at z = 1.6, was refused at 1.05 per length (cheaper in
+// total, dearer per length); scored, it is the most salient (1.05 x (0.9 / sqrt(1.3))^0.5 of the
+// loop's). Without the refused step the loop stays.
+TEST(PartSalience, ScoresTheDescentsRefusedStep)
+{
+    CMeshO m;
+    const double step = 0.1, h = 0.1;
+    gs_test::MakeRevolvedProfile(m,
+                                 {{0.0, 3.0, 0},
+                                  {0.5, 2.0, 0},
+                                  {0.5, 1.8, 0},
+                                  {0.45, 1.7, 1},
+                                  {0.45, 1.5, 0},
+                                  {2.0, 1.5, 0},
+                                  {2.0, 0.0, 0},
+                                  {0.0, 0.0, 0}},
+                                 48, step, 0.45, 0);
+    typedef vcg::tri::PartSalience<CMeshO> PS;
+    auto rho = [&](int v) { return std::hypot(double(m.vert[v].cP()[0]), double(m.vert[v].cP()[1])); };
+    auto ringNear = [&](double r, double z) { // the ring of the vertex nearest (r, z), sorted
+        int best = -1;
+        double d = 1e30;
+        for (int v = 0; v < int(m.vert.size()); ++v)
+            if (rho(v) > 1e-9 && std::hypot(rho(v) - r, m.vert[v].cP()[2] - z) < d)
+                d = std::hypot(rho(v) - r, m.vert[v].cP()[2] - z), best = v;
+        std::vector<int> l;
+        for (int v = 0; v < int(m.vert.size()); ++v)
+            if (std::fabs(rho(v) - rho(best)) < 1e-4 && std::fabs(m.vert[v].cP()[2] - m.vert[best].cP()[2]) < 1e-4)
+                l.push_back(v);
+        return l;
+    };
+    const std::vector<int> loop = ringNear(0.5, 1.9), wide = ringNear(0.9, 1.5), neck = ringNear(0.45, 1.6);
+    ASSERT_EQ(loop.size(), 48u);
+    ASSERT_EQ(neck.size(), 48u);
+    ASSERT_GT(PS::Length(m, wide), 1.6 * PS::Length(m, loop));
+    auto find = [&](const std::vector<vcg::Point3d> &, const std::vector<int> &, double &c, bool narrow,
+                    std::vector<int> *refused, double *refusedCost) {
+        if (narrow) return std::vector<int>(); // no width profile here
+        c = PS::Length(m, wide);
+        if (refused) *refused = neck, *refusedCost = 1.05 * PS::Length(m, neck);
+        return wide;
+    };
+    auto inBand = [](const vcg::Point3d &) { return false; };
+    PS::Param par;
+    par.widthExponent = 0; // the score's own factors alone
+    const double cost = PS::Length(m, loop);
+    auto chosen = [&]() {
+        std::vector<int> got = PS::Choose(m, loop, cost, h, par, find, inBand);
+        std::sort(got.begin(), got.end());
+        return got;
+    };
+    EXPECT_EQ(chosen(), neck);
+    par.refusedSteps = false; // the descended candidate alone
     EXPECT_EQ(chosen(), loop);
 }
 

@@ -98,7 +98,8 @@ TEST(ShapeDiameter, MovesASalienceLoopToWhereALimbMeetsAWiderBody)
     MakeSdRevolution(m, profile, 48, ringOf);
     const std::vector<int> loop = SdRing(ringOf, junction + 7);
     // a candidate: the ring nearest (in the profile) to the guide's mean point, cost 1 per length
-    auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &, double &c, bool) {
+    auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &, double &c, bool, std::vector<int> *,
+                    double *) {
         double rho = 0, z = 0;
         for (const auto &p : guide) rho += std::hypot(p[0], p[1]), z += p[2];
         rho /= guide.size(), z /= guide.size();

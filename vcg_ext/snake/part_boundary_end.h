@@ -273,7 +273,8 @@ public:
                                     double h, const Param &par, double ref, InBand inBand)
     {
         const double minLen = 0.5 * VL::LengthOf(m, vl);
-        auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c, bool narrow) {
+        auto find = [&](const std::vector<vcg::Point3d> &guide, const std::vector<int> &guideFaces, double &c, bool narrow,
+                        std::vector<int> *refused, double *refusedCost) {
             double r = ref;
             if (narrow) {
                 typename VL::Param pn = par.valley;
@@ -284,7 +285,7 @@ public:
             }
             std::vector<int> cand = VL::FindAt(m, guide, guideFaces, energy, h, par.valley, r, c);
             VL::Record(par.valley, "salience", cand);
-            if (cand.size() >= 3) cand = VL::Descend(m, cand, c, energy, h, par.valley, ref, minLen);
+            if (cand.size() >= 3) cand = VL::Descend(m, cand, c, energy, h, par.valley, ref, minLen, refused, refusedCost);
             return cand;
         };
         return PartSalience<MeshType>::Choose(m, vl, cost, h, par.salience, find, inBand);

@@ -402,11 +402,15 @@ public:
 
     /// The descent over bands (Param::iterations) from edge loop vl, its cost updated: the band
     /// round an edge loop holds it, so with the same concavity reference `ref` each step's
-    /// cheapest loop is no dearer. Loops no longer than minLen end it.
+    /// cheapest loop is no dearer. Loops no longer than minLen end it. refused (when given): the
+    /// step that ended it when it was refused only for being dearer per length (cheaper in
+    /// total, longer than minLen), with its cost in refusedCost; else emptied.
     template <class EnergyVector>
     static std::vector<int> Descend(const MeshType &m, std::vector<int> vl, double &cost, const EnergyVector &energy,
-                                   double h, const Param &par, double ref, double minLen)
+                                   double h, const Param &par, double ref, double minLen,
+                                   std::vector<int> *refused = nullptr, double *refusedCost = nullptr)
     {
+        if (refused) refused->clear();
         for (int it = 1; it < par.iterations; ++it) {
             std::vector<vcg::Point3d> pl;
             std::vector<int> pf;
@@ -421,9 +425,11 @@ public:
             // a step must make the loop cheaper per length too (deeper, more concave): by its
             // total cost alone a loop on a part that tapers slides to a shorter ring of the same
             // ground, off the valley at the part's base
-            if (next.size() < 3 || !(c2 < cost * (1 - 1e-9)) || !(LengthOf(m, next) > minLen) ||
-                !(c2 / LengthOf(m, next) < cost / LengthOf(m, vl)))
+            if (next.size() < 3 || !(c2 < cost * (1 - 1e-9)) || !(LengthOf(m, next) > minLen)) break;
+            if (!(c2 / LengthOf(m, next) < cost / LengthOf(m, vl))) {
+                if (refused) *refused = next, *refusedCost = c2;
                 break;
+            }
             vl = next, cost = c2;
         }
         return vl;
