@@ -1226,6 +1226,24 @@ TEST(PartSalience, PartAreaStopsWhereTheLargerSideIsNoPart)
     EXPECT_EQ(a.ended.size(), 1u);
 }
 
+namespace {
+
+/// PartSalience::Choose on `loop` (its cost its length, no band, the score's own factors alone:
+/// no width), the loop chosen sorted by vertex index.
+template <class Find>
+std::vector<int> ChosenBySalience(CMeshO &m, const std::vector<int> &loop, double h,
+                                  typename vcg::tri::PartSalience<CMeshO>::Param par, Find find)
+{
+    typedef vcg::tri::PartSalience<CMeshO> PS;
+    par.widthExponent = 0;
+    auto inBand = [](const vcg::Point3d &) { return false; };
+    std::vector<int> got = PS::Choose(m, loop, PS::Length(m, loop), h, par, find, inBand);
+    std::sort(got.begin(), got.end());
+    return got;
+}
+
+} // namespace
+
 // Part salience's dominance (PartSalience::Param::dominantPrice, session 36): a bulb (radius 0.5)
 // on a neck (radius 0.45, z 1.5-1.7) on a wide body, the loop round the bulb at z = 1.9, 1 per
 // length; a guide into the body reaches a ring of the neck, 10 % shorter round a part 30-60 %
@@ -1272,15 +1290,8 @@ TEST(PartSalience, TakesAShorterCutRoundALargerPart)
         c = (onNeck(ring) ? 1.10 : 2.0) * PS::Length(m, ring);
         return ring;
     };
-    auto inBand = [](const vcg::Point3d &) { return false; };
     PS::Param par;
-    par.widthExponent = 0; // the score's own factors alone
-    const double cost = PS::Length(m, loop);
-    auto chosen = [&]() {
-        std::vector<int> got = PS::Choose(m, loop, cost, h, par, find, inBand);
-        std::sort(got.begin(), got.end());
-        return got;
-    };
+    auto chosen = [&]() { return ChosenBySalience(m, loop, h, par, find); };
     EXPECT_TRUE(onNeck(chosen()));
     par.dominantPrice = 0; // off: salience's score keeps the loop
     EXPECT_EQ(chosen(), loop);
@@ -1334,15 +1345,8 @@ TEST(PartSalience, ScoresTheDescentsRefusedStep)
         if (refused) *refused = neck, *refusedCost = 1.05 * PS::Length(m, neck);
         return wide;
     };
-    auto inBand = [](const vcg::Point3d &) { return false; };
     PS::Param par;
-    par.widthExponent = 0; // the score's own factors alone
-    const double cost = PS::Length(m, loop);
-    auto chosen = [&]() {
-        std::vector<int> got = PS::Choose(m, loop, cost, h, par, find, inBand);
-        std::sort(got.begin(), got.end());
-        return got;
-    };
+    auto chosen = [&]() { return ChosenBySalience(m, loop, h, par, find); };
     EXPECT_EQ(chosen(), neck);
     par.refusedSteps = false; // the descended candidate alone
     EXPECT_EQ(chosen(), loop);
